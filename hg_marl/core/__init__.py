@@ -1,0 +1,11 @@
+"""The pure task core: scenarios, state, rules. Imports only the stdlib and numpy."""
+
+from hg_marl.core.durations import Durations
+from hg_marl.core.scenario import Scenario, ScenarioError, available_scenarios, generate_scenario, load_scenario
+from hg_marl.core.types import AGENT_NAMES, WAIT, Action, Agent, Event, Kind, Outcome, State
+from hg_marl.core.world import World
+
+__all__ = [
+    "AGENT_NAMES", "WAIT", "Action", "Agent", "Durations", "Event", "Kind", "Outcome", "Scenario",
+    "ScenarioError", "State", "World", "available_scenarios", "generate_scenario", "load_scenario",
+]
