@@ -1,0 +1,314 @@
+"""TableCleaning-v0: a robot and a human clean a table together (Renaudo et al. 2015).
+
+Spec sheet
+----------
+============================  =================================================================
+Import                        ``import hg_marl; env = hg_marl.env(scenario="paper2015")``
+Registered ids                ``pettingzoo.make("aec", "hg_marl/TableCleaning-v0")`` (and
+                              ``"parallel"``)
+Agents                        ``["robot", "human"]``, AEC order robot, human, robot, ...
+Action spaces                 ``Discrete``: robot ``pick/throw/give/take(o)``, ``goto(x)`` for x in
+                              objects, bins and the human, ``wait`` (18 for ``paper2015``);
+                              human ``pick/throw/give/take(o)``, ``place(o, spot)``, ``wait``.
+                              Names: ``env.unwrapped.action_names(agent)``.
+Observation space             ``Dict(observation=Box(0, 1, (F,), int8), action_mask=Box(0, 1,
+                              (A,), int8))``: the paper's boolean facts (``fact_names``) and the
+                              feasible actions of the agent.
+Rewards                       1 to both agents when the robot waits on a clean table (every
+                              object in its bin), else 0.
+Termination                   episodic (default): at the end of the cycle in which the task was
+                              completed. Continuing (``continuing=True``, the paper's
+                              experiments): the table is re-drawn and play goes on.
+Truncation                    after ``max_cycles`` cycles or when the clock reaches
+                              ``time_budget`` simulated seconds.
+Render modes                  ``ansi`` (text), ``rgb_array`` (numpy image); no window, ever.
+============================  =================================================================
+
+Rules. An action whose preconditions fail is legal input: it has no effect, costs the
+precondition check (``durations.failed``) and is reported in ``infos[agent]["failed"]``;
+learning robots must discover this, as in the paper. An action outside the action space
+raises :class:`InvalidActionError`. A handover takes two turns: the giver's ``give(o)``,
+then the partner's ``take(o)`` on its very next turn; any other reply lets the offer
+lapse.
+
+Time. A cycle is the robot's turn then the human's. The agents act in parallel, so the
+simulated clock advances at the end of each cycle by the longer of the two actions'
+durations, plus any decision time a runner charged with :meth:`raw_env.charge_time`.
+
+Infos (per agent, after its turn): ``clock``, ``cycle``, ``tasks_solved``, ``action``
+(name), ``failed``, ``events`` (of its last action, as sentences), and cumulative
+``effort`` (seconds spent on physical actions) and ``idle`` (seconds waiting).
+
+Version history: v0 - initial release.
+"""
+
+from __future__ import annotations
+
+import operator
+from typing import Any
+
+import numpy as np
+from gymnasium import spaces
+from pettingzoo import AECEnv
+from pettingzoo.utils import wrappers
+
+from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Kind, Scenario, State, World
+from hg_marl.envs.render import render_ansi, render_rgb
+from hg_marl.policy import Turn
+
+
+_RESET_EVENT = Event("reset", "table", "", "new layout")
+
+
+class InvalidActionError(ValueError):
+    """An action outside the agent's action space (a programming error, not a failed action)."""
+
+
+class raw_env(AECEnv):  # noqa: N801  (PettingZoo's naming convention)
+    """The AEC environment without wrappers; see the module docstring for the spec."""
+
+    metadata = {
+        "name": "TableCleaning-v0",
+        "render_modes": ["ansi", "rgb_array"],
+        "is_parallelizable": True,
+        "render_fps": 2,
+    }
+
+    def __init__(
+        self,
+        scenario: str | Scenario = "paper2015",
+        continuing: bool = False,
+        max_cycles: int | None = 500,
+        time_budget: float | None = None,
+        render_mode: str | None = None,
+        durations: Durations | None = None,
+    ) -> None:
+        """Build the environment.
+
+        Args:
+            scenario: built-in name (``paper2015``, ``roboergosum``,
+                ``generated:objects=N,...``), a TOML path or a :class:`Scenario`.
+            continuing: re-draw the table after each success instead of terminating.
+            max_cycles: truncate after this many cycles (None: no limit).
+            time_budget: truncate once the simulated clock reaches this (None: no limit).
+            render_mode: None, ``"ansi"`` or ``"rgb_array"``.
+            durations: override the scenario's action durations.
+        """
+        super().__init__()
+        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
+            raise ValueError(f"render_mode {render_mode!r} is not supported; use one of {self.metadata['render_modes']} or None")
+        if max_cycles is not None and max_cycles < 1:
+            raise ValueError(f"max_cycles must be a positive integer or None, got {max_cycles}")
+        if time_budget is not None and time_budget <= 0:
+            raise ValueError(f"time_budget must be positive seconds or None, got {time_budget}")
+        self.world = World(scenario, durations)
+        self.continuing = continuing
+        self.max_cycles = max_cycles
+        self.time_budget = time_budget
+        self.render_mode = render_mode
+        self.possible_agents = list(AGENT_NAMES)
+        self._n_actions = [self.world.n_actions(a) for a in Agent]
+        self._action_spaces = {name: spaces.Discrete(n) for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)}
+        f = self.world.n_facts
+        self._observation_spaces = {
+            name: spaces.Dict({
+                "observation": spaces.Box(0, 1, (f,), np.int8),
+                "action_mask": spaces.Box(0, 1, (n,), np.int8),
+            })
+            for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)
+        }
+        self._is_wait = [[a.kind is Kind.WAIT for a in self.world.actions(ag)] for ag in Agent]
+        self._event_text: dict[tuple[Event, ...], tuple[str, ...]] = {}
+        self._rng = np.random.default_rng()
+        self.world_state: State = self.world.initial_state(self._rng)
+        """The full symbolic state (read it; the environment replaces it, never mutates it)."""
+
+    # ---- spaces and names ----------------------------------------------------------
+    def observation_space(self, agent: str) -> spaces.Space:
+        return self._observation_spaces[agent]
+
+    def action_space(self, agent: str) -> spaces.Space:
+        return self._action_spaces[agent]
+
+    def action_names(self, agent: str) -> tuple[str, ...]:
+        """Readable name of every action index of ``agent``."""
+        return self.world.action_names[self._agent_id(agent)]
+
+    @property
+    def fact_names(self) -> tuple[str, ...]:
+        """Name of each entry of the observation's fact vector."""
+        return self.world.fact_names
+
+    def _agent_id(self, agent: str) -> Agent:
+        try:
+            return Agent(AGENT_NAMES.index(agent))
+        except ValueError:
+            raise KeyError(f"unknown agent {agent!r}; agents are {list(AGENT_NAMES)}") from None
+
+    # ---- lifecycle -------------------------------------------------------------------
+    def reset(self, seed: int | None = None, options: dict[str, Any] | None = None) -> None:
+        """Start an episode; ``options={"state": State}`` starts from a given state."""
+        if seed is not None:
+            self._rng = np.random.default_rng(seed)
+        options = options or {}
+        self.world_state = options.get("state") or self.world.initial_state(self._rng)
+        self.agents = list(self.possible_agents)
+        self.rewards = dict.fromkeys(self.agents, 0.0)
+        self._cumulative_rewards = dict.fromkeys(self.agents, 0.0)
+        self.terminations = dict.fromkeys(self.agents, False)
+        self.truncations = dict.fromkeys(self.agents, False)
+        self.clock = 0.0
+        self.cycles = 0
+        self.tasks_solved = 0
+        self._effort = [0.0, 0.0]
+        self._idle = [0.0, 0.0]
+        self._cycle_durations = [0.0, 0.0]
+        self._charged = 0.0
+        self._done_this_cycle = False
+        self._last_actions = [-1, -1]
+        self._recent: list[Event] = []
+        self.infos = {a: self._info(Agent(i), "", False, ()) for i, a in enumerate(self.agents)}
+        self.agent_selection = self.agents[0]
+
+    def charge_time(self, seconds: float) -> None:
+        """Add decision time (e.g. planning) to the current cycle's duration."""
+        if seconds < 0:
+            raise ValueError(f"charged time must be non-negative, got {seconds}")
+        self._charged += seconds
+
+    def _check_action(self, agent: Agent, action: Any) -> int:
+        n = self._n_actions[agent]
+        try:
+            index = operator.index(action.item() if isinstance(action, np.ndarray) and action.size == 1 else action)
+        except TypeError:
+            raise InvalidActionError(
+                f"action {action!r} for agent {AGENT_NAMES[agent]!r} is not an integer; expected an index in [0, {n})"
+            ) from None
+        if not 0 <= index < n or isinstance(action, bool):
+            raise InvalidActionError(
+                f"action {action!r} is out of range for agent {AGENT_NAMES[agent]!r}: expected an integer in "
+                f"[0, {n}) (see env.unwrapped.action_names({AGENT_NAMES[agent]!r}))"
+            )
+        return index
+
+    def step(self, action: Any) -> None:
+        """Execute the selected agent's action (a Discrete index)."""
+        name = self.agent_selection
+        if self.terminations[name] or self.truncations[name]:
+            self._was_dead_step(action)
+            return
+        agent = Agent.ROBOT if name == "robot" else Agent.HUMAN
+        if type(action) is not int or not 0 <= action < self._n_actions[agent]:
+            action = self._check_action(agent, action)
+        out = self.world.step(self.world_state, agent, action)
+        self.world_state = out.state
+        self._cycle_durations[agent] = out.duration
+        self._last_actions[agent] = action
+        waited = self._is_wait[agent][action]
+        if out.ok and not waited:
+            self._effort[agent] += out.duration
+        events = out.events
+        reward = out.reward
+        if reward:
+            self.tasks_solved += 1
+            self.rewards = dict.fromkeys(self.agents, reward)
+            if self.continuing:
+                self.world_state = self.world.initial_state(self._rng)
+                events = (*events, _RESET_EVENT)
+            else:
+                self._done_this_cycle = True
+        else:
+            self.rewards = dict.fromkeys(self.agents, 0.0)
+        self._recent.extend(events)
+        self.infos[name] = self._info(agent, self.world.action_names[agent][action], not out.ok, events)
+        cumulative = self._cumulative_rewards
+        cumulative[name] = 0.0
+        if reward:
+            for a in self.agents:
+                cumulative[a] += reward
+        if agent is Agent.HUMAN:
+            self._end_cycle()
+            self.agent_selection = "robot"
+        else:
+            self.agent_selection = "human"
+
+    def _end_cycle(self) -> None:
+        durations = self._cycle_durations
+        length = max(durations) + self._charged
+        for a in (0, 1):
+            waited = self._is_wait[a][self._last_actions[a]] if self._last_actions[a] >= 0 else False
+            self._idle[a] += length - (0.0 if waited else durations[a])
+        self.clock += length
+        self.cycles += 1
+        self._cycle_durations = [0.0, 0.0]
+        self._charged = 0.0
+        truncate = (self.max_cycles is not None and self.cycles >= self.max_cycles) or (
+            self.time_budget is not None and self.clock >= self.time_budget
+        )
+        done = self._done_this_cycle
+        if done or truncate:
+            for a in self.agents:
+                self.terminations[a] = done
+                self.truncations[a] = truncate and not done
+        for i, a in enumerate(self.agents):
+            info = self.infos[a]
+            info["clock"], info["cycle"], info["tasks_solved"] = self.clock, self.cycles, self.tasks_solved
+            info["effort"], info["idle"] = self._effort[i], self._idle[i]
+
+    def _info(self, agent: Agent, action: str, failed: bool, events: tuple[Event, ...]) -> dict[str, Any]:
+        text = self._event_text.get(events)
+        if text is None:
+            text = self._event_text[events] = tuple(str(e) for e in events)
+        return {
+            "clock": self.clock, "cycle": self.cycles, "tasks_solved": self.tasks_solved,
+            "action": action, "failed": failed, "events": text,
+            "effort": self._effort[agent], "idle": self._idle[agent],
+        }
+
+    # ---- observations ----------------------------------------------------------------
+    def observe(self, agent: str) -> dict[str, np.ndarray]:
+        """Facts and this agent's action mask (shared read-only arrays)."""
+        state = self.world_state
+        return {
+            "observation": self.world.facts(state),
+            "action_mask": self.world.mask(state, Agent.ROBOT if agent == "robot" else Agent.HUMAN),
+        }
+
+    def turn(self, agent: str | None = None) -> Turn:
+        """A :class:`Turn` for ``agent`` (default: the selected one), for scripted actors.
+
+        ``events`` holds what happened since the last call (both agents' actions).
+        """
+        name = agent or self.agent_selection
+        events, self._recent = tuple(self._recent), []
+        return Turn(
+            world=self.world, state=self.world_state, agent=self._agent_id(name),
+            observation=self.observe(name), clock=self.clock, reward=self._cumulative_rewards[name],
+            tasks_solved=self.tasks_solved, events=events,
+            last_actions=(self._last_actions[0], self._last_actions[1]),
+        )
+
+    def state(self) -> np.ndarray:
+        """The global state for centralised critics: the fact vector."""
+        return np.array(self.world.facts(self.world_state))
+
+    # ---- rendering -------------------------------------------------------------------
+    def render(self) -> str | np.ndarray | None:
+        if self.render_mode is None:
+            return None
+        if self.render_mode == "ansi":
+            return render_ansi(self.world, self.world_state, self.clock, self.cycles, self.tasks_solved)
+        return render_rgb(self.world, self.world_state)
+
+    def close(self) -> None:
+        """Nothing to release: no window is ever opened."""
+
+
+def env(**kwargs: Any) -> AECEnv:
+    """The AEC environment with PettingZoo's standard order-enforcing wrapper.
+
+    Out-of-range actions are rejected by the environment itself, with a clearer message
+    than ``AssertOutOfBoundsWrapper`` and also under ``python -O``; infeasible actions are
+    legal (no ``TerminateIllegalWrapper``), as in the paper.
+    """
+    return wrappers.OrderEnforcingWrapper(raw_env(**kwargs))
