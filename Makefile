@@ -1,0 +1,39 @@
+# The README's two commands: `make reproduce` (the paper's experiment) and `make test`.
+# Both create the virtual environment on first use. torch comes pinned to the CPU
+# build (see pyproject.toml's `sb3` extra).
+PYTHON ?= python3
+VENV ?= .venv
+BIN := $(VENV)/bin
+OUT ?= results/paper2015
+PYTEST_ARGS ?=
+
+.PHONY: setup reproduce test test-slow lint bench clean
+
+$(BIN)/.installed: pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e ".[dev,sb3]"
+	touch $@
+
+setup: $(BIN)/.installed
+
+reproduce: setup
+	$(BIN)/hg-marl reproduce --out $(OUT)
+
+test: setup lint
+	$(BIN)/python -m pytest -m "not slow" $(PYTEST_ARGS)
+
+test-slow: setup
+	$(BIN)/python -m pytest -m slow $(PYTEST_ARGS)
+
+lint: setup
+	$(BIN)/ruff check .
+	$(BIN)/mypy
+
+bench: setup
+	$(BIN)/python benchmarks/env_throughput.py
+	$(BIN)/python benchmarks/planner_latency.py
+	$(BIN)/python benchmarks/decision_latency.py
+
+clean:
+	rm -rf $(VENV) results .pytest_cache .mypy_cache .ruff_cache
