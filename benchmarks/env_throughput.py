@@ -15,7 +15,7 @@ from __future__ import annotations
 import argparse
 import time
 from collections.abc import Callable
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 from pettingzoo import AECEnv
@@ -29,7 +29,7 @@ from hg_marl.core import Agent, World
 class _Null(AECEnv):
     """Does nothing; measures the AEC API + OrderEnforcingWrapper floor."""
 
-    metadata = {"name": "null", "render_modes": []}
+    metadata: ClassVar[dict[str, Any]] = {"name": "null", "render_modes": []}
 
     def __init__(self) -> None:
         self.possible_agents = ["a", "b"]

@@ -16,8 +16,16 @@ from hg_marl.registration import register_envs
 
 __version__ = "0.1.0"
 __all__ = [
-    "AgentMismatchError", "InvalidActionError", "Scenario", "ScenarioError", "World",
-    "available_scenarios", "env", "load_scenario", "parallel_env", "raw_env",
+    "AgentMismatchError",
+    "InvalidActionError",
+    "Scenario",
+    "ScenarioError",
+    "World",
+    "available_scenarios",
+    "env",
+    "load_scenario",
+    "parallel_env",
+    "raw_env",
 ]
 
 register_envs()

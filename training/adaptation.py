@@ -44,9 +44,16 @@ ROBOTS: dict[str, tuple[str, dict[str, Any]]] = {
 def adaptation_jobs(scenario: str, seeds: int) -> list[Job]:
     """One job per (new human, robot, seed)."""
     return [
-        Job(label=f"adapt_{new}_{label}", robot=robot, robot_params=params, seed=seed, scenario=scenario,
-            duration=DURATION, human="switching",
-            human_params={"humans": ["cooperative", new], "at": [SWITCH_AT], "by": "time"})
+        Job(
+            label=f"adapt_{new}_{label}",
+            robot=robot,
+            robot_params=params,
+            seed=seed,
+            scenario=scenario,
+            duration=DURATION,
+            human="switching",
+            human_params={"humans": ["cooperative", new], "at": [SWITCH_AT], "by": "time"},
+        )
         for new in NEW_HUMANS
         for label, (robot, params) in ROBOTS.items()
         for seed in range(seeds)
@@ -60,7 +67,9 @@ def rate_curve(log: pd.DataFrame, grid: np.ndarray, window: float = WINDOW) -> n
     return counts * 3600.0 / window
 
 
-def time_to_regain(log: pd.DataFrame, target_rate: float, switch_at: float = SWITCH_AT, window: float = WINDOW) -> float | None:
+def time_to_regain(
+    log: pd.DataFrame, target_rate: float, switch_at: float = SWITCH_AT, window: float = WINDOW
+) -> float | None:
     """Seconds after the switch until the windowed rate first reaches ``target_rate``."""
     end = float(log["time"].iloc[-1]) if len(log) else switch_at
     grid = np.arange(switch_at + window, end + 1e-9, 5.0)
@@ -70,7 +79,9 @@ def time_to_regain(log: pd.DataFrame, target_rate: float, switch_at: float = SWI
     return float(grid[hit[0]] - switch_at) if len(hit) else None
 
 
-def run_adaptation(out: Path, scenario: str = "paper2015", seeds: int = 5, workers: int = 1) -> tuple[dict[str, Any], dict[str, Path]]:
+def run_adaptation(
+    out: Path, scenario: str = "paper2015", seeds: int = 5, workers: int = 1
+) -> tuple[dict[str, Any], dict[str, Path]]:
     """Run (or resume) the adaptation sweep; return its summary and figure paths."""
     from hg_marl.agents.oracle import oracle_rate
     from hg_marl.training import plots
@@ -78,8 +89,14 @@ def run_adaptation(out: Path, scenario: str = "paper2015", seeds: int = 5, worke
     jobs = adaptation_jobs(scenario, seeds)
     run_sweep(jobs, out, workers=workers)
     oracle = {name: oracle_rate(scenario, name).rate_per_hour for name in ("cooperative", *NEW_HUMANS)}
-    summary: dict[str, Any] = {"switch_at": SWITCH_AT, "duration": DURATION, "window": WINDOW, "seeds": seeds,
-                               "oracle_rate_per_hour": oracle, "results": {}}
+    summary: dict[str, Any] = {
+        "switch_at": SWITCH_AT,
+        "duration": DURATION,
+        "window": WINDOW,
+        "seeds": seeds,
+        "oracle_rate_per_hour": oracle,
+        "results": {},
+    }
     figures: dict[str, Path] = {}
     grid = np.arange(WINDOW, DURATION + 1e-9, 10.0)
     for new in NEW_HUMANS:
@@ -102,20 +119,27 @@ def run_adaptation(out: Path, scenario: str = "paper2015", seeds: int = 5, worke
             curves[label] = (grid, np.mean([rate_curve(log, grid) for log in logs], axis=0))
         summary["results"][new] = rows
         figures[f"adaptation_{new}"] = plots.adaptation(
-            curves, SWITCH_AT, (oracle["cooperative"], oracle[new]),
-            f"Adaptation: cooperative -> {new} (mean of {seeds} seeds)", out / f"adaptation_{new}.png",
+            curves,
+            SWITCH_AT,
+            (oracle["cooperative"], oracle[new]),
+            f"Adaptation: cooperative -> {new} (mean of {seeds} seeds)",
+            out / f"adaptation_{new}.png",
         )
     return summary, figures
 
 
 def adaptation_table(summary: dict[str, Any]) -> str:
     """Printed table of the adaptation results."""
-    lines = [f"adaptation: human switches from cooperative at {summary['switch_at']:.0f} s "
-             f"(oracle tasks/h: {', '.join(f'{k} {v:.1f}' for k, v in summary['oracle_rate_per_hour'].items())})"]
+    lines = [
+        f"adaptation: human switches from cooperative at {summary['switch_at']:.0f} s "
+        f"(oracle tasks/h: {', '.join(f'{k} {v:.1f}' for k, v in summary['oracle_rate_per_hour'].items())})"
+    ]
     head = f"{'new human':<13}{'robot':<18}{'regain 90% (s)':>16}{'recovered':>11}{'tasks lost':>12}"
     lines += [head, "-" * len(head)]
     for new, rows in summary["results"].items():
         for label, row in rows.items():
             regain = "never" if row["time_to_regain_90_mean"] is None else f"{row['time_to_regain_90_mean']:.0f}"
-            lines.append(f"{new:<13}{label:<18}{regain:>16}{row['recovered_runs']:>6}/{row['runs']:<4}{row['tasks_lost_mean']:>12.1f}")
+            lines.append(
+                f"{new:<13}{label:<18}{regain:>16}{row['recovered_runs']:>6}/{row['runs']:<4}{row['tasks_lost_mean']:>12.1f}"
+            )
     return "\n".join(lines)

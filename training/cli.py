@@ -17,12 +17,11 @@ COMMANDS = ("run",)
 
 app = typer.Typer(
     name="hg-marl",
-    help="Human-robot table cleaning: run robots with humans, plan, find the oracle, reproduce the paper, train baselines.",
+    help="Human-robot table cleaning: run, plan, oracle, reproduce the paper, train baselines.",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
 )
-
 
 
 @app.callback()

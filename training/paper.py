@@ -45,7 +45,13 @@ def conditions(further: bool = True) -> dict[str, tuple[str, dict[str, Any]]]:
     return out
 
 
-def jobs(seeds: int = 10, duration: float = DEFAULT_DURATION, scenario: str = "paper2015", further: bool = True, human: str = "cooperative") -> list[Job]:
+def jobs(
+    seeds: int = 10,
+    duration: float = DEFAULT_DURATION,
+    scenario: str = "paper2015",
+    further: bool = True,
+    human: str = "cooperative",
+) -> list[Job]:
     """Every (condition, seed) run of the experiment."""
     return [
         Job(label=label, robot=robot, robot_params=params, seed=seed, scenario=scenario, duration=duration, human=human)
@@ -82,7 +88,9 @@ def summarise_condition(c: ConditionLogs) -> dict[str, Any]:
         "planner_share": float(share.mean()),
         "planner_share_last_third": float(last_third.mean()),
         "final_weight_amplitude_mean": float(amplitude.mean()),
-        "amplitude_rise_decision_mean": float(np.mean([r for r in rise if r is not None])) if any(r is not None for r in rise) else None,
+        "amplitude_rise_decision_mean": float(np.mean([r for r in rise if r is not None]))
+        if any(r is not None for r in rise)
+        else None,
     }
 
 
@@ -110,14 +118,20 @@ def check_targets(summary: dict[str, dict[str, Any]]) -> dict[str, Any]:
     out: dict[str, Any] = {}
     if {"planner", "random", "habit"} <= t.keys():
         out["planner > random mix >> habit"] = {
-            "planner": t["planner"], "random": t["random"], "habit": t["habit"],
+            "planner": t["planner"],
+            "random": t["random"],
+            "habit": t["habit"],
             "holds": bool(t["planner"] > t["random"] > 2 * t["habit"]),
         }
         ratio = summary["habit"]["actions_mean"] / max(summary["planner"]["actions_mean"], 1e-9)
         out["habit proposes >= 2x the planner's actions"] = {"ratio": ratio, "holds": bool(ratio >= 2.0)}
-        rise_mix, rise_habit = summary["random"]["amplitude_rise_decision_mean"], summary["habit"]["amplitude_rise_decision_mean"]
+        rise_mix, rise_habit = (
+            summary["random"]["amplitude_rise_decision_mean"],
+            summary["habit"]["amplitude_rise_decision_mean"],
+        )
         out["amplitude rises earlier with the mix"] = {
-            "mix_decision": rise_mix, "habit_decision": rise_habit,
+            "mix_decision": rise_mix,
+            "habit_decision": rise_habit,
             "holds": bool(rise_mix is not None and (rise_habit is None or rise_mix < rise_habit)),
         }
     if "planner" in summary:
@@ -126,9 +140,16 @@ def check_targets(summary: dict[str, dict[str, Any]]) -> dict[str, Any]:
             if name in PAPER_CONDITIONS:
                 continue
             ok = row["tasks_solved_mean"] >= 0.95 * t["planner"] and row["planner_share_last_third"] <= 0.25
-            cand = {"criterion": name, "tasks_vs_planner": row["tasks_solved_mean"] / max(t["planner"], 1e-9),
-                    "planner_share_last_third": row["planner_share_last_third"], "holds": bool(ok)}
-            if best is None or (cand["holds"], -cand["planner_share_last_third"]) > (best["holds"], -best["planner_share_last_third"]):
+            cand = {
+                "criterion": name,
+                "tasks_vs_planner": row["tasks_solved_mean"] / max(t["planner"], 1e-9),
+                "planner_share_last_third": row["planner_share_last_third"],
+                "holds": bool(ok),
+            }
+            if best is None or (cand["holds"], -cand["planner_share_last_third"]) > (
+                best["holds"],
+                -best["planner_share_last_third"],
+            ):
                 best = cand
         if best is not None:
             out["a cost-aware criterion keeps >= 95% of the planner's tasks with <= 25% planner decisions late"] = best
@@ -137,7 +158,10 @@ def check_targets(summary: dict[str, dict[str, Any]]) -> dict[str, Any]:
 
 def table(summary: dict[str, dict[str, Any]]) -> str:
     """The printed table: our figures beside the paper's."""
-    head = f"{'condition':<18}{'tasks solved':>16}{'paper':>8}{'actions':>16}{'failed':>9}{'planner share':>15}{'last third':>12}"
+    head = (
+        f"{'condition':<18}{'tasks solved':>16}{'paper':>8}{'actions':>16}{'failed':>9}"
+        f"{'planner share':>15}{'last third':>12}"
+    )
     lines = [head, "-" * len(head)]
     for name, row in summary.items():
         paper = PAPER.get(name)

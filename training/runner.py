@@ -29,10 +29,26 @@ from hg_marl.training.io import atomic_write
 log = logging.getLogger(__name__)
 
 COLUMNS = (
-    "decision", "time", "cycle", "expert", "action", "action_name", "failed", "planner_action",
-    "habit_action", "planning_time", "planner_nodes", "planner_success", "decision_time",
-    "expected_human_action", "human_action", "human_action_name", "human_as_expected", "reward",
-    "tasks_solved", "weight_amplitude",
+    "decision",
+    "time",
+    "cycle",
+    "expert",
+    "action",
+    "action_name",
+    "failed",
+    "planner_action",
+    "habit_action",
+    "planning_time",
+    "planner_nodes",
+    "planner_success",
+    "decision_time",
+    "expected_human_action",
+    "human_action",
+    "human_action_name",
+    "human_as_expected",
+    "reward",
+    "tasks_solved",
+    "weight_amplitude",
 )
 """Columns of the per-decision log."""
 
@@ -77,7 +93,9 @@ def summarise(log: pd.DataFrame, duration: float) -> dict[str, Any]:
         "duration": duration,
         "planner_share": float((log["expert"] == "planner").mean()) if n else 0.0,
         "final_weight_amplitude": float(log["weight_amplitude"].iloc[-1]) if n else 0.0,
-        "human_as_expected": float(log["human_as_expected"].dropna().mean()) if n and log["human_as_expected"].notna().any() else math.nan,
+        "human_as_expected": float(log["human_as_expected"].dropna().mean())
+        if n and log["human_as_expected"].notna().any()
+        else math.nan,
     }
 
 
@@ -121,9 +139,12 @@ def run(
             env.step(action)
             expected = int(record.get("expected_human_action", -1))
             row = {
-                "decision": len(rows), "time": raw.clock, "cycle": raw.cycles,
+                "decision": len(rows),
+                "time": raw.clock,
+                "cycle": raw.cycles,
                 "expert": record.get("expert", getattr(robot, "name", type(robot).__name__)),
-                "action": action, "action_name": names[Agent.ROBOT][action],
+                "action": action,
+                "action_name": names[Agent.ROBOT][action],
                 "failed": bool(raw.infos["robot"]["failed"]),
                 "planner_action": int(record.get("planner_action", -1)),
                 "habit_action": int(record.get("habit_action", -1)),
@@ -132,7 +153,9 @@ def run(
                 "planner_success": record.get("planner_success"),
                 "decision_time": decision_time,
                 "expected_human_action": expected,
-                "human_action": -1, "human_action_name": "", "human_as_expected": None,
+                "human_action": -1,
+                "human_action_name": "",
+                "human_as_expected": None,
                 "reward": float(raw.rewards["robot"]),
                 "tasks_solved": raw.tasks_solved,
                 "weight_amplitude": float(record.get("weight_amplitude", 0.0)),
@@ -143,7 +166,9 @@ def run(
             env.step(action)
             row["human_action"] = action
             row["human_action_name"] = names[Agent.HUMAN][action]
-            row["human_as_expected"] = None if row["expected_human_action"] < 0 else action == row["expected_human_action"]
+            row["human_as_expected"] = (
+                None if row["expected_human_action"] < 0 else action == row["expected_human_action"]
+            )
             row["time"] = raw.clock
             if on_decision is not None:
                 on_decision(raw.clock)

@@ -6,6 +6,19 @@ from hg_marl.core.types import AGENT_NAMES, WAIT, Action, Agent, Event, Kind, Ou
 from hg_marl.core.world import World
 
 __all__ = [
-    "AGENT_NAMES", "WAIT", "Action", "Agent", "Durations", "Event", "Kind", "Outcome", "Scenario",
-    "ScenarioError", "State", "World", "available_scenarios", "generate_scenario", "load_scenario",
+    "AGENT_NAMES",
+    "WAIT",
+    "Action",
+    "Agent",
+    "Durations",
+    "Event",
+    "Kind",
+    "Outcome",
+    "Scenario",
+    "ScenarioError",
+    "State",
+    "World",
+    "available_scenarios",
+    "generate_scenario",
+    "load_scenario",
 ]

@@ -47,7 +47,9 @@ class Durations:
         out = cls()
         for key, value in data.items():
             if key not in known:
-                raise ValueError(f"{source}: field 'durations.{key}': unknown action type (known: {', '.join(sorted(known))})")
+                raise ValueError(
+                    f"{source}: field 'durations.{key}': unknown action type (known: {', '.join(sorted(known))})"
+                )
             if isinstance(value, bool) or not isinstance(value, int | float) or value <= 0:
                 raise ValueError(f"{source}: field 'durations.{key}': expected a positive number, got {value!r}")
             out = replace(out, **{key: float(value)})

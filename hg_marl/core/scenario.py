@@ -114,8 +114,7 @@ class Scenario:
     def bin_of(self) -> tuple[int, ...]:
         """For each object, the index of the first bin that accepts its colour."""
         return tuple(
-            next(b for b, bn in enumerate(self.bins) if bn.colour in ("", colour))
-            for colour in self.object_colours
+            next(b for b, bn in enumerate(self.bins) if bn.colour in ("", colour)) for colour in self.object_colours
         )
 
 
@@ -141,7 +140,13 @@ def load_scenario(spec: str | Path | Scenario) -> Scenario:
         raw = resources.files("hg_marl.core.scenarios").joinpath(f"{text}.toml").read_text()
         return parse_scenario(tomllib.loads(raw), source=text)
     if text == "generated" or text.startswith("generated:"):
-        return generate_scenario(**_parse_params(text.partition(":")[2]))
+        params: dict[str, Any] = _parse_params(text.partition(":")[2])
+        try:
+            return generate_scenario(**params)
+        except TypeError as exc:
+            raise ScenarioError(
+                f"generated scenario {text!r}: {exc} (parameters: objects, spots, locations, bins, human_only, seed)"
+            ) from exc
     path = Path(text)
     if path.suffix != ".toml" or not path.is_file():
         raise ScenarioError(
@@ -189,7 +194,9 @@ class _Reader:
             raise self.fail(path, f"expected {kind.__name__}, got {type(value).__name__}")
         return value
 
-    def names(self, data: Mapping[str, Any], key: str, path: str, known: Sequence[str], default: Any = ...) -> tuple[int, ...]:
+    def names(
+        self, data: Mapping[str, Any], key: str, path: str, known: Sequence[str], default: Any = ...
+    ) -> tuple[int, ...]:
         values = self.get(data, key, list, path, default)
         out = []
         for i, value in enumerate(values):
@@ -234,8 +241,11 @@ def parse_scenario(data: Mapping[str, Any], source: str = "<dict>") -> Scenario:
     objects = tuple(r.get(o, "name", str, f"objects[{i}].name") for i, o in enumerate(objs))
     colours = tuple(r.get(o, "colour", str, f"objects[{i}].colour", "") for i, o in enumerate(objs))
     bins = tuple(
-        Bin(r.get(b, "name", str, f"bins[{i}].name"), reach(b, f"bins[{i}]"),
-            r.get(b, "colour", str, f"bins[{i}].colour", ""))
+        Bin(
+            r.get(b, "name", str, f"bins[{i}].name"),
+            reach(b, f"bins[{i}]"),
+            r.get(b, "colour", str, f"bins[{i}].colour", ""),
+        )
         for i, b in enumerate(r.table_list(data, "bins"))
     )
     spots = tuple(
@@ -254,10 +264,14 @@ def parse_scenario(data: Mapping[str, Any], source: str = "<dict>") -> Scenario:
         count = r.get(g, "count", int, f"layout[{i}].count")
         pool = r.names(g, "spots", f"layout[{i}].spots", spot_names)
         if not 0 < count <= len(set(pool)):
-            raise r.fail(f"layout[{i}].count", f"{count} objects need {count} distinct spots, the group lists {len(set(pool))}")
+            raise r.fail(
+                f"layout[{i}].count", f"{count} objects need {count} distinct spots, the group lists {len(set(pool))}"
+            )
         layout.append(LayoutGroup(count, pool))
     if sum(g.count for g in layout) != len(objects):
-        raise r.fail("layout", f"counts add up to {sum(g.count for g in layout)}, expected {len(objects)} (one per object)")
+        raise r.fail(
+            "layout", f"counts add up to {sum(g.count for g in layout)}, expected {len(objects)} (one per object)"
+        )
     handover = frozenset(r.names(data, "handover_locations", "handover_locations", locs))
     if not handover:
         raise r.fail("handover_locations", "must name at least one robot location")
@@ -269,9 +283,16 @@ def parse_scenario(data: Mapping[str, Any], source: str = "<dict>") -> Scenario:
     except ValueError as exc:
         raise ScenarioError(str(exc)) from exc
     return Scenario(
-        name=name, objects=objects, object_colours=colours, bins=bins, spots=spots,
-        robot_locations=locs, handover_locations=handover, robot_start=start,
-        layout=tuple(layout), durations=durations,
+        name=name,
+        objects=objects,
+        object_colours=colours,
+        bins=bins,
+        spots=spots,
+        robot_locations=locs,
+        handover_locations=handover,
+        robot_start=start,
+        layout=tuple(layout),
+        durations=durations,
         description=r.get(data, "description", str, "description", ""),
     )
 
@@ -318,9 +339,7 @@ def generate_scenario(
             reach = Reach(robot_subset(), bool(rng.random() < 0.3))
         spot_list.append(Spot(f"spot{s}", reach))
     colours = [f"c{b}" for b in range(bins)] if bins > 1 else [""]
-    bin_list = tuple(
-        Bin(f"bin{b}", Reach(robot_subset(), bool(rng.random() < 0.3)), colours[b]) for b in range(bins)
-    )
+    bin_list = tuple(Bin(f"bin{b}", Reach(robot_subset(), bool(rng.random() < 0.3)), colours[b]) for b in range(bins))
     return Scenario(
         name=f"generated:objects={objects},spots={n_spots},locations={locations},bins={bins},"
         f"human_only={human_only},seed={seed}",

@@ -14,10 +14,14 @@ from __future__ import annotations
 import numpy as np
 
 from hg_marl.core import Agent, State, World
+from hg_marl.core.scenario import Bin, Spot
 
 _CELL = 48
 _PALETTE = {
-    "": (240, 150, 30), "green": (40, 170, 60), "blue": (40, 90, 220), "red": (210, 40, 40),
+    "": (240, 150, 30),
+    "green": (40, 170, 60),
+    "blue": (40, 90, 220),
+    "red": (210, 40, 40),
     "yellow": (230, 210, 40),
 }
 
@@ -34,14 +38,14 @@ def render_ansi(world: World, state: State, clock: float, cycle: int, tasks: int
     on: dict[int, list[str]] = {}
     for o, p in enumerate(state.where):
         on.setdefault(p, []).append(sc.objects[o])
-    for kind, items, offset in (("spot", sc.spots, 0), ("bin", sc.bins, world.n_spots)):
-        for i, item in enumerate(items):
-            reach = [sc.robot_locations[k] for k in sorted(item.reach.robot_from)]
-            if item.reach.human:
-                reach.append("human")
-            lines.append(
-                f"  {kind} {item.name:<14} reach={','.join(reach) or 'nobody':<32} {' '.join(on.get(i + offset, [])) or '.'}"
-            )
+    places: list[tuple[str, Spot | Bin, int]] = [("spot", s, i) for i, s in enumerate(sc.spots)]
+    places += [("bin", b, world.n_spots + i) for i, b in enumerate(sc.bins)]
+    for kind, item, code in places:
+        reach = [sc.robot_locations[k] for k in sorted(item.reach.robot_from)]
+        if item.reach.human:
+            reach.append("human")
+        here = " ".join(on.get(code, [])) or "."
+        lines.append(f"  {kind} {item.name:<14} reach={','.join(reach) or 'nobody':<32} {here}")
     return "\n".join(lines)
 
 
@@ -65,7 +69,15 @@ def render_rgb(world: World, state: State) -> np.ndarray:
     slots: list[tuple[int, int]] = []
     for i, spot in enumerate(sc.spots):
         robot, human = bool(spot.reach.robot_from), spot.reach.human
-        tint = (150, 100, 200) if robot and human else (120, 150, 230) if robot else (230, 130, 130) if human else (160, 160, 160)
+        tint = (
+            (150, 100, 200)
+            if robot and human
+            else (120, 150, 230)
+            if robot
+            else (230, 130, 130)
+            if human
+            else (160, 160, 160)
+        )
         x = _CELL // 2 + i * _CELL
         _box(img, x + 4, int(1.5 * _CELL), _CELL - 8, _CELL - 8, tint)
         slots.append((x + _CELL // 2, 2 * _CELL - 4))
@@ -73,13 +85,19 @@ def render_rgb(world: World, state: State) -> np.ndarray:
         x = _CELL // 2 + (world.n_spots + b) * _CELL
         _box(img, x + 4, int(1.4 * _CELL), _CELL - 8, _CELL, (60, 60, 60))
         slots.append((x + _CELL // 2, 2 * _CELL))
-    loc_x = [_CELL // 2 + i * (width - _CELL) // max(len(sc.robot_locations), 1) + _CELL // 2 for i in range(len(sc.robot_locations))]
+    loc_x = [
+        _CELL // 2 + i * (width - _CELL) // max(len(sc.robot_locations), 1) + _CELL // 2
+        for i in range(len(sc.robot_locations))
+    ]
     for x in loc_x:
         _disc(img, x, 4 * _CELL, 5, (90, 90, 90))
     robot_x, human_x = loc_x[state.robot_at], width // 2
     _box(img, robot_x - 16, int(3.6 * _CELL), 32, 32, (70, 110, 160))
     _disc(img, human_x, _CELL // 2, 18, (230, 180, 150))
-    hands = {world.hand[Agent.ROBOT]: (robot_x + 22, int(3.6 * _CELL)), world.hand[Agent.HUMAN]: (human_x + 22, _CELL // 2 - 8)}
+    hands = {
+        world.hand[Agent.ROBOT]: (robot_x + 22, int(3.6 * _CELL)),
+        world.hand[Agent.HUMAN]: (human_x + 22, _CELL // 2 - 8),
+    }
     for o, p in enumerate(state.where):
         cx, cy = hands.get(p, slots[p] if p < len(slots) else (0, 0))
         if world.is_in_bin(p):

@@ -45,7 +45,7 @@ Version history: v0 - initial release.
 from __future__ import annotations
 
 import operator
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 from gymnasium import spaces
@@ -56,7 +56,6 @@ from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Kind, Scenario, S
 from hg_marl.envs.render import render_ansi, render_rgb
 from hg_marl.policy import Turn
 
-
 _RESET_EVENT = Event("reset", "table", "", "new layout")
 
 
@@ -64,10 +63,10 @@ class InvalidActionError(ValueError):
     """An action outside the agent's action space (a programming error, not a failed action)."""
 
 
-class raw_env(AECEnv):  # noqa: N801  (PettingZoo's naming convention)
+class raw_env(AECEnv):
     """The AEC environment without wrappers; see the module docstring for the spec."""
 
-    metadata = {
+    metadata: ClassVar[dict[str, Any]] = {
         "name": "TableCleaning-v0",
         "render_modes": ["ansi", "rgb_array"],
         "is_parallelizable": True,
@@ -96,7 +95,9 @@ class raw_env(AECEnv):  # noqa: N801  (PettingZoo's naming convention)
         """
         super().__init__()
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
-            raise ValueError(f"render_mode {render_mode!r} is not supported; use one of {self.metadata['render_modes']} or None")
+            raise ValueError(
+                f"render_mode {render_mode!r} is not supported; use one of {self.metadata['render_modes']} or None"
+            )
         if max_cycles is not None and max_cycles < 1:
             raise ValueError(f"max_cycles must be a positive integer or None, got {max_cycles}")
         if time_budget is not None and time_budget <= 0:
@@ -111,10 +112,12 @@ class raw_env(AECEnv):  # noqa: N801  (PettingZoo's naming convention)
         self._action_spaces = {name: spaces.Discrete(n) for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)}
         f = self.world.n_facts
         self._observation_spaces = {
-            name: spaces.Dict({
-                "observation": spaces.Box(0, 1, (f,), np.int8),
-                "action_mask": spaces.Box(0, 1, (n,), np.int8),
-            })
+            name: spaces.Dict(
+                {
+                    "observation": spaces.Box(0, 1, (f,), np.int8),
+                    "action_mask": spaces.Box(0, 1, (n,), np.int8),
+                }
+            )
             for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)
         }
         self._is_wait = [[a.kind is Kind.WAIT for a in self.world.actions(ag)] for ag in Agent]
@@ -247,11 +250,11 @@ class raw_env(AECEnv):  # noqa: N801  (PettingZoo's naming convention)
         )
         done = self._done_this_cycle
         if done or truncate:
-            for a in self.agents:
-                self.terminations[a] = done
-                self.truncations[a] = truncate and not done
-        for i, a in enumerate(self.agents):
-            info = self.infos[a]
+            for name in self.agents:
+                self.terminations[name] = done
+                self.truncations[name] = truncate and not done
+        for i, name in enumerate(self.agents):
+            info = self.infos[name]
             info["clock"], info["cycle"], info["tasks_solved"] = self.clock, self.cycles, self.tasks_solved
             info["effort"], info["idle"] = self._effort[i], self._idle[i]
 
@@ -260,9 +263,14 @@ class raw_env(AECEnv):  # noqa: N801  (PettingZoo's naming convention)
         if text is None:
             text = self._event_text[events] = tuple(str(e) for e in events)
         return {
-            "clock": self.clock, "cycle": self.cycles, "tasks_solved": self.tasks_solved,
-            "action": action, "failed": failed, "events": text,
-            "effort": self._effort[agent], "idle": self._idle[agent],
+            "clock": self.clock,
+            "cycle": self.cycles,
+            "tasks_solved": self.tasks_solved,
+            "action": action,
+            "failed": failed,
+            "events": text,
+            "effort": self._effort[agent],
+            "idle": self._idle[agent],
         }
 
     # ---- observations ----------------------------------------------------------------
@@ -282,9 +290,14 @@ class raw_env(AECEnv):  # noqa: N801  (PettingZoo's naming convention)
         name = agent or self.agent_selection
         events, self._recent = tuple(self._recent), []
         return Turn(
-            world=self.world, state=self.world_state, agent=self._agent_id(name),
-            observation=self.observe(name), clock=self.clock, reward=self._cumulative_rewards[name],
-            tasks_solved=self.tasks_solved, events=events,
+            world=self.world,
+            state=self.world_state,
+            agent=self._agent_id(name),
+            observation=self.observe(name),
+            clock=self.clock,
+            reward=self._cumulative_rewards[name],
+            tasks_solved=self.tasks_solved,
+            events=events,
             last_actions=(self._last_actions[0], self._last_actions[1]),
         )
 

@@ -32,7 +32,12 @@ def check_invariants(world: World, state: State) -> None:
 
 
 @settings(max_examples=60, deadline=None)
-@given(name=st.sampled_from(sorted(WORLDS)), seed=st.integers(0, 2**31), actions=st.lists(st.floats(0, 1, exclude_max=True), min_size=1, max_size=300), feasible_share=st.floats(0, 1))
+@given(
+    name=st.sampled_from(sorted(WORLDS)),
+    seed=st.integers(0, 2**31),
+    actions=st.lists(st.floats(0, 1, exclude_max=True), min_size=1, max_size=300),
+    feasible_share=st.floats(0, 1),
+)
 def test_random_sequences_keep_invariants(name: str, seed: int, actions: list[float], feasible_share: float) -> None:
     world = WORLDS[name]
     rng = np.random.default_rng(seed)
@@ -68,7 +73,8 @@ def test_fast_mask_matches_preconditions(name: str, seed: int, steps: int) -> No
         agent = Agent(i % 2)
         cleared = state._replace(offer_by=-1, offer_obj=-1) if state.offer_by == agent.other else state
         reference = [
-            j for j, a in enumerate(world.actions(agent))
+            j
+            for j, a in enumerate(world.actions(agent))
             if world.feasible(state if a.kind is Kind.TAKE and a.obj == state.offer_obj else cleared, agent, a)
         ]
         assert world.feasible_indices(state, agent) == reference

@@ -26,7 +26,10 @@ def test_builtins_load() -> None:
 
 def test_roboergosum_reachability() -> None:
     w = World("roboergosum")
-    reach = {s.name: (sorted(w.scenario.robot_locations[i] for i in s.reach.robot_from), s.reach.human) for s in w.scenario.spots}
+    reach = {
+        s.name: (sorted(w.scenario.robot_locations[i] for i in s.reach.robot_from), s.reach.human)
+        for s in w.scenario.spots
+    }
     assert reach["placemat1"] == (["ROBOT_LOC"], False)
     assert reach["placemat3"] == (["ROBOT_LOC"], True)
     assert reach["placemat4"] == (["ROBOT_LOC", "SECOND_LOC"], True)
@@ -41,7 +44,7 @@ def test_user_file_round_trip(tmp_path: Path) -> None:
 
 
 def test_unknown_scenario_lists_choices() -> None:
-    with pytest.raises(ScenarioError, match="unknown scenario 'kitchen'.*paper2015"):
+    with pytest.raises(ScenarioError, match=r"unknown scenario 'kitchen'.*paper2015"):
         load_scenario("kitchen")
 
 
@@ -57,7 +60,16 @@ def test_unknown_scenario_lists_choices() -> None:
         (lambda t: t + "\n[durations]\npick = -1\n", "durations.pick"),
         (lambda t: t.replace("count = 2", "count = 4"), "layout[0].count"),
     ],
-    ids=["unknown location", "duplicate object", "layout sum", "wrong type", "empty handover", "missing name", "bad duration", "too few spots"],
+    ids=[
+        "unknown location",
+        "duplicate object",
+        "layout sum",
+        "wrong type",
+        "empty handover",
+        "missing name",
+        "bad duration",
+        "too few spots",
+    ],
 )
 def test_malformed_file_names_the_field(tmp_path: Path, edit, field: str) -> None:
     path = tmp_path / "bad.toml"

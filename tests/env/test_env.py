@@ -94,7 +94,7 @@ def test_time_budget_truncates() -> None:
     env = hg_marl.env(max_cycles=None, time_budget=10.0, continuing=True)
     env.reset(seed=0)
     for agent in env.agent_iter():
-        _, _, term, trunc, info = env.last()
+        _, _, term, trunc, _ = env.last()
         env.step(None if term or trunc else names(env, agent)["wait"])
     assert env.unwrapped.clock >= 10.0 and env.unwrapped.cycles == 10
 
@@ -163,6 +163,9 @@ def test_renders() -> None:
 
 
 def test_import_does_not_load_torch_or_pygame() -> None:
-    code = "import sys, hg_marl; hg_marl.env().reset(seed=0); print('torch' in sys.modules, 'pygame' in sys.modules, 'matplotlib' in sys.modules)"
+    code = (
+        "import sys, hg_marl; hg_marl.env().reset(seed=0); "
+        "print('torch' in sys.modules, 'pygame' in sys.modules, 'matplotlib' in sys.modules)"
+    )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
     assert out == ["False", "False", "False"]

@@ -15,12 +15,18 @@ def register(app: typer.Typer) -> None:
     @app.command("reproduce")
     def reproduce_command(
         seeds: Annotated[int, typer.Option(min=1, help="Seeds per condition (the paper: 10).")] = 10,
-        out: Annotated[Path, typer.Option(help="Output folder (resumable: finished runs are kept).")] = Path("results/paper2015"),
-        duration: Annotated[float | None, typer.Option(help="Simulated seconds per run (default: calibrated, see training/paper.py).")] = None,
+        out: Annotated[Path, typer.Option(help="Output folder (resumable: finished runs are kept).")] = Path(
+            "results/paper2015"
+        ),
+        duration: Annotated[
+            float | None, typer.Option(help="Simulated seconds per run (default: calibrated, see training/paper.py).")
+        ] = None,
         scenario: Annotated[str, typer.Option(help="Scenario.")] = "paper2015",
         workers: Annotated[int, typer.Option(min=1, help="Worker processes.")] = min(2, os.cpu_count() or 1),
         paper_only: Annotated[bool, typer.Option("--paper-only", help="Only the paper's three conditions.")] = False,
-        adaptation: Annotated[bool, typer.Option(help="Also run the adaptation experiment (human switches mid-run).")] = True,
+        adaptation: Annotated[
+            bool, typer.Option(help="Also run the adaptation experiment (human switches mid-run).")
+        ] = True,
     ) -> None:
         """Planner alone, habit alone, random mix (+ further criteria): Fig. 3-5, summary.json, table."""
         from tqdm import tqdm
@@ -40,8 +46,12 @@ def register(app: typer.Typer) -> None:
 
         rows = {label: summarise_condition(ConditionLogs(label, runs)) for label, runs in logs.items()}
         summary: dict[str, Any] = {
-            "scenario": scenario, "duration": duration, "seeds": seeds, "conditions": rows,
-            "paper": paper.PAPER, "targets": check_targets(rows),
+            "scenario": scenario,
+            "duration": duration,
+            "seeds": seeds,
+            "conditions": rows,
+            "paper": paper.PAPER,
+            "targets": check_targets(rows),
         }
         figures = {
             "fig3": plots.cumulative_reward(logs, duration, out / "fig3_cumulative_reward.png"),
@@ -51,14 +61,16 @@ def register(app: typer.Typer) -> None:
         if adaptation:
             from hg_marl.training.adaptation import run_adaptation
 
-            summary["adaptation"], adaptation_figures = run_adaptation(out, scenario=scenario, seeds=min(seeds, 5), workers=workers)
+            summary["adaptation"], adaptation_figures = run_adaptation(
+                out, scenario=scenario, seeds=min(seeds, 5), workers=workers
+            )
             figures.update(adaptation_figures)
         summary["figures"] = {k: str(v) for k, v in figures.items()}
         write_json(out / "summary.json", summary)
         typer.echo(table(rows))
         for name, target in summary["targets"].items():
             verdict = "holds" if target.get("holds") else "MISSED"
-            typer.echo(f"target: {name}: {verdict} {({k: v for k, v in target.items() if k != 'holds'})}")
+            typer.echo(f"target: {name}: {verdict} { ({k: v for k, v in target.items() if k != 'holds'}) }")
         if adaptation:
             from hg_marl.training.adaptation import adaptation_table
 

@@ -15,17 +15,23 @@ def register(app: typer.Typer) -> None:
 
     @app.command("run")
     def run_command(
-        robot: Annotated[str, typer.Option(help="Robot agent: planner, habit, hybrid, random, sb3, oracle.")] = "hybrid",
+        robot: Annotated[
+            str, typer.Option(help="Robot agent: planner, habit, hybrid, random, sb3, oracle.")
+        ] = "hybrid",
         criterion: Annotated[str, typer.Option(help="MetaController criterion (hybrid robot only).")] = "random",
         human: Annotated[str, typer.Option(help="Human partner (see `hg-marl run --list`).")] = "cooperative",
-        scenario: Annotated[str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml path.")] = "paper2015",
+        scenario: Annotated[
+            str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml path.")
+        ] = "paper2015",
         duration: Annotated[float, typer.Option(help="Simulated seconds.")] = 1200.0,
         seed: Annotated[int, typer.Option(help="Seed of the layouts and of both actors.")] = 0,
         model: Annotated[Path | None, typer.Option(help="Trained SB3 model (robot sb3).")] = None,
         robot_param: Annotated[list[str] | None, typer.Option("--robot-param", help="key=value for the robot.")] = None,
         human_param: Annotated[list[str] | None, typer.Option("--human-param", help="key=value for the human.")] = None,
         out: Annotated[Path | None, typer.Option(help="Write the per-decision log (CSV) here.")] = None,
-        list_agents: Annotated[bool, typer.Option("--list", help="List robots, criteria and humans, then exit.")] = False,
+        list_agents: Annotated[
+            bool, typer.Option("--list", help="List robots, criteria and humans, then exit.")
+        ] = False,
     ) -> None:
         """Play a robot with a human for a fixed simulated duration and print a summary."""
         from tqdm import tqdm
