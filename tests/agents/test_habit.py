@@ -6,8 +6,8 @@ import itertools
 
 import numpy as np
 import pytest
-from hg_marl.agents.habit import QLearner, QLearnerConfig, sample, softmax
 
+from hg_marl.agents.habit import QLearner, QLearnerConfig, sample, softmax
 from hg_marl.core import Agent, World
 
 N_FACTS, N_ACTIONS = 5, 4

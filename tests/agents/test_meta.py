@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 import pytest
+
 from hg_marl.agents.meta import (
     CostModel,
     Expert,

@@ -8,11 +8,11 @@ from typing import Any
 
 import numpy as np
 import pytest
+
 from hg_marl.agents.habit import QLearner
 from hg_marl.agents.meta import CostModel
 from hg_marl.agents.planner import Planner
 from hg_marl.agents.robots import HybridRobot, Robot, available_robots, make_robot
-
 from hg_marl.core import WAIT, Agent, State, World
 from hg_marl.policy import Actor, Turn
 
@@ -77,16 +77,11 @@ ALL = [
     ("planner", {}),
     ("habit", {}),
     ("random", {}),
-    *[
-        ("hybrid", {"criterion": c})
-        for c in ("random", "entropy", "entropy_and_cost", "vpi", "learning_state")
-    ],
+    *[("hybrid", {"criterion": c}) for c in ("random", "entropy", "entropy_and_cost", "vpi", "learning_state")],
 ]
 
 
-@pytest.mark.parametrize(
-    "name, params", ALL, ids=lambda x: x if isinstance(x, str) else str(x.get("criterion", ""))
-)
+@pytest.mark.parametrize("name, params", ALL, ids=lambda x: x if isinstance(x, str) else str(x.get("criterion", "")))
 def test_robot_protocol_and_record(world: World, name: str, params: dict[str, Any]) -> None:
     robot = make_robot(name, **params)
     assert isinstance(robot, Actor)
@@ -113,9 +108,7 @@ def test_planner_robot_solves_and_predicts_the_cooperative_human(world: World) -
     assert pairs and sum(e == h for e, h in pairs) / len(pairs) > 0.9
     rec = run.records[0]
     cost = CostModel()
-    assert rec["decision_time"] == pytest.approx(
-        cost.planner_base + cost.planner_per_node * rec["planner_nodes"]
-    )
+    assert rec["decision_time"] == pytest.approx(cost.planner_base + cost.planner_per_node * rec["planner_nodes"])
 
 
 def test_random_robot_only_feasible(world: World) -> None:
@@ -183,17 +176,13 @@ def test_hybrid_falls_back_to_habit_when_planning_fails(world: World) -> None:
         def plan(self, state: State, to_move: Agent = Agent.ROBOT) -> Any:
             result = real.plan(state, to_move=to_move)
             wait = world.index(Agent.ROBOT, WAIT)
-            return replace(
-                result, success=False, plan=None, nodes=42, reason="no plan: test", robot_action=wait
-            )
+            return replace(result, success=False, plan=None, nodes=42, reason="no plan: test", robot_action=wait)
 
     robot.planner = Failing()
     action = robot.act(robot_turn(world, world.initial_state(np.random.default_rng(0))))
     rec = robot.last_decision
     assert rec["expert"] == "habit" and action == rec["habit_action"]
-    assert (
-        rec["planner_success"] is False and rec["reason"] == "planner_failed" and rec["planner_nodes"] == 42
-    )
+    assert rec["planner_success"] is False and rec["reason"] == "planner_failed" and rec["planner_nodes"] == 42
 
 
 def test_same_seed_same_decisions(world: World) -> None:
@@ -221,9 +210,7 @@ def test_learner_fresh_per_reset_unless_given(world: World) -> None:
 
 def test_registry_lists_and_rejects() -> None:
     assert set(available_robots()) == {"planner", "habit", "hybrid", "random"}
-    with pytest.raises(
-        ValueError, match=r"unknown robot 'oracle'; available: planner, habit, hybrid, random"
-    ):
+    with pytest.raises(ValueError, match=r"unknown robot 'oracle'; available: planner, habit, hybrid, random"):
         make_robot("oracle")
     with pytest.raises(ValueError, match=r"unknown parameter\(s\) beta; accepted: .*q_config"):
         make_robot("habit", beta=3)

@@ -1,0 +1,193 @@
+"""What every robot agent shares: the ``Actor`` bookkeeping, the habit's online learning,
+and the conversion of a planner result into a MetaController proposal.
+
+Online learning (habit and hybrid robots). The robot learns inside :meth:`Robot.act`:
+``turn.reward`` is the reward received since its previous turn and
+``turn.observation["observation"]`` the facts now, so together with the previous turn's
+``(facts, action)`` they form the executed transition, and the Q-learner takes one TD
+step on it, whoever proposed the action. The first turn of a run has no previous
+transition. In episodic mode the last transition ends in a terminal state that the robot
+never acts in: call :meth:`Robot.end` with the final turn (``terminated=True``: no
+bootstrap; ``False`` on truncation: bootstrap from the last state). In continuing mode
+(the paper's) the table is re-drawn and the next ``act`` bootstraps across it, so ``end``
+is needed only at the end of the run, if at all.
+"""
+
+from __future__ import annotations
+
+import time
+from abc import ABC, abstractmethod
+from typing import Any, ClassVar
+
+import numpy as np
+
+from hg_marl.agents.habit import QLearner, QLearnerConfig, sample, softmax
+from hg_marl.agents.meta.base import PlanProposal, planner_distribution
+from hg_marl.agents.meta.cost import CostModel
+from hg_marl.core import WAIT, Agent, World
+from hg_marl.policy import Turn
+
+
+class Robot(ABC):
+    """Base of the robot agents (implements :class:`hg_marl.policy.Actor`).
+
+    Args:
+        cost: how decision time is charged (deterministic model by default).
+    """
+
+    name: ClassVar[str]
+    """Registry name."""
+
+    def __init__(self, cost: CostModel | None = None) -> None:
+        self.cost = cost or CostModel()
+        self.last_decision: dict[str, Any] = {}
+        """Record of the last decision (see the package docstring for the keys)."""
+        self.rng = np.random.default_rng(0)
+        self.world: World | None = None
+        self.agent = Agent.ROBOT
+        self.n_actions = 0
+
+    def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
+        """Start a run on ``world`` in seat ``agent``; ``rng`` is now this robot's."""
+        self.world, self.agent, self.rng = world, agent, rng
+        self.n_actions = world.n_actions(agent)
+        self.last_decision = {}
+        self._reset(world)
+
+    def _reset(self, world: World) -> None:  # noqa: B027 (optional hook)
+        """Hook: per-run set-up."""
+
+    @abstractmethod
+    def act(self, turn: Turn) -> int:
+        """Return the action to execute and set :attr:`last_decision`."""
+
+    def end(self, turn: Turn, terminated: bool = True) -> None:  # noqa: B027 (optional hook)
+        """The run or episode is over; learners take their last TD step (see module docstring)."""
+
+    def _record(self, expert: str, action: int, **fields: Any) -> None:
+        rec: dict[str, Any] = {
+            "expert": expert,
+            "action": int(action),
+            "planner_action": -1,
+            "habit_action": -1,
+            "planning_time": 0.0,
+            "planner_nodes": 0,
+            "planner_success": False,
+            "decision_time": 0.0,
+            "expected_human_action": -1,
+        }
+        rec.update(fields)
+        self.last_decision = rec
+
+
+class LearningRobot(Robot):
+    """A robot with a habitual expert that learns online from every executed transition.
+
+    Args:
+        q_config: the Q-learner's hyper-parameters (used when ``learner`` is None).
+        learner: an existing Q-learner to use and keep across resets (to continue
+            training or evaluate a saved habit). When None, each :meth:`reset` starts a
+            fresh, zero-weight learner, as each of the paper's runs does.
+        learn: whether to take TD steps (False: a frozen habit, for evaluation).
+        cost: decision cost model.
+    """
+
+    _prev: tuple[np.ndarray, int] | None
+    """The previous turn's (facts, executed action), pending its TD step."""
+
+    def __init__(
+        self,
+        q_config: QLearnerConfig | None = None,
+        learner: QLearner | None = None,
+        learn: bool = True,
+        cost: CostModel | None = None,
+    ) -> None:
+        super().__init__(cost)
+        self.q_config = q_config or QLearnerConfig()
+        self._given_learner = learner
+        self.learner = learner
+        self.learn = learn
+        self._prev: tuple[np.ndarray, int] | None = None
+        self.last_td_error = 0.0
+
+    def _reset(self, world: World) -> None:
+        if self._given_learner is None:
+            self.learner = QLearner(world.n_facts, self.n_actions, self.q_config)
+        self._prev = None
+
+    @property
+    def habit(self) -> QLearner:
+        """The Q-learner (available after :meth:`reset`)."""
+        if self.learner is None:
+            raise RuntimeError(f"{type(self).__name__}: call reset() before act()")
+        return self.learner
+
+    @property
+    def has_pending(self) -> bool:
+        """Whether a transition awaits its TD step (False on a run's first turn)."""
+        return self._prev is not None
+
+    def _remember(self, facts: np.ndarray, action: int) -> None:
+        """Keep this turn's (facts, executed action) for the next TD step."""
+        self._prev = (facts, action)
+
+    def _learn_from(self, reward: float, facts: np.ndarray, done: bool = False) -> bool:
+        """TD step on the pending (facts, action) -> (reward, facts) transition, if any.
+
+        Returns:
+            Whether a transition was pending (whether or not learning is on).
+        """
+        if self._prev is None:
+            return False
+        if self.learn:
+            prev_facts, prev_action = self._prev
+            self.last_td_error = self.habit.update(prev_facts, prev_action, reward, facts, done)
+        return True
+
+    def _habit_proposal(self, facts: np.ndarray) -> tuple[np.ndarray, np.ndarray, int, float]:
+        """Q-values, Boltzmann distribution, a sampled action and the wall time it took."""
+        t0 = time.perf_counter()
+        habit = self.habit
+        q = habit.q_values(facts)
+        probs = softmax(q, habit.config.beta)
+        action = sample(probs, self.rng)
+        return q, probs, action, time.perf_counter() - t0
+
+    def end(self, turn: Turn, terminated: bool = True) -> None:
+        """Last TD step: no bootstrap when ``terminated``; forget the pending transition."""
+        self._learn_from(turn.reward, turn.observation["observation"], done=terminated)
+        self._prev = None
+
+
+def make_planner(world: World, config: Any = None, human_model: Any = None) -> Any:
+    """Build the goal-directed expert.
+
+    Imported here rather than at module top so the robots that never plan (habit,
+    random) do not depend on the planner package.
+    """
+    from hg_marl.agents.planner import Planner, PlannerConfig
+
+    return Planner(world, config=config or PlannerConfig(), human_model=human_model)
+
+
+def plan_proposal(result: Any, n_actions: int, agent: Agent, cost: CostModel) -> PlanProposal:
+    """Turn a ``PlanResult`` into the MetaController's :class:`PlanProposal`."""
+    success = bool(result.success)
+    action = int(result.robot_action)
+    if success:
+        dist = np.asarray(result.action_distribution(n_actions, agent), dtype=np.float64)
+    else:
+        dist = planner_distribution(action, n_actions)
+    return PlanProposal(
+        success=success,
+        action=action,
+        distribution=dist,
+        cost=cost.planner_cost(int(result.nodes), float(result.wall_time)),
+        nodes=int(result.nodes),
+        human_action=int(result.human_action) if success else -1,
+    )
+
+
+def wait_index(world: World, agent: Agent) -> int:
+    """Index of ``wait`` for ``agent``."""
+    return world.index(agent, WAIT)

@@ -1,0 +1,49 @@
+"""The registry of robot agents: ``make_robot(name, **params)``."""
+
+from __future__ import annotations
+
+import inspect
+from typing import Any
+
+from hg_marl.agents.robots.base import Robot
+from hg_marl.agents.robots.habit import HabitRobot
+from hg_marl.agents.robots.hybrid import HybridRobot
+from hg_marl.agents.robots.planner import PlannerRobot
+from hg_marl.agents.robots.uniform import RandomRobot
+
+ROBOTS: dict[str, type[Robot]] = {c.name: c for c in (PlannerRobot, HabitRobot, HybridRobot, RandomRobot)}
+"""Robot classes by name (a registry of classes: the only module-level table)."""
+
+
+def available_robots() -> tuple[str, ...]:
+    """Names accepted by :func:`make_robot`."""
+    return tuple(ROBOTS)
+
+
+def robot_params(name: str) -> tuple[str, ...]:
+    """Parameter names a robot accepts."""
+    return tuple(inspect.signature(_lookup(name)).parameters)
+
+
+def _lookup(name: str) -> type[Robot]:
+    try:
+        return ROBOTS[name]
+    except KeyError:
+        raise ValueError(f"unknown robot {name!r}; available: {', '.join(ROBOTS)}") from None
+
+
+def make_robot(name: str, **params: Any) -> Robot:
+    """Build a robot agent by name, e.g. ``make_robot("hybrid", criterion="vpi")``.
+
+    Raises:
+        ValueError: unknown name (the message lists the known ones), unknown parameter
+            (lists the accepted ones), or a bad criterion or criterion parameter.
+    """
+    cls = _lookup(name)
+    accepted = robot_params(name)
+    unknown = sorted(set(params) - set(accepted))
+    if unknown:
+        raise ValueError(
+            f"robot {name!r}: unknown parameter(s) {', '.join(unknown)}; accepted: {', '.join(accepted) or '(none)'}"
+        )
+    return cls(**params)
