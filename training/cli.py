@@ -12,7 +12,7 @@ import logging
 
 import typer
 
-COMMANDS = ("run",)
+COMMANDS = ("run", "reproduce")
 """Subcommand modules, in the order ``--help`` lists them."""
 
 app = typer.Typer(

@@ -20,7 +20,7 @@ import pandas as pd
 
 from hg_marl.training.sweep import Job
 
-DEFAULT_DURATION = 1200.0
+DEFAULT_DURATION = 1100.0
 """Simulated seconds per run (see the module docstring for how it was chosen)."""
 
 PAPER = {"planner": 34.0, "random": 25.0, "habit": 3.0}

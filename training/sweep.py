@@ -78,8 +78,8 @@ def run_sweep(
     out: str | Path,
     workers: int = 1,
     on_done: Callable[[Job, dict[str, Any]], None] | None = None,
-) -> dict[Job, dict[str, Any]]:
-    """Run every job not already finished under ``out``; return all summaries.
+) -> list[dict[str, Any]]:
+    """Run every job not already finished under ``out``; return all summaries, in job order.
 
     Args:
         jobs: the sweep.
@@ -88,32 +88,33 @@ def run_sweep(
         on_done: called after each job (finished now or found finished).
     """
     out = Path(out)
-    summaries: dict[Job, dict[str, Any]] = {}
-    todo: list[Job] = []
-    for job in jobs:
+    jobs = list(jobs)
+    summaries: dict[int, dict[str, Any]] = {}
+    todo: list[int] = []
+    for i, job in enumerate(jobs):
         _, summary_path = job.paths(out)
         if summary_path.exists():
-            summaries[job] = json.loads(summary_path.read_text())
+            summaries[i] = json.loads(summary_path.read_text())
             if on_done:
-                on_done(job, summaries[job])
+                on_done(job, summaries[i])
         else:
-            todo.append(job)
+            todo.append(i)
     if todo:
         log.info("%d jobs to run, %d already done", len(todo), len(summaries))
     if workers <= 1 or len(todo) <= 1:
-        for job in todo:
-            summaries[job] = _execute_and_save(job, out)
+        for i in todo:
+            summaries[i] = _execute_and_save(jobs[i], out)
             if on_done:
-                on_done(job, summaries[job])
-        return summaries
-    with ProcessPoolExecutor(max_workers=workers) as pool:
-        futures = {pool.submit(_execute_and_save, job, out): job for job in todo}
-        for future in as_completed(futures):
-            job = futures[future]
-            summaries[job] = future.result()
-            if on_done:
-                on_done(job, summaries[job])
-    return summaries
+                on_done(jobs[i], summaries[i])
+    else:
+        with ProcessPoolExecutor(max_workers=workers) as pool:
+            futures = {pool.submit(_execute_and_save, jobs[i], out): i for i in todo}
+            for future in as_completed(futures):
+                i = futures[future]
+                summaries[i] = future.result()
+                if on_done:
+                    on_done(jobs[i], summaries[i])
+    return [summaries[i] for i in range(len(jobs))]
 
 
 def load_log(job: Job, out: str | Path) -> pd.DataFrame:

@@ -54,10 +54,10 @@ def register(app: typer.Typer) -> None:
         the_robot = checked(lambda: make_robot(robot, **robot_kwargs))
         the_human = checked(lambda: make_human(human, **parse_params(human_param, "human")))
         config = checked(lambda: RunConfig(scenario=scenario, duration=duration, seed=seed))
-        with tqdm(total=duration, unit="sim s", desc=f"{robot} + {human}", leave=False) as bar:
+        with tqdm(total=int(duration), unit="sim s", desc=f"{robot} + {human}", leave=False) as bar:
 
             def progress(clock: float) -> None:
-                bar.update(min(clock, duration) - bar.n)
+                bar.update(int(min(clock, duration)) - bar.n)
 
             result = checked(lambda: run(the_robot, the_human, config, on_decision=progress))
         s = result.summary
