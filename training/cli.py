@@ -12,7 +12,7 @@ import logging
 
 import typer
 
-COMMANDS = ("run", "reproduce")
+COMMANDS = ("run", "plan", "oracle", "reproduce", "train", "compare")
 """Subcommand modules, in the order ``--help`` lists them."""
 
 app = typer.Typer(

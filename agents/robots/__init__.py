@@ -5,6 +5,7 @@
 ``habit``      the Q-learner alone, learning online (the paper's "MF")
 ``hybrid``     planner + Q-learner arbitrated by a MetaController ``criterion``
 ``random``     uniform over the feasible actions (from the mask)
+``sb3``        a trained Stable-Baselines3 model (``path=``; torch loads on first use)
 =============  ==============================================================
 
 After every ``act`` a robot's ``last_decision`` dict holds: ``expert`` ("planner",

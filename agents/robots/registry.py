@@ -9,9 +9,10 @@ from hg_marl.agents.robots.base import Robot
 from hg_marl.agents.robots.habit import HabitRobot
 from hg_marl.agents.robots.hybrid import HybridRobot
 from hg_marl.agents.robots.planner import PlannerRobot
+from hg_marl.agents.robots.sb3 import SB3Robot
 from hg_marl.agents.robots.uniform import RandomRobot
 
-ROBOTS: dict[str, type[Robot]] = {c.name: c for c in (PlannerRobot, HabitRobot, HybridRobot, RandomRobot)}
+ROBOTS: dict[str, type[Robot]] = {c.name: c for c in (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot)}
 """Robot classes by name (a registry of classes: the only module-level table)."""
 
 

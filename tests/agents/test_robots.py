@@ -209,7 +209,7 @@ def test_learner_fresh_per_reset_unless_given(world: World) -> None:
 
 
 def test_registry_lists_and_rejects() -> None:
-    assert set(available_robots()) == {"planner", "habit", "hybrid", "random"}
+    assert set(available_robots()) == {"planner", "habit", "hybrid", "random", "sb3"}
     with pytest.raises(ValueError, match=r"unknown robot 'oracle'; available: planner, habit, hybrid, random"):
         make_robot("oracle")
     with pytest.raises(ValueError, match=r"unknown parameter\(s\) beta; accepted: .*q_config"):

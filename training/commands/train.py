@@ -1,0 +1,102 @@
+"""``hg-marl train``: Stable-Baselines3 baselines in the robot seat, learned humans in the human seat.
+
+torch and SB3 are imported inside the command body only, so ``hg-marl --help`` stays fast.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from hg_marl.training.commands.common import checked
+
+
+def register(app: typer.Typer) -> None:
+    """Add the ``train`` subcommand."""
+
+    @app.command("train")
+    def train_command(
+        algo: Annotated[str, typer.Option(help="ppo, a2c, dqn, maskable_ppo, or bc (behaviour cloning).")] = (
+            "maskable_ppo"
+        ),
+        seat: Annotated[str, typer.Option(help="robot (against humans) or human (against a robot).")] = "robot",
+        human: Annotated[
+            str,
+            typer.Option(help="Robot seat: human(s) to train against; a comma list is a population drawn per episode."),
+        ] = ("cooperative"),
+        robot: Annotated[str, typer.Option(help="Human seat: the fixed robot(s) (comma list).")] = "planner",
+        effort_weight: Annotated[float, typer.Option(help="Human seat: reward minus this x seconds of work.")] = 0.0,
+        scenario: Annotated[str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml.")] = (
+            "paper2015"
+        ),
+        steps: Annotated[int | None, typer.Option(help="Total environment steps (default: the YAML's).")] = None,
+        seed: Annotated[int, typer.Option(help="Seed of the model and the training tables.")] = 0,
+        out: Annotated[Path, typer.Option(help="Output directory.")] = Path("runs/train"),
+        hp: Annotated[list[str] | None, typer.Option("--hp", help="Hyperparameter override key=value.")] = None,
+        hyperparams: Annotated[Path | None, typer.Option(help="YAML file instead of the packaged one.")] = None,
+        observation: Annotated[str, typer.Option(help="View observation: facts, flat or dict.")] = "facts",
+        max_cycles: Annotated[int, typer.Option(help="Training episode length in cycles.")] = 100,
+        eval_freq: Annotated[int, typer.Option(help="Steps between evaluations (0: none).")] = 10_000,
+        eval_episodes: Annotated[int, typer.Option(help="Episodes per evaluation.")] = 10,
+        checkpoint_freq: Annotated[int, typer.Option(help="Steps between checkpoints (0: none).")] = 25_000,
+        resume: Annotated[Path | None, typer.Option(help="Checkpoint zip to continue (keeps its step count).")] = (
+            None
+        ),
+        traces: Annotated[list[Path] | None, typer.Option("--traces", help="bc: trace file(s) (repeat).")] = None,
+        bc_kind: Annotated[str, typer.Option(help="bc: table or linear_softmax.")] = "table",
+        tensorboard: Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")] = True,
+        progress: Annotated[bool, typer.Option(help="Show a progress bar.")] = True,
+        verbose: Annotated[int, typer.Option(help="SB3 verbosity.")] = 0,
+    ) -> None:
+        """Train an SB3 algorithm on a seat of the table (or clone recorded play with --algo bc)."""
+        if algo == "bc":
+            from hg_marl.training.baselines.bc import behaviour_clone
+
+            if not traces:
+                raise typer.BadParameter("--algo bc needs at least one --traces FILE")
+            path, accuracy = checked(lambda: behaviour_clone(traces, out, kind=bc_kind))
+            typer.echo(f"behaviour cloning ({bc_kind}): reproduces {accuracy:.1%} of the recorded actions")
+            typer.echo(f"  policy  {path}  (make_human('learned', path='{path}'))")
+            return
+
+        from hg_marl.training.baselines.envs import EnvSpec, split_population
+        from hg_marl.training.baselines.train import TrainConfig, train
+
+        partners = human if seat == "robot" else robot
+        config = checked(
+            lambda: TrainConfig(
+                algo=algo,
+                env=EnvSpec(
+                    seat=seat,
+                    partners=split_population(partners),
+                    scenario=scenario,
+                    observation=observation,
+                    max_cycles=max_cycles,
+                    effort_weight=effort_weight,
+                ),
+                steps=steps,
+                seed=seed,
+                out=out,
+                hp_overrides=tuple(hp or ()),
+                hyperparams_file=hyperparams,
+                eval_freq=eval_freq,
+                eval_episodes=eval_episodes,
+                checkpoint_freq=checkpoint_freq,
+                resume=resume,
+                tensorboard=tensorboard,
+                progress_bar=progress,
+                verbose=verbose,
+            )
+        )
+        result = checked(lambda: train(config))
+        typer.echo(
+            f"{result.hyperparams.class_name} in the {seat} seat vs {partners} on {scenario}: "
+            f"{result.num_timesteps} steps ({result.session_steps} now, {result.steps_per_second:.0f} steps/s)"
+        )
+        typer.echo(f"  model   {result.path}")
+        if seat == "robot":
+            typer.echo(f"  use it  hg-marl run --robot sb3 --model {result.path} --human {partners.split(',')[0]}")
+        else:
+            typer.echo(f"  use it  make_human('learned', path='{out}')")
