@@ -20,9 +20,7 @@ SMALL = (
 WEIGHTS = {"default": CostWeights(), "time_only": CostWeights.time_only()}
 
 
-def check_plan(
-    world: World, planner: Planner, state: State, result, to_move=Agent.ROBOT, robot_part=(0.0, False)
-):  # type: ignore[no-untyped-def]
+def check_plan(world: World, planner: Planner, state: State, result, to_move=Agent.ROBOT, robot_part=(0.0, -1)):  # type: ignore[no-untyped-def]
     """The plan runs with World.step, completes, and takes the time and cost it predicted."""
     assert result.success, result.reason
     plan = result.plan
@@ -62,9 +60,7 @@ def test_optimal_on_paper2015(weights: CostWeights) -> None:
         assert result.cost == pytest.approx(reference_cost(world, state, weights))
 
 
-def random_walk(
-    world: World, state: State, rng: np.random.Generator, cycles: int
-) -> list[tuple[State, Agent, int]]:
+def random_walk(world: World, state: State, rng: np.random.Generator, cycles: int) -> list[tuple[State, Agent, int]]:
     """Mid-task situations: (state, to_move, robot action under way) along random feasible play."""
     out: list[tuple[State, Agent, int]] = []
     for _ in range(cycles):
@@ -100,12 +96,9 @@ def test_optimal_mid_task(scenario: str) -> None:
             seen_hand += any(p in world.hand for p in state.where)
             ra = ar if to_move is Agent.HUMAN else None
             result = planner.plan(state, to_move, robot_action=ra)
-            part = (0.0, False)
+            part = (0.0, -1)
             if ra is not None:
-                part = (
-                    world.durations.of(world.actions(Agent.ROBOT)[ra].kind),
-                    ra != world.n_actions(Agent.ROBOT) - 1,
-                )
+                part = (world.durations.of(world.actions(Agent.ROBOT)[ra].kind), ra)
             expected = reference_cost(world, state, weights, to_move=to_move, robot_part=part)
             if math.isinf(expected):
                 assert not result.success
@@ -113,3 +106,62 @@ def test_optimal_mid_task(scenario: str) -> None:
             check_plan(world, planner, state, result, to_move, part)
             assert result.cost == pytest.approx(expected)
     assert seen_hand > 0
+    if scenario == MID[0]:
+        assert seen_offer > 0, "this walk passes through pending offers"
+
+
+FOUR = [f"generated:objects=4,seed={seed}" for seed in range(3)] + [
+    f"generated:objects=4,seed={seed},human_only=0.8" for seed in range(2)
+]
+
+
+@pytest.mark.parametrize("weights", WEIGHTS.values(), ids=WEIGHTS.keys())
+@pytest.mark.parametrize("scenario", FOUR)
+def test_optimal_four_objects(scenario: str, weights: CostWeights) -> None:
+    world = World(scenario)
+    planner = Planner(world, PlannerConfig(weights=weights))
+    state = world.initial_state(np.random.default_rng(0))
+    result = planner.plan(state)
+    check_plan(world, planner, state, result)
+    assert result.cost == pytest.approx(reference_cost(world, state, weights))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("weights", WEIGHTS.values(), ids=WEIGHTS.keys())
+@pytest.mark.parametrize(
+    "scenario",
+    [f"generated:objects=4,seed={seed}" for seed in range(3, 12)]
+    + [f"generated:objects=4,seed={seed},human_only=0.8,bins=2" for seed in range(6)],
+)
+def test_optimal_four_objects_many_seeds(scenario: str, weights: CostWeights) -> None:
+    world = World(scenario)
+    planner = Planner(world, PlannerConfig(weights=weights))
+    for state in initial_states(world, range(3)):
+        result = planner.plan(state)
+        expected = reference_cost(world, state, weights)
+        if math.isinf(expected):
+            assert not result.success
+            continue
+        check_plan(world, planner, state, result)
+        assert result.cost == pytest.approx(expected)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("weights", WEIGHTS.values(), ids=WEIGHTS.keys())
+@pytest.mark.parametrize("seed", range(3))
+def test_optimal_on_roboergosum(seed: int, weights: CostWeights) -> None:
+    """About a minute per case: the exhaustive reference explores every joint cycle."""
+    world = World("roboergosum")
+    planner = Planner(world, PlannerConfig(weights=weights))
+    state = world.initial_state(np.random.default_rng(seed))
+    result = planner.plan(state)
+    check_plan(world, planner, state, result)
+    assert result.cost == pytest.approx(reference_cost(world, state, weights))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_roboergosum_plans_execute(seed: int) -> None:
+    world = World("roboergosum")
+    planner = Planner(world)
+    state = world.initial_state(np.random.default_rng(seed))
+    check_plan(world, planner, state, planner.plan(state))

@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from hg_marl.agents.planner import CostWeights, HumanModel
-from hg_marl.agents.planner.costs import cycle_terms
+from hg_marl.agents.planner.costs import cycle_terms, robot_active
 from hg_marl.core import Agent, State, World
 
 
@@ -24,11 +24,11 @@ def reference_cost(
     weights: CostWeights,
     model: HumanModel | None = None,
     to_move: Agent = Agent.ROBOT,
-    robot_part: tuple[float, bool] = (0.0, False),
+    robot_part: tuple[float, int] = (0.0, -1),
     limit: int = 2_000_000,
 ) -> float:
     """Minimum total cost to complete the task from ``root`` (inf if impossible)."""
-    wait_r, wait_h = world.n_actions(Agent.ROBOT) - 1, world.n_actions(Agent.HUMAN) - 1
+    wait_h = world.n_actions(Agent.HUMAN) - 1
     hand_h = world.hand[Agent.HUMAN]
 
     def human_moves(s1: State) -> list[int]:
@@ -40,11 +40,11 @@ def reference_cost(
             allowed += choice
         return sorted(set(allowed))
 
-    def replies(s1: State, d_r: float, active_r: bool, g: float) -> list[tuple[float, State]]:
+    def replies(s1: State, d_r: float, ar: int, g: float) -> list[tuple[float, State]]:
         out = []
         for ah in human_moves(s1):
             o = world.step(s1, Agent.HUMAN, ah)
-            t = cycle_terms(d_r, active_r, o.duration, ah != wait_h, hand_h in o.state.where)
+            t = cycle_terms(d_r, robot_active(world, ar, ah), o.duration, ah != wait_h, hand_h in o.state.where)
             out.append((g + weights.total(t), o.state))
         return out
 
@@ -69,10 +69,10 @@ def reference_cost(
         for ar in world.feasible_indices(s, Agent.ROBOT):
             o = world.step(s, Agent.ROBOT, ar)
             if o.reward == 1.0:
-                done = min(c for c, _ in replies(o.state, o.duration, False, g))
+                done = min(c for c, _ in replies(o.state, o.duration, ar, g))
                 heapq.heappush(heap, (done, next(counter), None))
                 continue
-            for c, s2 in replies(o.state, o.duration, ar != wait_r, g):
+            for c, s2 in replies(o.state, o.duration, ar, g):
                 if c < best.get(s2, math.inf):
                     best[s2] = c
                     heapq.heappush(heap, (c, next(counter), s2))
@@ -83,26 +83,26 @@ def execute(
     world: World,
     plan_cycles: tuple[tuple[int, int], ...],
     root: State,
-    robot_part: tuple[float, bool] = (0.0, False),
+    robot_part: tuple[float, int] = (0.0, -1),
 ) -> tuple[float, list[tuple[float, bool, float, bool, bool]], float]:
     """Run cycles with ``World.step``; return (clock, per-cycle raw inputs, reward of the last robot action).
 
     Asserts every action succeeds.
     """
-    wait_r, wait_h = world.n_actions(Agent.ROBOT) - 1, world.n_actions(Agent.HUMAN) - 1
+    wait_h = world.n_actions(Agent.HUMAN) - 1
     hand_h = world.hand[Agent.HUMAN]
     state, clock, reward, parts = root, 0.0, 0.0, []
     for ar, ah in plan_cycles:
         if ar < 0:
-            d_r, act_r = robot_part
+            d_r, r_act = robot_part
         else:
             o = world.step(state, Agent.ROBOT, ar)
             assert o.ok, f"robot {world.action_names[0][ar]} failed"
-            state, d_r, act_r, reward = o.state, o.duration, ar != wait_r, o.reward
+            state, d_r, r_act, reward = o.state, o.duration, ar, o.reward
         o = world.step(state, Agent.HUMAN, ah)
         assert o.ok, f"human {world.action_names[1][ah]} failed"
         state = o.state
-        parts.append((d_r, act_r, o.duration, ah != wait_h, hand_h in state.where))
+        parts.append((d_r, robot_active(world, r_act, ah), o.duration, ah != wait_h, hand_h in state.where))
         clock += max(d_r, o.duration)
     return clock, parts, reward
 

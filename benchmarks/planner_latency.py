@@ -1,0 +1,94 @@
+"""Planner latency: planning time and nodes expanded against the number of objects.
+
+Run: ``python benchmarks/planner_latency.py [--seeds 5] [--budget 20000]``. Prints one
+row per workload: median and 95th-percentile cold planning time and the median CPU time
+(less sensitive to a loaded machine) of a fresh ``Planner``
+(no plan, candidate or bound cached; the ``World`` is shared, as in a run), the
+warm time (the same query again: a cache hit), nodes expanded, and how many calls
+proved the optimum within the node budget. Targets (DESIGN.md section 3 / issue 3):
+paper2015 initial state <= 1 ms median, roboergosum <= 10 ms, 20 objects <= 100 ms with
+the optimum proven.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+
+import numpy as np
+
+from hg_marl.agents.planner import Planner, PlannerConfig
+from hg_marl.core import State, World
+
+
+def percentile(values: list[float], q: float) -> float:
+    """The q-th percentile (nearest rank)."""
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, max(0, round(q / 100 * len(ordered) + 0.5) - 1))]
+
+
+def measure(cases: list[tuple[World, State]], budget: int) -> dict[str, float | int | str]:
+    """Cold and warm planning statistics over ``(world, initial state)`` cases."""
+    cold, cpu, warm, nodes, proven = [], [], [], [], 0
+    for world, state in cases:
+        planner = Planner(world, PlannerConfig(node_budget=budget))
+        start, start_cpu = time.perf_counter(), time.process_time()
+        result = planner.plan(state)
+        cold.append(time.perf_counter() - start)
+        cpu.append(time.process_time() - start_cpu)
+        start = time.perf_counter()
+        planner.plan(state)
+        warm.append(time.perf_counter() - start)
+        nodes.append(result.nodes)
+        proven += result.success and result.optimal
+    return {
+        "median_ms": statistics.median(cold) * 1e3,
+        "p95_ms": percentile(cold, 95) * 1e3,
+        "cpu_ms": statistics.median(cpu) * 1e3,
+        "warm_us": statistics.median(warm) * 1e6,
+        "nodes_med": int(statistics.median(nodes)),
+        "nodes_max": max(nodes),
+        "proven": f"{proven}/{len(cold)}",
+    }
+
+
+def workloads(seeds: int) -> list[tuple[str, list[tuple[World, State]]]]:
+    """Built-in scenarios from several initial states; one state of each of several
+    generated layouts per size (human_only=0.8: most objects need the human or a handover)."""
+    out = []
+    for name in ("paper2015", "roboergosum"):
+        world = World(name)
+        out.append((name, [(world, world.initial_state(np.random.default_rng(s))) for s in range(seeds)]))
+    for n in (3, 6, 10, 20):
+        for human_only in (0.3, 0.8):
+            worlds = [World(f"generated:objects={n},human_only={human_only},seed={s}") for s in range(seeds)]
+            out.append(
+                (f"N={n} human_only={human_only}", [(w, w.initial_state(np.random.default_rng(0))) for w in worlds])
+            )
+    return out
+
+
+def main() -> None:
+    """Print the latency table."""
+    parser = argparse.ArgumentParser(description="Planner latency against the number of objects.")
+    parser.add_argument("--seeds", type=int, default=5, help="initial states or layouts per workload")
+    parser.add_argument("--budget", type=int, default=20_000, help="node budget per call")
+    args = parser.parse_args()
+    header = (
+        f"{'workload':<24}{'median ms':>10}{'p95 ms':>10}{'cpu ms':>9}{'warm us':>9}"
+        f"{'nodes med':>10}{'nodes max':>10}{'proven':>8}"
+    )
+    print(header)
+    print("-" * len(header))
+    for label, cases in workloads(args.seeds):
+        row = measure(cases, args.budget)
+        print(
+            f"{label:<24}{row['median_ms']:>10.2f}{row['p95_ms']:>10.2f}{row['cpu_ms']:>9.2f}{row['warm_us']:>9.1f}"
+            f"{row['nodes_med']:>10}{row['nodes_max']:>10}{row['proven']:>8}",
+            flush=True,
+        )
+
+
+if __name__ == "__main__":
+    main()
