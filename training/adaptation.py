@@ -13,12 +13,15 @@ exact model, :mod:`hg_marl.agents.oracle`):
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pandas as pd
 
+from hg_marl.training.paper import FURTHER_CRITERIA, FURTHER_HABIT
 from hg_marl.training.sweep import Job, load_log, run_sweep
 
 DURATION = 2400.0
@@ -33,30 +36,47 @@ ROBOTS: dict[str, tuple[str, dict[str, Any]]] = {
     "planner": ("planner", {}),
     "habit": ("habit", {}),
     "random": ("hybrid", {"criterion": "random"}),
-    "entropy": ("hybrid", {"criterion": "entropy"}),
-    "entropy_and_cost": ("hybrid", {"criterion": "entropy_and_cost"}),
-    "vpi": ("hybrid", {"criterion": "vpi"}),
-    "learning_state": ("hybrid", {"criterion": "learning_state"}),
+    **{c: ("hybrid", {"criterion": c, "q_config": dict(FURTHER_HABIT)}) for c in FURTHER_CRITERIA},
 }
 """Robots compared."""
 
 
-def adaptation_jobs(scenario: str, seeds: int) -> list[Job]:
+@dataclass(frozen=True)
+class AdaptationConfig:
+    """The adaptation experiment's protocol (defaults: the module constants)."""
+
+    scenario: str = "paper2015"
+    """Scenario."""
+    seeds: int = 3
+    """Seeds per (robot, new human)."""
+    duration: float = DURATION
+    """Simulated seconds per run."""
+    switch_at: float = SWITCH_AT
+    """When the human changes."""
+    window: float = WINDOW
+    """Sliding window of the rate estimate."""
+    new_humans: tuple[str, ...] = NEW_HUMANS
+    """Humans switched to."""
+    robots: tuple[str, ...] = tuple(ROBOTS)
+    """Labels of :data:`ROBOTS` to compare."""
+
+
+def adaptation_jobs(config: AdaptationConfig) -> list[Job]:
     """One job per (new human, robot, seed)."""
     return [
         Job(
             label=f"adapt_{new}_{label}",
-            robot=robot,
-            robot_params=params,
+            robot=ROBOTS[label][0],
+            robot_params=ROBOTS[label][1],
             seed=seed,
-            scenario=scenario,
-            duration=DURATION,
+            scenario=config.scenario,
+            duration=config.duration,
             human="switching",
-            human_params={"humans": ["cooperative", new], "at": [SWITCH_AT], "by": "time"},
+            human_params={"humans": ["cooperative", new], "at": [config.switch_at], "by": "time"},
         )
-        for new in NEW_HUMANS
-        for label, (robot, params) in ROBOTS.items()
-        for seed in range(seeds)
+        for new in config.new_humans
+        for label in config.robots
+        for seed in range(config.seeds)
     ]
 
 
@@ -80,34 +100,38 @@ def time_to_regain(
 
 
 def run_adaptation(
-    out: Path, scenario: str = "paper2015", seeds: int = 5, workers: int = 1
+    out: Path,
+    config: AdaptationConfig | None = None,
+    workers: int = 1,
+    on_done: Callable[[Job, dict[str, Any]], None] | None = None,
 ) -> tuple[dict[str, Any], dict[str, Path]]:
     """Run (or resume) the adaptation sweep; return its summary and figure paths."""
     from hg_marl.agents.oracle import oracle_rate
     from hg_marl.training import plots
 
-    jobs = adaptation_jobs(scenario, seeds)
-    run_sweep(jobs, out, workers=workers)
-    oracle = {name: oracle_rate(scenario, name).rate_per_hour for name in ("cooperative", *NEW_HUMANS)}
+    c = config or AdaptationConfig()
+    jobs = adaptation_jobs(c)
+    run_sweep(jobs, out, workers=workers, on_done=on_done)
+    oracle = {name: oracle_rate(c.scenario, name).rate_per_hour for name in ("cooperative", *c.new_humans)}
     summary: dict[str, Any] = {
-        "switch_at": SWITCH_AT,
-        "duration": DURATION,
-        "window": WINDOW,
-        "seeds": seeds,
+        "switch_at": c.switch_at,
+        "duration": c.duration,
+        "window": c.window,
+        "seeds": c.seeds,
         "oracle_rate_per_hour": oracle,
         "results": {},
     }
     figures: dict[str, Path] = {}
-    grid = np.arange(WINDOW, DURATION + 1e-9, 10.0)
-    for new in NEW_HUMANS:
+    grid = np.arange(c.window, c.duration + 1e-9, 10.0)
+    after_hours = (c.duration - c.switch_at) / 3600.0
+    for new in c.new_humans:
         target = 0.9 * oracle[new]
-        after_hours = (DURATION - SWITCH_AT) / 3600.0
         curves: dict[str, tuple[np.ndarray, np.ndarray]] = {}
         rows: dict[str, Any] = {}
-        for label in ROBOTS:
+        for label in c.robots:
             logs = [load_log(j, out) for j in jobs if j.label == f"adapt_{new}_{label}"]
-            regain = [time_to_regain(log, target) for log in logs]
-            after = [float(log.loc[(log["reward"] > 0) & (log["time"] > SWITCH_AT)].shape[0]) for log in logs]
+            regain = [time_to_regain(log, target, c.switch_at, c.window) for log in logs]
+            after = [float(((log["reward"] > 0) & (log["time"] > c.switch_at)).sum()) for log in logs]
             reached = [r for r in regain if r is not None]
             rows[label] = {
                 "time_to_regain_90_mean": float(np.mean(reached)) if reached else None,
@@ -116,13 +140,13 @@ def run_adaptation(
                 "tasks_after_switch_mean": float(np.mean(after)),
                 "tasks_lost_mean": float(oracle[new] * after_hours - np.mean(after)),
             }
-            curves[label] = (grid, np.mean([rate_curve(log, grid) for log in logs], axis=0))
+            curves[label] = (grid, np.mean([rate_curve(log, grid, c.window) for log in logs], axis=0))
         summary["results"][new] = rows
         figures[f"adaptation_{new}"] = plots.adaptation(
             curves,
-            SWITCH_AT,
+            c.switch_at,
             (oracle["cooperative"], oracle[new]),
-            f"Adaptation: cooperative -> {new} (mean of {seeds} seeds)",
+            f"Adaptation: cooperative -> {new} (mean of {c.seeds} seeds)",
             out / f"adaptation_{new}.png",
         )
     return summary, figures

@@ -36,12 +36,22 @@ PAPER_CONDITIONS: dict[str, tuple[str, dict[str, Any]]] = {
 FURTHER_CRITERIA = ("entropy", "entropy_and_cost", "vpi", "learning_state")
 """Criteria beyond the paper's random mix, each run as a hybrid robot."""
 
+FURTHER_HABIT: dict[str, Any] = {"features": "tabular"}
+"""The habit of the further criteria's hybrids: tabular (one-hot state code).
+
+Why not the paper's linear habit: the entropy and VPI criteria read the habit's
+per-state action distribution as a measure of what it knows there (Dromnelle et al.
+2022 and Keramati et al. 2011 both use tabular model-free experts). The linear habit
+generalises across states, so with beta = 50 its distribution is sharp even in states it
+has never learnt, and these criteria hand it control far too early (measured: about 5
+tasks instead of 35 with ``entropy``/``entropy_and_cost``)."""
+
 
 def conditions(further: bool = True) -> dict[str, tuple[str, dict[str, Any]]]:
     """All conditions of the experiment, the paper's first."""
     out = dict(PAPER_CONDITIONS)
     if further:
-        out.update({c: ("hybrid", {"criterion": c}) for c in FURTHER_CRITERIA})
+        out.update({c: ("hybrid", {"criterion": c, "q_config": dict(FURTHER_HABIT)}) for c in FURTHER_CRITERIA})
     return out
 
 

@@ -27,6 +27,7 @@ def register(app: typer.Typer) -> None:
         adaptation: Annotated[
             bool, typer.Option(help="Also run the adaptation experiment (human switches mid-run).")
         ] = True,
+        adaptation_seeds: Annotated[int, typer.Option(min=1, help="Seeds per (robot, new human) when adapting.")] = 3,
     ) -> None:
         """Planner alone, habit alone, random mix (+ further criteria): Fig. 3-5, summary.json, table."""
         from tqdm import tqdm
@@ -37,21 +38,19 @@ def register(app: typer.Typer) -> None:
 
         duration = duration or paper.DEFAULT_DURATION
         jobs = paper.jobs(seeds=seeds, duration=duration, scenario=scenario, further=not paper_only)
-        with tqdm(total=len(jobs), unit="run", desc="reproduce") as bar:
+        with tqdm(total=len(jobs), unit="run", desc="paper experiment") as bar:
             run_sweep(jobs, out, workers=workers, on_done=lambda job, _: bar.update(1))
         logs: dict[str, list[Any]] = {}
         for job in jobs:
             logs.setdefault(job.label, []).append(load_log(job, out))
-        from hg_marl.training.paper import ConditionLogs, check_targets, summarise_condition, table
-
-        rows = {label: summarise_condition(ConditionLogs(label, runs)) for label, runs in logs.items()}
+        rows = {label: paper.summarise_condition(paper.ConditionLogs(label, runs)) for label, runs in logs.items()}
         summary: dict[str, Any] = {
             "scenario": scenario,
             "duration": duration,
             "seeds": seeds,
             "conditions": rows,
             "paper": paper.PAPER,
-            "targets": check_targets(rows),
+            "targets": paper.check_targets(rows),
         }
         figures = {
             "fig3": plots.cumulative_reward(logs, duration, out / "fig3_cumulative_reward.png"),
@@ -59,15 +58,17 @@ def register(app: typer.Typer) -> None:
             "fig5": plots.weight_amplitude(logs, out / "fig5_weight_amplitude.png"),
         }
         if adaptation:
-            from hg_marl.training.adaptation import run_adaptation
+            from hg_marl.training.adaptation import AdaptationConfig, adaptation_jobs, run_adaptation
 
-            summary["adaptation"], adaptation_figures = run_adaptation(
-                out, scenario=scenario, seeds=min(seeds, 5), workers=workers
-            )
-            figures.update(adaptation_figures)
+            config = AdaptationConfig(scenario=scenario, seeds=adaptation_seeds)
+            with tqdm(total=len(adaptation_jobs(config)), unit="run", desc="adaptation") as bar:
+                summary["adaptation"], more = run_adaptation(
+                    out, config, workers=workers, on_done=lambda job, _: bar.update(1)
+                )
+            figures.update(more)
         summary["figures"] = {k: str(v) for k, v in figures.items()}
         write_json(out / "summary.json", summary)
-        typer.echo(table(rows))
+        typer.echo(paper.table(rows))
         for name, target in summary["targets"].items():
             verdict = "holds" if target.get("holds") else "MISSED"
             typer.echo(f"target: {name}: {verdict} { ({k: v for k, v in target.items() if k != 'holds'}) }")
