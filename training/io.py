@@ -8,6 +8,7 @@ run can trust whatever it finds.
 from __future__ import annotations
 
 import json
+import math
 import os
 import tempfile
 from collections.abc import Callable
@@ -30,11 +31,21 @@ def atomic_write(path: str | Path, write: Callable[[Path], object]) -> Path:
     return path
 
 
+def _plain(value: Any) -> Any:
+    """JSON-safe copy: NaN and infinities become None (JSON has neither)."""
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_plain(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
 def write_json(path: str | Path, data: Any) -> Path:
-    """Atomically write ``data`` as indented JSON."""
-    return atomic_write(
-        path, lambda tmp: tmp.write_text(json.dumps(data, indent=2, sort_keys=True, default=float) + "\n")
-    )
+    """Atomically write ``data`` as indented, strict JSON (NaN written as null)."""
+    text = json.dumps(_plain(data), indent=2, sort_keys=True, default=float, allow_nan=False) + "\n"
+    return atomic_write(path, lambda tmp: tmp.write_text(text))
 
 
 def write_text(path: str | Path, text: str) -> Path:

@@ -12,7 +12,6 @@ actors' generators, so a run is a pure function of (robot, human, scenario, seed
 from __future__ import annotations
 
 import logging
-import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -82,6 +81,12 @@ class RunResult:
         return atomic_write(path, lambda tmp: self.log.to_csv(tmp, index=False))
 
 
+def _mean_or_none(column: pd.Series) -> float | None:
+    """Mean of the non-missing values (None when there are none: JSON has no NaN)."""
+    values = column.dropna()
+    return float(values.astype(float).mean()) if len(values) else None
+
+
 def summarise(log: pd.DataFrame, duration: float) -> dict[str, Any]:
     """Tasks solved, actions, failed actions, simulated time and the planner's share."""
     n = len(log)
@@ -93,9 +98,7 @@ def summarise(log: pd.DataFrame, duration: float) -> dict[str, Any]:
         "duration": duration,
         "planner_share": float((log["expert"] == "planner").mean()) if n else 0.0,
         "final_weight_amplitude": float(log["weight_amplitude"].iloc[-1]) if n else 0.0,
-        "human_as_expected": float(log["human_as_expected"].dropna().mean())
-        if n and log["human_as_expected"].notna().any()
-        else math.nan,
+        "human_as_expected": _mean_or_none(log["human_as_expected"]) if n else None,
     }
 
 

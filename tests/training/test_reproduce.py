@@ -1,0 +1,66 @@
+"""Smoke runs of the paper's experiment and of the adaptation experiment."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from typer.testing import CliRunner
+
+from hg_marl.training import adaptation
+from hg_marl.training.adaptation import AdaptationConfig, rate_curve, run_adaptation, time_to_regain
+from hg_marl.training.cli import app
+
+
+def test_reproduce_smoke(tmp_path: Path) -> None:
+    out = tmp_path / "paper"
+    args = ["reproduce", "--seeds", "2", "--duration", "240", "--out", str(out), "--no-adaptation", "--workers", "1"]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 0, result.output
+    summary = json.loads((out / "summary.json").read_text())
+    conditions = summary["conditions"]
+    assert {"planner", "habit", "random", "entropy", "entropy_and_cost", "vpi", "learning_state"} <= set(conditions)
+    for name, row in conditions.items():
+        assert row["seeds"] == 2
+        assert row["actions_mean"] > 0
+        assert 0.0 <= row["planner_share"] <= 1.0, name
+        assert row["tasks_solved_mean"] >= 0
+    assert conditions["planner"]["planner_share"] == 1.0 and conditions["habit"]["planner_share"] == 0.0
+    assert conditions["planner"]["tasks_solved_mean"] >= 5, "240 s is several tasks for the planner"
+    assert conditions["planner"]["tasks_solved_mean"] > conditions["habit"]["tasks_solved_mean"]
+    assert conditions["random"]["final_weight_amplitude_mean"] > 0, "the planner's transitions teach the habit"
+    for key in ("fig3", "fig4", "fig5"):
+        png = Path(summary["figures"][key])
+        assert png.exists() and png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "paper" in result.output and "planner" in result.output
+    # resuming finds every run done and reproduces the same summary
+    again = CliRunner().invoke(app, args)
+    assert again.exit_code == 0
+    assert json.loads((out / "summary.json").read_text())["conditions"] == conditions
+
+
+def test_rate_and_regain_on_a_constructed_log() -> None:
+    times = np.concatenate([np.arange(30, 601, 30.0), np.arange(900, 1801, 60.0)])
+    log = pd.DataFrame({"time": times, "reward": 1.0})
+    grid = np.array([600.0, 1800.0])
+    assert rate_curve(log, grid, window=300.0).tolist() == [120.0, 60.0]
+    # after a switch at 600 the rate reaches 60/h once a 300 s window holds 5 tasks: (840, 1140]
+    assert time_to_regain(log, 60.0, switch_at=600.0, window=300.0) == 540.0
+    assert time_to_regain(log, 200.0, switch_at=600.0, window=300.0) is None
+
+
+def test_adaptation_smoke(tmp_path: Path) -> None:
+    config = AdaptationConfig(
+        seeds=1, duration=600.0, switch_at=300.0, window=150.0, new_humans=("no_handover",), robots=("planner", "habit")
+    )
+    summary, figures = run_adaptation(tmp_path, config)
+    oracle = summary["oracle_rate_per_hour"]
+    assert oracle["cooperative"] > oracle["no_handover"] > 0
+    rows = summary["results"]["no_handover"]
+    assert set(rows) == {"planner", "habit"}
+    assert rows["planner"]["tasks_after_switch_mean"] > rows["habit"]["tasks_after_switch_mean"]
+    assert rows["planner"]["tasks_lost_mean"] < rows["habit"]["tasks_lost_mean"]
+    assert figures["adaptation_no_handover"].exists()
+    assert "planner" in adaptation.adaptation_table(summary)

@@ -1,0 +1,108 @@
+"""The runner, sweeps (resume, atomic results) and the ``hg-marl run`` command."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pandas as pd
+import pytest
+from typer.testing import CliRunner
+
+from hg_marl.agents.humans import make_human
+from hg_marl.agents.robots import make_robot
+from hg_marl.training import sweep
+from hg_marl.training.cli import app
+from hg_marl.training.io import atomic_write
+from hg_marl.training.runner import COLUMNS, RunConfig, run
+from hg_marl.training.sweep import Job, run_sweep
+
+
+def test_planner_run_is_logged_and_charged() -> None:
+    result = run(make_robot("planner"), make_human("cooperative"), RunConfig(duration=200.0, seed=1))
+    log = result.log
+    assert list(log.columns) == list(COLUMNS)
+    assert result.summary["tasks_solved"] == int(log["reward"].sum()) >= 5
+    assert (log["expert"] == "planner").all() and not log["failed"].any()
+    assert (log["decision_time"] > 0).all(), "planning is charged to the clock"
+    assert log["time"].is_monotonic_increasing and log["time"].iloc[-1] >= 200.0
+    assert log["human_as_expected"].dropna().mean() > 0.9, "the cooperative human follows the shared plan"
+
+
+def test_same_seed_same_trajectory() -> None:
+    def once(seed: int) -> pd.DataFrame:
+        robot = make_robot("hybrid", criterion="random")
+        return run(robot, make_human("noisy"), RunConfig(duration=150.0, seed=seed)).log
+
+    a, b, c = once(3), once(3), once(4)
+    pd.testing.assert_frame_equal(a.drop(columns="planning_time"), b.drop(columns="planning_time"))
+    assert not a[["action", "human_action"]].equals(c[["action", "human_action"]])
+
+
+def test_charging_decision_time_costs_tasks() -> None:
+    charged = run(make_robot("planner"), make_human("cooperative"), RunConfig(duration=300.0, seed=0))
+    free = run(
+        make_robot("planner"), make_human("cooperative"), RunConfig(duration=300.0, seed=0, charge_decision_time=False)
+    )
+    assert len(free.log) >= len(charged.log)
+    assert free.log["decision_time"].sum() > 0
+
+
+def test_sweep_resumes_without_rerunning(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    jobs = [Job("random", "random", seed=s, duration=60.0, human="random") for s in range(2)]
+    first = run_sweep(jobs, tmp_path)
+    assert [s["job"]["seed"] for s in first] == [0, 1]
+    for job in jobs:
+        log_path, summary_path = job.paths(tmp_path)
+        assert log_path.exists() and json.loads(summary_path.read_text())["actions"] == len(pd.read_csv(log_path))
+
+    def boom(job: Job) -> None:
+        raise AssertionError("a finished job was run again")
+
+    monkeypatch.setattr(sweep, "execute", boom)
+    assert run_sweep(jobs, tmp_path) == first
+
+
+def test_sweep_in_two_processes_matches_in_process(tmp_path: Path) -> None:
+    jobs = [Job("planner", "planner", seed=s, duration=80.0) for s in range(2)]
+    serial = run_sweep(jobs, tmp_path / "a", workers=1)
+    parallel = run_sweep(jobs, tmp_path / "b", workers=2)
+    assert [s["tasks_solved"] for s in serial] == [s["tasks_solved"] for s in parallel]
+    assert [s["actions"] for s in serial] == [s["actions"] for s in parallel]
+
+
+def test_atomic_write_leaves_nothing_on_failure(tmp_path: Path) -> None:
+    target = tmp_path / "out.csv"
+
+    def fail(tmp: Path) -> None:
+        tmp.write_text("half")
+        raise RuntimeError("interrupted")
+
+    with pytest.raises(RuntimeError):
+        atomic_write(target, fail)
+    assert not target.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_cli_run_prints_summary_and_writes_log(tmp_path: Path) -> None:
+    out = tmp_path / "log.csv"
+    args = ["run", "--robot", "planner", "--human", "cooperative", "--duration", "120", "--out", str(out)]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 0, result.output
+    assert "tasks solved" in result.output and out.exists()
+    assert len(pd.read_csv(out)) > 10
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--robot", "dog"], "unknown robot 'dog'"),
+        (["--human", "cat"], "unknown human"),
+        (["--scenario", "kitchen"], "unknown scenario"),
+        (["--robot", "hybrid", "--criterion", "astrology"], "astrology"),
+    ],
+)
+def test_cli_run_rejects_unknown_names_clearly(args: list[str], message: str) -> None:
+    result = CliRunner().invoke(app, ["run", "--duration", "10", *args])
+    assert result.exit_code == 2
+    assert message in result.output
+    assert "Traceback" not in result.output
