@@ -1,0 +1,211 @@
+"""The one registry of humans: ``make_human(name, **params)`` and ``available_humans()``.
+
+Names may carry parameters, so a command line or a population list can say
+``"lazy:p_idle=0.5"`` or ``"noisy:temperature=0.2"``. Unknown names and bad parameters
+raise :class:`HumanError` listing what exists.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from hg_marl.agents.humans.base import HumanError
+from hg_marl.policy import Actor
+
+_REQUIRED: Any = None
+
+
+@dataclass(frozen=True)
+class Param:
+    """A human's parameter: its default and what it does."""
+
+    default: Any
+    """Default value (``None`` for a required path)."""
+    doc: str
+    """One line: what it changes."""
+
+
+@dataclass(frozen=True)
+class HumanSpec:
+    """A registered human."""
+
+    name: str
+    """Registry name."""
+    target: str
+    """``module:Class`` building it (imported on demand, so listing imports nothing heavy)."""
+    doc: str
+    """One line: how it behaves."""
+    params: Mapping[str, Param] = field(default_factory=dict)
+    """Its parameters, with defaults and docs."""
+    stationary: bool = True
+    """Whether it has ``distribution(world, state)`` (the oracle can use it)."""
+
+    def factory(self) -> Callable[..., Actor]:
+        """Import and return the class."""
+        module, _, cls = self.target.partition(":")
+        return getattr(importlib.import_module(module), cls)
+
+
+_P = "hg_marl.agents.humans."
+_IDLE = Param(0.0, "probability of doing nothing (wait) at any turn")
+HUMANS: Mapping[str, HumanSpec] = {
+    spec.name: spec
+    for spec in (
+        HumanSpec(
+            "cooperative",
+            _P + "cooperative:CooperativeHuman",
+            "executes the human stream of the planner's shared plan; takes what the robot offers",
+            {"p_idle": _IDLE},
+        ),
+        HumanSpec(
+            "lazy",
+            _P + "lazy:LazyHuman",
+            "handles only objects in its own area, never takes, often idles",
+            {"p_idle": Param(0.3, "probability of doing nothing at any turn")},
+        ),
+        HumanSpec(
+            "no_handover",
+            _P + "no_handover:NoHandoverHuman",
+            "never gives nor takes; throws what it can, moves the rest within robot reach",
+            {"p_idle": _IDLE},
+        ),
+        HumanSpec(
+            "adversarial",
+            _P + "adversarial:AdversarialHuman",
+            "hoards objects, hides them out of robot reach, refuses handovers, never throws",
+            {"p_idle": _IDLE},
+        ),
+        HumanSpec(
+            "random",
+            _P + "random_human:RandomHuman",
+            "uniform over its feasible actions",
+            {"feasible_only": Param(True, "draw among feasible actions only (False: all actions)")},
+        ),
+        HumanSpec(
+            "noisy",
+            _P + "noisy:NoisyHuman",
+            "Boltzmann-rational cooperative: softmax over -(predicted time to finish) / temperature",
+            {"temperature": Param(1.0, "seconds; 0 = cooperative, large = uniform over feasible actions")},
+        ),
+        HumanSpec(
+            "switching",
+            _P + "switching:SwitchingHuman",
+            "a schedule of other humans, by simulated time or tasks solved",
+            {
+                "humans": Param(["cooperative", "lazy"], "the phases' humans (names or name:k=v)"),
+                "at": Param([600.0], "thresholds between phases, increasing"),
+                "by": Param("time", "'time' (simulated seconds) or 'tasks' (tasks solved)"),
+            },
+            stationary=False,
+        ),
+        HumanSpec(
+            "learned",
+            _P + "learned:LearnedHuman",
+            "a saved policy trained in the human seat (numpy or SB3), acting from facts and mask",
+            {
+                "path": Param(_REQUIRED, "policy directory (policy.json header + payload)"),
+                "deterministic": Param(False, "take the most probable action instead of sampling"),
+                "fallback": Param("wait", "table kind, unseen observation: 'wait' or 'random'"),
+            },
+        ),
+        HumanSpec(
+            "replay",
+            _P + "replay:ReplayHuman",
+            "plays back a recorded JSON-lines trace",
+            {
+                "path": Param(_REQUIRED, "trace file"),
+                "on_mismatch": Param("error", "live facts differ from the recording: error, warn, ignore"),
+                "on_end": Param("wait", "recorded steps run out: wait or error"),
+                "loop": Param(False, "start again at the first episode after the last"),
+            },
+            stationary=False,
+        ),
+    )
+}
+
+
+def available_humans() -> dict[str, dict[str, Any]]:
+    """Every registered human: ``{name: {"doc": ..., "stationary": ..., "params": {p: (default, doc)}}}``."""
+    return {
+        name: {"doc": s.doc, "stationary": s.stationary, "params": {k: (p.default, p.doc) for k, p in s.params.items()}}
+        for name, s in HUMANS.items()
+    }
+
+
+def _listing() -> str:
+    return "; ".join(f"{n}({', '.join(f'{k}={p.default!r}' for k, p in s.params.items())})" for n, s in HUMANS.items())
+
+
+def _coerce(name: str, key: str, value: Any, default: Any) -> Any:
+    """Check (and convert from text) a parameter value against its default's type."""
+    if isinstance(value, str) and not isinstance(default, str) and default is not None:
+        if isinstance(default, bool):
+            if value.lower() not in ("true", "false", "1", "0"):
+                raise HumanError(f"human {name!r}: parameter {key!r} expects true/false, got {value!r}")
+            return value.lower() in ("true", "1")
+        if isinstance(default, list):
+            return [x for x in value.split("|") if x]
+        try:
+            return type(default)(value)
+        except ValueError:
+            raise HumanError(
+                f"human {name!r}: parameter {key!r} expects {type(default).__name__}, got {value!r}"
+            ) from None
+    if isinstance(default, bool) and not isinstance(value, bool):
+        raise HumanError(f"human {name!r}: parameter {key!r} expects a bool, got {value!r}")
+    if isinstance(default, float) and (isinstance(value, bool) or not isinstance(value, int | float)):
+        raise HumanError(f"human {name!r}: parameter {key!r} expects a number, got {value!r}")
+    return value
+
+
+def parse_human(text: str) -> tuple[str, dict[str, str]]:
+    """Split ``"name:k=v,k2=v2"`` into the name and raw parameters (lists use ``|``)."""
+    name, _, rest = text.partition(":")
+    params: dict[str, str] = {}
+    for item in filter(None, rest.split(",")):
+        key, sep, value = item.partition("=")
+        if not sep:
+            raise HumanError(f"human spec {text!r}: expected key=value, got {item!r}")
+        params[key.strip()] = value.strip()
+    return name.strip(), params
+
+
+def make_human(name: str, **params: Any) -> Actor:
+    """Build a registered human.
+
+    Args:
+        name: a registry name, optionally with parameters: ``"lazy:p_idle=0.5"``.
+        **params: parameters (override those in ``name``).
+
+    Raises:
+        HumanError: unknown name, unknown parameter, or a value the human rejects.
+    """
+    base, inline = parse_human(name)
+    spec = HUMANS.get(base)
+    if spec is None:
+        raise HumanError(f"unknown human {base!r}; available: {_listing()}")
+    merged: dict[str, Any] = {**inline, **params}
+    kwargs = {}
+    for key, value in merged.items():
+        if key not in spec.params:
+            raise HumanError(
+                f"human {base!r} has no parameter {key!r}; its parameters: "
+                f"{', '.join(f'{k}={p.default!r} ({p.doc})' for k, p in spec.params.items()) or 'none'}"
+            )
+        kwargs[key] = _coerce(base, key, value, spec.params[key].default)
+    try:
+        return spec.factory()(**kwargs)
+    except (ValueError, TypeError) as exc:
+        raise HumanError(f"human {base!r}: {exc}") from exc
+
+
+def resolve_human(human: str | Actor) -> Actor:
+    """An Actor from a registry name (with optional parameters) or an Actor instance."""
+    if isinstance(human, str):
+        return make_human(human)
+    if not isinstance(human, Actor):
+        raise HumanError(f"expected a human name or an Actor (reset + act), got {human!r}")
+    return human

@@ -1,0 +1,209 @@
+"""The trace format: JSON lines recording one seat's play, and a recorder for any actor.
+
+A trace file holds one or more episodes. Each episode starts with a header line, then
+one line per turn of the recorded seat::
+
+    {"type": "header", "format": "hg_marl.trace", "version": 1, "episode": 0,
+     "scenario": "paper2015", "seed": 3, "seat": "human", "actor": "cooperative",
+     "fact_names": [...], "action_names": [...], "meta": {}}
+    {"type": "step", "step": 0, "clock": 0.0, "tasks_solved": 0, "facts": [0, 1, ...],
+     "mask": [1, 0, ...], "action": 17, "action_name": "wait"}
+
+``facts`` and ``mask`` are the seat's observation (what a learned policy or a person
+sees), ``clock`` the simulated seconds at the turn. The same format holds recordings of
+people playing the human (write them with :class:`TraceWriter`), replayed by
+:class:`~hg_marl.agents.humans.replay.ReplayHuman` or used for behaviour cloning.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from types import TracebackType
+from typing import IO, Any
+
+import numpy as np
+
+from hg_marl.core import Agent, World
+from hg_marl.policy import Actor, Turn
+
+FORMAT = "hg_marl.trace"
+VERSION = 1
+
+
+@dataclass
+class Episode:
+    """One recorded episode: its header and its steps, as read from the file."""
+
+    header: dict[str, Any]
+    """The header line (scenario, seed, seat, names, meta)."""
+    steps: list[dict[str, Any]] = field(default_factory=list)
+    """The step lines, in order."""
+
+    @property
+    def actions(self) -> list[int]:
+        """The recorded action indices."""
+        return [int(s["action"]) for s in self.steps]
+
+
+def read_trace(path: str | Path) -> list[Episode]:
+    """Parse a trace file into its episodes, checking the format.
+
+    Raises:
+        ValueError: not a trace file, an unknown version, or a step before any header.
+    """
+    episodes: list[Episode] = []
+    with Path(path).open() as fh:
+        for number, line in enumerate(fh, 1):
+            if not line.strip():
+                continue
+            record = json.loads(line)
+            kind = record.get("type")
+            if kind == "header":
+                if record.get("format") != FORMAT or record.get("version") != VERSION:
+                    raise ValueError(f"{path}:{number}: not a {FORMAT} v{VERSION} header: {line.strip()[:80]}")
+                episodes.append(Episode(record))
+            elif kind == "step":
+                if not episodes:
+                    raise ValueError(f"{path}:{number}: step before any header line")
+                episodes[-1].steps.append(record)
+            else:
+                raise ValueError(f"{path}:{number}: unknown line type {kind!r} (expected 'header' or 'step')")
+    if not episodes:
+        raise ValueError(f"{path}: empty trace (no header line)")
+    return episodes
+
+
+class TraceWriter:
+    """Appends episodes and steps to a trace file (also for recording people's play).
+
+    Args:
+        path: the file; truncated when the writer opens it.
+    """
+
+    def __init__(self, path: str | Path) -> None:
+        self.path = Path(path)
+        self._fh: IO[str] | None = None
+        self.episodes = 0
+        self._steps = 0
+
+    def _write(self, record: dict[str, Any]) -> None:
+        if self._fh is None:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+            self._fh = self.path.open("w")
+        self._fh.write(json.dumps(record, separators=(",", ":")) + "\n")
+        self._fh.flush()
+
+    def header(
+        self,
+        world: World,
+        agent: Agent,
+        *,
+        seed: int | None = None,
+        actor: str = "",
+        meta: dict[str, Any] | None = None,
+    ) -> None:
+        """Start an episode."""
+        self._write(
+            {
+                "type": "header",
+                "format": FORMAT,
+                "version": VERSION,
+                "episode": self.episodes,
+                "scenario": world.scenario.name,
+                "seed": seed,
+                "seat": agent.label,
+                "actor": actor,
+                "fact_names": list(world.fact_names),
+                "action_names": list(world.action_names[agent]),
+                "meta": meta or {},
+            }
+        )
+        self.episodes += 1
+        self._steps = 0
+
+    def step(self, turn: Turn, action: int) -> None:
+        """Record the seat's observation at ``turn`` and the action it took."""
+        self._write(
+            {
+                "type": "step",
+                "step": self._steps,
+                "clock": float(turn.clock),
+                "tasks_solved": int(turn.tasks_solved),
+                "facts": np.asarray(turn.observation["observation"]).astype(int).tolist(),
+                "mask": np.asarray(turn.mask).astype(int).tolist(),
+                "action": int(action),
+                "action_name": turn.world.action_names[turn.agent][action],
+            }
+        )
+        self._steps += 1
+
+    def close(self) -> None:
+        """Close the file (further writes reopen it, truncating: open a new writer instead)."""
+        if self._fh is not None:
+            self._fh.close()
+            self._fh = None
+
+    def __enter__(self) -> TraceWriter:
+        return self
+
+    def __exit__(
+        self, exc_type: type[BaseException] | None, exc: BaseException | None, tb: TracebackType | None
+    ) -> None:
+        self.close()
+
+
+class TraceRecorder:
+    """Wraps any actor and records its play: one episode per :meth:`reset`.
+
+    Args:
+        actor: the actor whose decisions are recorded (unchanged).
+        path: the trace file to write.
+        seed: the environment seed to note in each header (optional, informative).
+        meta: free-form data for the headers.
+    """
+
+    def __init__(
+        self, actor: Actor, path: str | Path, seed: int | None = None, meta: dict[str, Any] | None = None
+    ) -> None:
+        self.actor = actor
+        self.writer = TraceWriter(path)
+        self.seed = seed
+        self.meta = meta or {}
+        self.name = getattr(actor, "name", type(actor).__name__)
+
+    @property
+    def last_decision(self) -> dict[str, Any]:
+        """The wrapped actor's record of its last decision."""
+        return dict(getattr(self.actor, "last_decision", None) or {})
+
+    def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
+        """Reset the wrapped actor and start a new episode in the file."""
+        self.actor.reset(world, agent, rng)
+        self.writer.header(world, agent, seed=self.seed, actor=str(self.name), meta=self.meta)
+
+    def act(self, turn: Turn) -> int:
+        """Act as the wrapped actor and record the step."""
+        action = self.actor.act(turn)
+        self.writer.step(turn, action)
+        return action
+
+    def close(self) -> None:
+        """Flush and close the trace file."""
+        self.writer.close()
+
+
+def behaviour_table(episodes: list[Episode]) -> dict[bytes, int]:
+    """Behaviour cloning at its simplest: the most frequent recorded action per observation.
+
+    The result is the ``table=`` of :func:`~hg_marl.agents.humans.learned.save_learned_policy`
+    (keys: the fact vector as int8 bytes). Ties go to the lowest action index.
+    """
+    counts: dict[bytes, dict[int, int]] = {}
+    for episode in episodes:
+        for step in episode.steps:
+            key = np.asarray(step["facts"], dtype=np.int8).tobytes()
+            per = counts.setdefault(key, {})
+            per[int(step["action"])] = per.get(int(step["action"]), 0) + 1
+    return {key: min(per, key=lambda a: (-per[a], a)) for key, per in counts.items()}

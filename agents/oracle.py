@@ -1,0 +1,370 @@
+"""The oracle: the optimal robot policy and its reward rate against a known stationary human.
+
+Model. A semi-MDP on the symbolic :class:`~hg_marl.core.State` at the robot's turn
+(continuing mode, the paper's protocol). From state ``s`` the robot takes action ``a``;
+then the human, whose policy is folded into the dynamics through its exact
+``distribution(world, state)``, answers; the cycle lasts ``max(d_robot, d_human)``
+simulated seconds (the environment's clock; no decision time). The robot's ``wait`` on a
+clean table earns 1, and the table is re-drawn from the scenario's layout distribution
+(enumerated exactly with its probabilities by :func:`layout_distribution`), the robot's
+location included, before the human's move of that same cycle. Every action of the
+action space is modelled: infeasible ones all have the same effect (0.2 s, nothing done,
+a pending offer lapses), so one representative stands for them (``failed_actions``).
+
+Solution (why not relative value iteration). Each success is worth exactly 1 and is
+followed by a table drawn from a fixed distribution: a regeneration point. By the
+renewal-reward theorem the rate of a stationary policy is ``1 / E[T]``, with ``T`` the
+time between successes, and no policy can beat the one minimising the expected time to
+the next success from every state. So the average-reward problem is a stochastic
+shortest-path problem (the Dinkelbach fixed point ``max E[r - rho tau] = 0`` reached in
+one solve, no search on ``rho``): value iteration ``V(s) = min_a E[tau + V(s')]`` with
+``V = 0`` after the completing ``wait``. States from which the robot cannot make success
+certain (e.g. an adversarial human hid an object) are found first by the standard
+almost-sure-reachability fixpoint and get ``V = inf``; if the re-drawn table can lead
+there, the rate is 0.
+
+Size (measured on 2 CPU cores). ``paper2015``: 36 layouts, 500-2,000 states, under a
+second for the scripted humans and ~10 s for the planner-driven ``cooperative`` and
+``noisy`` humans (one cold planner call per distinct mid-cycle state). ``roboergosum``
+(6 objects, 7 placemats): 5,040 layouts; 65k states and ~25 s against ``no_handover``,
+250k states, 3.2M transitions, ~4 min and ~0.7 GB against ``lazy``; against the
+planner-driven humans the build needs one planner call per mid-cycle state and takes tens
+of minutes. The build is pure Python; ``max_states`` stops it with a clear
+:class:`OracleTooLarge` message rather than exhausting memory.
+"""
+
+from __future__ import annotations
+
+import itertools
+import logging
+import math
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from hg_marl.agents.humans.base import Distribution, HumanError
+from hg_marl.agents.humans.registry import make_human
+from hg_marl.core import Agent, Durations, Scenario, State, World
+from hg_marl.policy import Turn
+
+logger = logging.getLogger(__name__)
+
+HOUR = 3600.0
+
+
+class OracleTooLarge(RuntimeError):
+    """The reachable model exceeds ``max_states``."""
+
+
+@dataclass(frozen=True)
+class OracleResult:
+    """The optimal rate, its policy, and the size of the model."""
+
+    rate_per_hour: float
+    """Optimal long-run tasks per simulated hour (0 if no policy can ever complete)."""
+    seconds_per_task: float
+    """Optimal expected simulated seconds between successes (inf if never)."""
+    n_states: int
+    """Robot-turn states in the model."""
+    n_transitions: int
+    """(state, robot action, human reply) transitions."""
+    n_layouts: int
+    """Distinct tables the re-draw can produce."""
+    iterations: int
+    """Value-iteration sweeps."""
+    converged: bool
+    """Whether the sweeps met the tolerance before ``max_iterations``."""
+    policy: dict[State, int] = field(repr=False)
+    """Optimal robot action index at every robot-turn state of the model."""
+    values: dict[State, float] = field(repr=False)
+    """Optimal expected seconds to the next success from each state (inf: not certain)."""
+    scenario: str = ""
+    """Scenario name."""
+    human: str = ""
+    """The human's name."""
+    seconds: float = 0.0
+    """Wall time of the build and solve."""
+
+
+def layout_distribution(world: World) -> list[tuple[State, float]]:
+    """Every table ``World.initial_state`` can draw, with its exact probability.
+
+    ``initial_state`` shuffles the objects, deals them to the layout groups in order, and
+    each group draws an ordered sample of distinct spots; so each group receives a
+    uniformly random subset of the remaining objects, mapped injectively and uniformly
+    onto its spots, and the robot starts at a uniform ``robot_start`` location.
+    """
+    sc = world.scenario
+    out: dict[State, float] = {}
+
+    def deal(k: int, left: tuple[int, ...], where: dict[int, int], p: float) -> Iterator[tuple[dict[int, int], float]]:
+        if k == len(sc.layout):
+            yield where, p
+            return
+        group = sc.layout[k]
+        subsets = list(itertools.combinations(left, group.count))
+        spots = list(itertools.permutations(group.spots, group.count))
+        q = p / (len(subsets) * len(spots))
+        for subset in subsets:
+            rest = tuple(o for o in left if o not in subset)
+            for chosen in spots:
+                yield from deal(k + 1, rest, {**where, **dict(zip(subset, chosen, strict=True))}, q)
+
+    for where, p in deal(0, tuple(range(world.n_objects)), {}, 1.0):
+        for start in sc.robot_start:
+            state = State(tuple(where[o] for o in range(world.n_objects)), start)
+            out[state] = out.get(state, 0.0) + p / len(sc.robot_start)
+    return sorted(out.items())
+
+
+def _human_policy(human: Any, world: World) -> Any:
+    if isinstance(human, str):
+        human = make_human(human)
+    if not callable(getattr(human, "distribution", None)):
+        raise HumanError(
+            f"the oracle needs a stationary human with distribution(world, state); {getattr(human, 'name', human)!r} "
+            "has none (switching and replay humans are not stationary: run the oracle per phase)"
+        )
+    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    return human
+
+
+class _Model:
+    """The explored semi-MDP in flat arrays (pairs = (state, robot action), contiguous per state)."""
+
+    def __init__(self, world: World, human: Any, failed_actions: bool, max_states: int) -> None:
+        self.world, self.human = world, human
+        self.failed_actions, self.max_states = failed_actions, max_states
+        self.robot_acts, self.human_acts = world.actions(Agent.ROBOT), world.actions(Agent.HUMAN)
+        self.index: dict[State, int] = {}
+        self.states: list[State] = []
+        self.pair_start: list[int] = []
+        self.pair_action: list[int] = []
+        self.pair_terminal: list[bool] = []
+        self.t_pair: list[int] = []
+        self.t_next: list[int] = []
+        self.t_prob: list[float] = []
+        self.t_tau: list[float] = []
+        self._dist: dict[tuple[State, int], Distribution] = {}
+        self._uses_robot_action = bool(getattr(human, "uses_robot_action", False))
+
+    def _id(self, state: State) -> int:
+        k = self.index.get(state)
+        if k is None:
+            if len(self.states) >= self.max_states:
+                raise OracleTooLarge(
+                    f"the oracle's model of {self.world.scenario.name!r} exceeds max_states={self.max_states} "
+                    f"robot-turn states ({self.world.n_objects} objects); raise max_states (memory and minutes "
+                    "grow with it) or use a smaller scenario"
+                )
+            k = self.index[state] = len(self.states)
+            self.states.append(state)
+        return k
+
+    def replies(self, mid: State, d_robot: float, robot_action: int) -> list[tuple[State, float, float]]:
+        """The human's answers at ``mid``: (next robot-turn state, probability, cycle seconds).
+
+        ``robot_action`` is the robot's action of the cycle if it succeeded, else -1: what
+        the human sees in the environment (``base.robot_action_of``).
+        """
+        key = (mid, robot_action if self._uses_robot_action else -1)
+        dist = self._dist.get(key)
+        if dist is None:
+            dist = self._dist[key] = self.human.distribution(self.world, mid, key[1])
+        out = []
+        for h, p in dist:
+            if p > 0.0:
+                step = self.world.apply(mid, Agent.HUMAN, self.human_acts[h])
+                out.append((step.state, p, max(d_robot, step.duration)))
+        return out
+
+    def robot_options(self, state: State) -> list[int]:
+        feasible = self.world.feasible_indices(state, Agent.ROBOT)
+        if self.failed_actions and len(feasible) < len(self.robot_acts):
+            taken = set(feasible)
+            feasible.append(next(i for i in range(len(self.robot_acts)) if i not in taken))
+        return feasible
+
+    def build(self, roots: list[State]) -> None:
+        for root in roots:
+            self._id(root)
+        k = 0
+        while k < len(self.states):
+            state = self.states[k]
+            self.pair_start.append(len(self.pair_action))
+            for a in self.robot_options(state):
+                pair = len(self.pair_action)
+                self.pair_action.append(a)
+                out = self.world.apply(state, Agent.ROBOT, self.robot_acts[a])
+                self.pair_terminal.append(out.reward > 0)
+                if out.reward > 0:
+                    continue
+                for nxt, p, tau in self.replies(out.state, out.duration, a if out.ok else -1):
+                    self.t_pair.append(pair)
+                    self.t_next.append(self._id(nxt))
+                    self.t_prob.append(p)
+                    self.t_tau.append(tau)
+            k += 1
+
+
+def _certain_states(
+    n: int, pair_state: np.ndarray, terminal: np.ndarray, t_pair: np.ndarray, t_next: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """States from which some policy completes with probability 1, and the pairs it may use."""
+    n_pairs = len(terminal)
+    alive = np.ones(n, dtype=bool)
+    while True:
+        leaks = np.bincount(t_pair, weights=~alive[t_next], minlength=n_pairs) > 0
+        ok = terminal | ~leaks
+        reach = np.zeros(n, dtype=bool)
+        reach[pair_state[ok & terminal]] = True
+        while True:
+            hits = np.bincount(t_pair, weights=reach[t_next], minlength=n_pairs) > 0
+            grown = reach.copy()
+            grown[pair_state[ok & hits]] = True
+            if (grown == reach).all():
+                break
+            reach = grown
+        if (reach == alive).all():
+            return alive, ok
+        alive = reach
+
+
+def oracle_rate(
+    scenario: str | Scenario | World = "paper2015",
+    human: Any = "cooperative",
+    *,
+    durations: Durations | None = None,
+    failed_actions: bool = True,
+    max_states: int = 1_500_000,
+    tolerance: float = 1e-9,
+    max_iterations: int = 200_000,
+) -> OracleResult:
+    """The optimal tasks per simulated hour against ``human``, and the policy achieving it.
+
+    Args:
+        scenario: scenario name / TOML path / Scenario, or a World (then ``durations`` is ignored).
+        human: a stationary human: registry name (``"lazy:p_idle=0.5"``) or an instance
+            with ``distribution(world, state)``.
+        durations: override the scenario's durations.
+        failed_actions: also consider deliberately infeasible actions (a 0.2 s no-op);
+            True is the exact model of the environment's action space.
+        max_states: stop with :class:`OracleTooLarge` beyond this many states.
+        tolerance: value-iteration stopping threshold (seconds).
+        max_iterations: cap on sweeps (``converged`` says whether it was hit).
+
+    Raises:
+        HumanError: the human is not stationary.
+        OracleTooLarge: the model exceeds ``max_states``.
+    """
+    start = time.perf_counter()
+    world = scenario if isinstance(scenario, World) else World(scenario, durations)
+    policy_human = _human_policy(human, world)
+    layouts = layout_distribution(world)
+    model = _Model(world, policy_human, failed_actions, max_states)
+    wait = world.durations.wait
+    wait_index = world.n_actions(Agent.ROBOT) - 1
+    regen = [(nxt, q * p, tau) for table, q in layouts for nxt, p, tau in model.replies(table, wait, wait_index)]
+    model.build([s for s, _ in layouts] + [s for s, _, _ in regen])
+    n = len(model.states)
+    pair_state = np.repeat(np.arange(n), np.diff([*model.pair_start, len(model.pair_action)]))
+    terminal = np.array(model.pair_terminal, dtype=bool)
+    t_pair, t_next = np.array(model.t_pair, dtype=np.int64), np.array(model.t_next, dtype=np.int64)
+    t_prob, t_tau = np.array(model.t_prob), np.array(model.t_tau)
+    n_pairs = len(terminal)
+    cost = np.bincount(t_pair, weights=t_prob * t_tau, minlength=n_pairs)
+    alive, ok = _certain_states(n, pair_state, terminal, t_pair, t_next)
+    starts = np.array(model.pair_start, dtype=np.int64)
+    values = np.zeros(n)
+    iterations, converged = 0, False
+    if alive.any():
+        for iterations in range(1, max_iterations + 1):  # noqa: B007
+            q = cost + np.bincount(
+                t_pair, weights=t_prob * np.where(alive[t_next], values[t_next], 0.0), minlength=n_pairs
+            )
+            q = np.where(ok, np.where(terminal, 0.0, q), np.inf)
+            new = np.where(alive, np.minimum.reduceat(q, starts), 0.0)
+            delta = float(np.max(np.abs(new - values)))
+            values = new
+            if delta < tolerance:
+                converged = True
+                break
+    values = np.where(alive, values, np.inf)
+    q = cost + np.bincount(t_pair, weights=t_prob * np.where(alive[t_next], values[t_next], 0.0), minlength=n_pairs)
+    q = np.where(ok, np.where(terminal, 0.0, q), np.inf)
+    best = [
+        int(model.pair_action[starts[s] + int(np.argmin(q[starts[s] : starts[s + 1] if s + 1 < n else n_pairs]))])
+        for s in range(n)
+    ]
+    index = model.index
+    expected = sum(p * (tau + values[index[s]]) for s, p, tau in regen)
+    rate = 0.0 if math.isinf(expected) else HOUR / expected
+    result = OracleResult(
+        rate_per_hour=rate,
+        seconds_per_task=expected,
+        n_states=n,
+        n_transitions=len(t_pair),
+        n_layouts=len(layouts),
+        iterations=iterations,
+        converged=converged,
+        policy=dict(zip(model.states, best, strict=True)),
+        values=dict(zip(model.states, values.tolist(), strict=True)),
+        scenario=world.scenario.name,
+        human=str(getattr(policy_human, "name", type(policy_human).__name__)),
+        seconds=time.perf_counter() - start,
+    )
+    logger.info(
+        "oracle %s vs %s: %.2f tasks/h, %d states, %d iterations, %.1f s",
+        result.scenario,
+        result.human,
+        rate,
+        n,
+        iterations,
+        result.seconds,
+    )
+    return result
+
+
+class OracleRobot:
+    """A robot that plays the oracle's optimal policy (greedy in its values).
+
+    Args:
+        result: a computed :class:`OracleResult`; or None to compute one at the first reset
+            from ``human`` and the world it is reset in.
+        human: the human the policy is optimal against (when ``result`` is None).
+    """
+
+    name = "oracle"
+
+    def __init__(self, result: OracleResult | None = None, human: Any = "cooperative") -> None:
+        self.result = result
+        self.human = human
+        self.last_decision: dict[str, object] = {}
+        self._missing = 0
+
+    def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
+        """Compute the policy if needed (``rng`` unused: the policy is deterministic)."""
+        if agent is not Agent.ROBOT:
+            raise ValueError("OracleRobot plays the robot seat only")
+        if self.result is None or self.result.scenario != world.scenario.name:
+            self.result = oracle_rate(world, self.human)
+        self._wait = world.n_actions(Agent.ROBOT) - 1
+
+    def act(self, turn: Turn) -> int:
+        """The optimal action at the turn's state (``wait`` for a state outside the model)."""
+        assert self.result is not None
+        action = self.result.policy.get(turn.state)
+        if action is None:
+            self._missing += 1
+            if self._missing == 1:
+                logger.warning("oracle policy has no entry for state %s; waiting", turn.state)
+            action = self._wait
+        self.last_decision = {
+            "expert": "oracle",
+            "action": action,
+            "expected_seconds": self.result.values.get(turn.state, math.inf),
+        }
+        return action
