@@ -47,7 +47,12 @@ class CooperativeHuman(StationaryHuman):
         if self._planner is None or self._planner_world is not world:
             from hg_marl.agents.planner import Planner, PlannerConfig
 
-            self._planner = Planner(world, config=self.planner_config or PlannerConfig(), human_model=None)
+            # cache_suffixes=False: a cached plan suffix is *an* optimal plan, a cold search may
+            # break ties differently; caching exact repeats only keeps every answer equal to a
+            # cold search's, a function of the state alone, so the oracle's model and the live
+            # human agree exactly.
+            config = self.planner_config or PlannerConfig(cache_suffixes=False)
+            self._planner = Planner(world, config=config, human_model=None)
             self._planner_world = world
             self._memo = {}
             # The planner only uses the robot action's duration and whether it is a wait:
@@ -73,10 +78,6 @@ class CooperativeHuman(StationaryHuman):
             if state.offer_by == Agent.ROBOT and world.holding(state, Agent.HUMAN) < 0:
                 index = index_of(world, Kind.TAKE, state.offer_obj)
             else:
-                # A cached plan suffix is *an* optimal plan, a cold search may break ties
-                # differently: searching cold makes the answer a function of the state
-                # alone, so the oracle's model and the live human agree exactly.
-                planner.clear_cache()
                 result = planner.plan(
                     state, to_move=Agent.HUMAN, robot_action=robot_action if robot_action >= 0 else None
                 )

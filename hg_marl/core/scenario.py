@@ -260,6 +260,7 @@ def parse_scenario(data: Mapping[str, Any], source: str = "<dict>") -> Scenario:
             raise r.fail(f"objects[{i}].colour", f"no bin accepts colour {colour!r}")
     spot_names = [s.name for s in spots]
     layout = []
+    used: set[int] = set()
     for i, g in enumerate(r.table_list(data, "layout")):
         count = r.get(g, "count", int, f"layout[{i}].count")
         pool = r.names(g, "spots", f"layout[{i}].spots", spot_names)
@@ -267,6 +268,13 @@ def parse_scenario(data: Mapping[str, Any], source: str = "<dict>") -> Scenario:
             raise r.fail(
                 f"layout[{i}].count", f"{count} objects need {count} distinct spots, the group lists {len(set(pool))}"
             )
+        shared = used & set(pool)
+        if shared:
+            names = ", ".join(spot_names[k] for k in sorted(shared))
+            raise r.fail(
+                f"layout[{i}].spots", f"{names} already listed by an earlier group (groups must not share spots)"
+            )
+        used |= set(pool)
         layout.append(LayoutGroup(count, pool))
     if sum(g.count for g in layout) != len(objects):
         raise r.fail(

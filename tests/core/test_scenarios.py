@@ -59,6 +59,10 @@ def test_unknown_scenario_lists_choices() -> None:
         (lambda t: t.replace('name = "paper2015"\n', ""), "name"),
         (lambda t: t + "\n[durations]\npick = -1\n", "durations.pick"),
         (lambda t: t.replace("count = 2", "count = 4"), "layout[0].count"),
+        (
+            lambda t: t.replace('spots = ["human_mat_1", "human_mat_2"]', 'spots = ["human_mat_1", "mat_left"]'),
+            "layout[1].spots",
+        ),
     ],
     ids=[
         "unknown location",
@@ -69,6 +73,7 @@ def test_unknown_scenario_lists_choices() -> None:
         "missing name",
         "bad duration",
         "too few spots",
+        "groups share a spot",
     ],
 )
 def test_malformed_file_names_the_field(tmp_path: Path, edit, field: str) -> None:
