@@ -9,7 +9,8 @@ Quick use::
 
 Modules: ``costs`` (cost terms, weights, config), ``models`` (human models),
 ``domain`` (HTN methods), ``space`` (candidates, symmetry, admissible bound),
-``search`` (A*), ``expectimax`` (stochastic humans), ``plan`` (plans and results),
+``halfstep`` (A* over half-steps, the one in use), ``search`` (the joint-cycle A* it
+replaced, kept as a cross-check), ``expectimax`` (stochastic humans), ``plan`` (plans and results),
 ``planner`` (the facade and its cache), ``execution`` (following and monitoring a plan),
 ``gantt`` (text and PNG charts).
 """
