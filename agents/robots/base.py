@@ -84,7 +84,9 @@ class LearningRobot(Robot):
     """A robot with a habitual expert that learns online from every executed transition.
 
     Args:
-        q_config: the Q-learner's hyper-parameters (used when ``learner`` is None).
+        q_config: the Q-learner's hyper-parameters (used when ``learner`` is None): a
+            :class:`QLearnerConfig` or a plain dict of its fields, e.g.
+            ``{"features": "tabular"}`` (so sweeps and the CLI can pass it as JSON).
         learner: an existing Q-learner to use and keep across resets (to continue
             training or evaluate a saved habit). When None, each :meth:`reset` starts a
             fresh, zero-weight learner, as each of the paper's runs does.
@@ -97,12 +99,17 @@ class LearningRobot(Robot):
 
     def __init__(
         self,
-        q_config: QLearnerConfig | None = None,
+        q_config: QLearnerConfig | dict[str, Any] | None = None,
         learner: QLearner | None = None,
         learn: bool = True,
         cost: CostModel | None = None,
     ) -> None:
         super().__init__(cost)
+        if isinstance(q_config, dict):
+            try:
+                q_config = QLearnerConfig(**q_config)
+            except TypeError as exc:
+                raise ValueError(f"bad q_config {q_config!r}: {exc}") from None
         self.q_config = q_config or QLearnerConfig()
         self._given_learner = learner
         self.learner = learner

@@ -41,7 +41,7 @@ class HybridRobot(LearningRobot):
         criterion_params: dict[str, Any] | None = None,
         planner_config: Any = None,
         human_model: Any = None,
-        q_config: QLearnerConfig | None = None,
+        q_config: QLearnerConfig | dict[str, Any] | None = None,
         learner: QLearner | None = None,
         learn: bool = True,
         cost: CostModel | None = None,

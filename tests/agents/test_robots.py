@@ -218,3 +218,11 @@ def test_registry_lists_and_rejects() -> None:
         make_robot("hybrid", criterion="nope")
     with pytest.raises(ValueError, match=r"unknown parameter\(s\) kappa"):
         make_robot("hybrid", criterion="vpi", criterion_params={"kappa": 1.0})
+
+
+def test_q_config_as_plain_dict() -> None:
+    """Sweeps and the CLI pass the habit's settings as JSON: a dict of QLearnerConfig fields."""
+    robot = make_robot("hybrid", criterion="entropy", q_config={"features": "tabular", "beta": 20.0})
+    assert robot.q_config.features == "tabular" and robot.q_config.beta == 20.0
+    with pytest.raises(ValueError, match="bad q_config"):
+        make_robot("habit", q_config={"temperature": 3})
