@@ -205,6 +205,9 @@ class World:
             state = state._replace(offer_by=-1, offer_obj=-1)
         if not self.feasible(state, agent, action):
             events.append(Event("failed", name, self.action_name(agent, self.index(agent, action))))
+            if state.offer_by == agent.other:  # a failed take is a reply too: the offer lapses
+                events.append(Event("let_lapse", name, objects[state.offer_obj]))
+                state = state._replace(offer_by=-1, offer_obj=-1)
             return Outcome(state, False, self.durations.failed, 0.0, tuple(events))
         kind, o = action.kind, action.obj
         where = list(state.where)

@@ -298,7 +298,11 @@ def test_preconditions_and_effects(paper: World, state, agent, action, ok, where
         assert (out.state.offer_by, out.state.offer_obj) == offer
         assert out.duration == paper.durations.of(action.kind)
     else:
-        assert out.state == state, "a failed action has no effect"
+        assert out.state.where == state.where and out.state.robot_at == state.robot_at, "no effect"
+        if state.offer_by == agent.other:
+            assert out.state.offer_by == -1, "any reply but a successful take lets the offer lapse"
+        else:
+            assert out.state == state
         assert out.duration == paper.durations.failed
         assert any(e.kind == "failed" for e in out.events)
 
@@ -371,3 +375,12 @@ def test_generated_scenario_is_seeded() -> None:
     assert a.scenario == b.scenario
     assert a.scenario != World("generated:objects=5,spots=8,seed=4").scenario
     assert a.n_objects == 5 and a.n_spots == 8
+
+
+def test_failed_take_lets_the_offer_lapse(paper: World) -> None:
+    # the robot holds tape1 and cannot take tape3: its failed take is a reply, so the offer lapses
+    state = s((RHAND, RIGHT, HHAND), HUMAN_SIDE, H, 2)
+    out = paper.step(state, R, paper.index(R, Action(Kind.TAKE, 2)))
+    assert not out.ok
+    assert (out.state.offer_by, out.state.offer_obj) == (-1, -1) and out.state.where == state.where
+    assert [e.kind for e in out.events] == ["failed", "let_lapse"]
