@@ -10,6 +10,7 @@ the human does in the environment can never drift apart.
 
 from __future__ import annotations
 
+from abc import ABC, abstractmethod
 from collections.abc import Sequence
 
 import numpy as np
@@ -25,7 +26,7 @@ class HumanError(ValueError):
     """An unknown human name, a bad parameter, or a human used where it cannot be."""
 
 
-class StationaryHuman:
+class StationaryHuman(ABC):
     """Base class of the humans whose policy is a function of the state.
 
     Subclasses implement :meth:`distribution`; :meth:`act` samples it with the generator
@@ -50,6 +51,7 @@ class StationaryHuman:
         self.agent = agent
         self.rng = rng
 
+    @abstractmethod
     def distribution(self, world: World, state: State, robot_action: int = -1) -> Distribution:
         """The probability of each action this human may take in ``state`` (sums to 1).
 
@@ -57,7 +59,6 @@ class StationaryHuman:
         failed); only humans with ``uses_robot_action`` look at it (a planning human
         needs its duration: the cycle lasts the longer of the two actions).
         """
-        raise NotImplementedError
 
     def act(self, turn: Turn) -> int:
         """Sample :meth:`distribution` at the turn's state."""

@@ -9,6 +9,7 @@ checkpoint loads as an ``sb3`` robot) and, for off-policy algorithms, the replay
 from __future__ import annotations
 
 import logging
+from abc import abstractmethod
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -37,8 +38,9 @@ class _Every(BaseCallback):
             self._fire()
         return True
 
+    @abstractmethod
     def _fire(self) -> None:
-        raise NotImplementedError
+        """What to do every ``freq`` steps (each subclass says)."""
 
 
 class ProgressBar(BaseCallback):
