@@ -36,7 +36,7 @@ class Turn:
     tasks_solved: int = 0
     """Tasks completed so far in this run."""
     events: tuple[Event, ...] = field(default=())
-    """What happened since this agent's previous turn (both agents' actions)."""
+    """What happened since this agent's previous turn: its own last action, then the partner's."""
     last_actions: tuple[int, int] = (-1, -1)
     """Last action index taken by the robot and by the human (-1 before any)."""
 

@@ -169,7 +169,7 @@ class raw_env(AECEnv):
         self._charged = 0.0
         self._done_this_cycle = False
         self._last_actions = [-1, -1]
-        self._recent: list[Event] = []
+        self._last_events: list[tuple[Event, ...]] = [(), ()]
         self.infos = {a: self._info(Agent(i), "", False, ()) for i, a in enumerate(self.agents)}
         self.agent_selection = self.agents[0]
 
@@ -222,7 +222,7 @@ class raw_env(AECEnv):
                 self._done_this_cycle = True
         else:
             self.rewards = dict.fromkeys(self.agents, 0.0)
-        self._recent.extend(events)
+        self._last_events[agent] = events
         self.infos[name] = self._info(agent, self.world.action_names[agent][action], not out.ok, events)
         cumulative = self._cumulative_rewards
         cumulative[name] = 0.0
@@ -285,14 +285,17 @@ class raw_env(AECEnv):
     def turn(self, agent: str | None = None) -> Turn:
         """A :class:`Turn` for ``agent`` (default: the selected one), for scripted actors.
 
-        ``events`` holds what happened since the last call (both agents' actions).
+        ``events`` holds what happened since this agent's previous turn: its own last
+        action's events, then its partner's. Only the last action of each agent is kept,
+        so plain AEC use, which never calls this, stores nothing that grows.
         """
         name = agent or self.agent_selection
-        events, self._recent = tuple(self._recent), []
+        me = self._agent_id(name)
+        events = self._last_events[me] + self._last_events[me.other]
         return Turn(
             world=self.world,
             state=self.world_state,
-            agent=self._agent_id(name),
+            agent=me,
             observation=self.observe(name),
             clock=self.clock,
             reward=self._cumulative_rewards[name],
