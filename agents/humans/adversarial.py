@@ -20,6 +20,7 @@ from __future__ import annotations
 from hg_marl.agents.humans.base import (
     Distribution,
     StationaryHuman,
+    check_p_idle,
     deterministic,
     first_feasible,
     human_only_spots,
@@ -41,9 +42,7 @@ class AdversarialHuman(StationaryHuman):
 
     def __init__(self, p_idle: float = 0.0) -> None:
         super().__init__()
-        if not 0.0 <= p_idle <= 1.0:
-            raise ValueError(f"p_idle must be a probability in [0, 1], got {p_idle}")
-        self.p_idle = float(p_idle)
+        self.p_idle = check_p_idle(p_idle)
 
     def distribution(self, world: World, state: State, robot_action: int = -1) -> Distribution:
         """The tactic that applies first (see the module docstring)."""

@@ -89,6 +89,13 @@ def deterministic(index: int) -> Distribution:
     return [(index, 1.0)]
 
 
+def check_p_idle(p_idle: float) -> float:
+    """Validate the idle probability every scripted human takes."""
+    if not 0.0 <= p_idle <= 1.0:
+        raise ValueError(f"p_idle must be a probability in [0, 1], got {p_idle}")
+    return float(p_idle)
+
+
 def with_idle(dist: Distribution, world: World, p_idle: float) -> Distribution:
     """Mix ``dist`` with ``wait`` taken with probability ``p_idle``."""
     if p_idle <= 0.0:

@@ -14,7 +14,15 @@ from __future__ import annotations
 
 from typing import Any
 
-from hg_marl.agents.humans.base import Distribution, StationaryHuman, deterministic, index_of, wait_index, with_idle
+from hg_marl.agents.humans.base import (
+    Distribution,
+    StationaryHuman,
+    check_p_idle,
+    deterministic,
+    index_of,
+    wait_index,
+    with_idle,
+)
 from hg_marl.core import Agent, Kind, State, World
 
 _MEMO_LIMIT = 500_000
@@ -33,9 +41,7 @@ class CooperativeHuman(StationaryHuman):
 
     def __init__(self, p_idle: float = 0.0, planner_config: Any = None) -> None:
         super().__init__()
-        if not 0.0 <= p_idle <= 1.0:
-            raise ValueError(f"p_idle must be a probability in [0, 1], got {p_idle}")
-        self.p_idle = float(p_idle)
+        self.p_idle = check_p_idle(p_idle)
         self.planner_config = planner_config
         self._planner: Any = None
         self._planner_world: World | None = None

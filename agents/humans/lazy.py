@@ -7,7 +7,15 @@ fold into models of hundreds of thousands of states: see :func:`base.tidy_action
 
 from __future__ import annotations
 
-from hg_marl.agents.humans.base import Distribution, StationaryHuman, deterministic, tidy_action, wait_index, with_idle
+from hg_marl.agents.humans.base import (
+    Distribution,
+    StationaryHuman,
+    check_p_idle,
+    deterministic,
+    tidy_action,
+    wait_index,
+    with_idle,
+)
 from hg_marl.core import State, World
 
 
@@ -22,9 +30,7 @@ class LazyHuman(StationaryHuman):
 
     def __init__(self, p_idle: float = 0.3) -> None:
         super().__init__()
-        if not 0.0 <= p_idle <= 1.0:
-            raise ValueError(f"p_idle must be a probability in [0, 1], got {p_idle}")
-        self.p_idle = float(p_idle)
+        self.p_idle = check_p_idle(p_idle)
 
     def distribution(self, world: World, state: State, robot_action: int = -1) -> Distribution:
         """``wait`` with ``p_idle``, else the tidying rule (``wait`` if there is nothing to do)."""

@@ -7,7 +7,15 @@ with fixed rules (see :func:`base.tidy_action`), cheap enough for the oracle.
 
 from __future__ import annotations
 
-from hg_marl.agents.humans.base import Distribution, StationaryHuman, deterministic, tidy_action, wait_index, with_idle
+from hg_marl.agents.humans.base import (
+    Distribution,
+    StationaryHuman,
+    check_p_idle,
+    deterministic,
+    tidy_action,
+    wait_index,
+    with_idle,
+)
 from hg_marl.core import State, World
 
 
@@ -22,9 +30,7 @@ class NoHandoverHuman(StationaryHuman):
 
     def __init__(self, p_idle: float = 0.0) -> None:
         super().__init__()
-        if not 0.0 <= p_idle <= 1.0:
-            raise ValueError(f"p_idle must be a probability in [0, 1], got {p_idle}")
-        self.p_idle = float(p_idle)
+        self.p_idle = check_p_idle(p_idle)
 
     def distribution(self, world: World, state: State, robot_action: int = -1) -> Distribution:
         """The tidying rule without handovers (``wait`` if there is nothing to do)."""
