@@ -53,7 +53,7 @@ def register(app: typer.Typer) -> None:
             robot_kwargs.setdefault("path", str(model))
         the_robot = checked(lambda: make_robot(robot, **robot_kwargs))
         the_human = checked(lambda: make_human(human, **parse_params(human_param, "human")))
-        config = checked(lambda: RunConfig(scenario=scenario, duration=duration, seed=seed))
+        config = RunConfig(scenario=scenario, duration=duration, seed=seed)
         with tqdm(total=int(duration), unit="sim s", desc=f"{robot} + {human}", leave=False) as bar:
 
             def progress(clock: float) -> None:
