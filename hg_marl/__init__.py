@@ -10,13 +10,14 @@ imports neither torch nor any rendering library.
 
 from __future__ import annotations
 
-from hg_marl.core import Scenario, ScenarioError, World, available_scenarios, load_scenario
+from hg_marl.core import HgMarlError, Scenario, ScenarioError, World, available_scenarios, load_scenario
 from hg_marl.envs import AgentMismatchError, InvalidActionError, env, parallel_env, raw_env
 from hg_marl.registration import register_envs
 
 __version__ = "0.1.0"
 __all__ = [
     "AgentMismatchError",
+    "HgMarlError",
     "InvalidActionError",
     "Scenario",
     "ScenarioError",

@@ -36,7 +36,14 @@ for _name in COMMANDS:
 def main() -> None:
     """Entry point of the ``hg-marl`` script."""
     logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
-    app()
+    from hg_marl.core.errors import HgMarlError
+
+    try:
+        app()
+    except HgMarlError as exc:
+        # Bad input: one line, exit 2. Anything else is a bug and keeps its traceback.
+        typer.secho(f"error: {exc}", fg=typer.colors.RED, err=True)
+        raise SystemExit(2) from None
 
 
 if __name__ == "__main__":

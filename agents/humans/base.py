@@ -16,14 +16,11 @@ from collections.abc import Sequence
 import numpy as np
 
 from hg_marl.core import WAIT, Action, Agent, Kind, State, World
+from hg_marl.core.errors import HumanError as HumanError  # re-exported: humans raise it
 from hg_marl.policy import Turn
 
 Distribution = list[tuple[int, float]]
 """A human's action distribution at one state: ``[(action_index, probability), ...]``."""
-
-
-class HumanError(ValueError):
-    """An unknown human name, a bad parameter, or a human used where it cannot be."""
 
 
 class StationaryHuman(ABC):

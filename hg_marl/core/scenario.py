@@ -25,10 +25,7 @@ from typing import Any
 import numpy as np
 
 from hg_marl.core.durations import Durations
-
-
-class ScenarioError(ValueError):
-    """A scenario could not be found or is malformed; the message names the field."""
+from hg_marl.core.errors import ScenarioError
 
 
 @dataclass(frozen=True)
