@@ -65,7 +65,7 @@ def _split_top_level(text: str) -> list[str]:
     return parts
 
 
-def parse_spec(text: str, what: str = "spec") -> Spec:
+def parse_spec(text: str | Spec, what: str = "spec") -> Spec:
     """Split ``"name:k=v,k2=v2"`` into a :class:`Spec` (values stay text until :func:`bind`).
 
     Args:
@@ -75,6 +75,8 @@ def parse_spec(text: str, what: str = "spec") -> Spec:
     Raises:
         SpecError: an empty name, a parameter without ``=``, or a repeated key.
     """
+    if isinstance(text, Spec):
+        return text
     if not isinstance(text, str):
         raise SpecError(f"{what}: expected a text like 'name:key=value', got {text!r}")
     name, _, rest = text.partition(":")
@@ -141,6 +143,8 @@ def convert(value: Any, default: Any, what: str, *, from_text: bool) -> Any:
     text = value if from_text else None
     if from_text:
         value = _literal(value)
+        if isinstance(value, str) and value.lstrip()[:1] in ("{", "["):
+            raise SpecError(f"{what}: not valid JSON: {text}")
     if isinstance(default, bool):
         if from_text and isinstance(value, str) and value.lower() in ("true", "false"):
             value = value.lower() == "true"
@@ -194,6 +198,18 @@ def _check_finite_tree(value: Any, what: str) -> None:
             _check_finite_tree(v, what)
 
 
+def signature_defaults(factory: Any) -> dict[str, Any]:
+    """A class's or function's keyword parameters and defaults (:data:`REQUIRED` when none)."""
+    import inspect
+
+    out: dict[str, Any] = {}
+    for name, param in inspect.signature(factory).parameters.items():
+        if param.kind in (param.VAR_POSITIONAL, param.VAR_KEYWORD) or name == "self":
+            continue
+        out[name] = REQUIRED if param.default is param.empty else param.default
+    return out
+
+
 def bind(
     spec: Spec,
     defaults: Mapping[str, Any],
@@ -224,6 +240,9 @@ def bind(
         if key not in defaults:
             accepted = ", ".join(f"{k}={v!r}" for k, v in defaults.items()) or "none"
             raise error(f"{what} has no parameter {key!r}; its parameters: {accepted}")
+        if not from_text and (value is None or not isinstance(value, str | int | float | list | tuple | dict)):
+            out[key] = value  # a Python object (a learner, a cost model): the constructor checks it
+            continue
         try:
             out[key] = convert(value, defaults[key], f"{what}: parameter {key!r}", from_text=from_text)
         except SpecError as exc:

@@ -45,6 +45,7 @@ Version history: v0 - initial release.
 from __future__ import annotations
 
 import operator
+from collections.abc import Mapping
 from typing import Any, ClassVar
 
 import numpy as np
@@ -53,6 +54,7 @@ from pettingzoo import AECEnv
 from pettingzoo.utils import wrappers
 
 from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Kind, Scenario, State, World
+from hg_marl.core.errors import ConfigError, check_bool, check_finite, check_int
 from hg_marl.envs.render import render_ansi, render_rgb
 from hg_marl.policy import Turn
 
@@ -98,10 +100,15 @@ class raw_env(AECEnv):
             raise ValueError(
                 f"render_mode {render_mode!r} is not supported; use one of {self.metadata['render_modes']} or None"
             )
-        if max_cycles is not None and max_cycles < 1:
-            raise ValueError(f"max_cycles must be a positive integer or None, got {max_cycles}")
-        if time_budget is not None and time_budget <= 0:
-            raise ValueError(f"time_budget must be positive seconds or None, got {time_budget}")
+        check_bool(continuing, "continuing")
+        if max_cycles is not None:
+            max_cycles = check_int(max_cycles, "max_cycles", minimum=1)
+        if time_budget is not None:
+            time_budget = check_finite(time_budget, "time_budget (simulated seconds)", positive=True)
+        if isinstance(durations, Mapping):
+            durations = Durations.from_mapping(durations, "durations")
+        elif durations is not None and not isinstance(durations, Durations):
+            raise ConfigError(f"durations: expected a Durations or a mapping like {{'pick': 2.0}}, got {durations!r}")
         self.world = World(scenario, durations)
         self.continuing = continuing
         self.max_cycles = max_cycles
@@ -175,9 +182,7 @@ class raw_env(AECEnv):
 
     def charge_time(self, seconds: float) -> None:
         """Add decision time (e.g. planning) to the current cycle's duration."""
-        if seconds < 0:
-            raise ValueError(f"charged time must be non-negative, got {seconds}")
-        self._charged += seconds
+        self._charged += check_finite(seconds, "charge_time(seconds)", minimum=0.0)
 
     def _check_action(self, agent: Agent, action: Any) -> int:
         n = self._n_actions[agent]
@@ -277,6 +282,8 @@ class raw_env(AECEnv):
     def observe(self, agent: str) -> dict[str, np.ndarray]:
         """Facts and this agent's action mask (shared read-only arrays)."""
         state = self.world_state
+        if agent not in AGENT_NAMES:
+            raise ConfigError(f"observe: unknown agent {agent!r}; the agents are {', '.join(AGENT_NAMES)}")
         return {
             "observation": self.world.facts(state),
             "action_mask": self.world.mask(state, Agent.ROBOT if agent == "robot" else Agent.HUMAN),
