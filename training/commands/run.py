@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from hg_marl.core.errors import ConfigError
+from hg_marl.core.scenario import load_scenario
 from hg_marl.training.commands.common import check_duration, check_out_file, checked, default, spec_with
 from hg_marl.training.runner import RunConfig
 
@@ -65,6 +66,7 @@ def register(app: typer.Typer) -> None:
         the_robot = checked(lambda: make_robot(robot_spec, **robot_kwargs))
         the_human = checked(lambda: make_human(spec_with(human, human_param, "--human", "--human-param")))
         config = RunConfig(scenario=scenario, duration=duration, seed=seed)
+        load_scenario(scenario)  # a bad scenario fails before the progress bar starts
         with tqdm(total=int(duration), unit="sim s", desc=f"{robot} + {human}", leave=False) as bar:
 
             def progress(clock: float) -> None:
