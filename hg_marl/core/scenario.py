@@ -15,6 +15,7 @@ random geometry, parameters after a colon: ``"generated:objects=6,spots=9,seed=3
 
 from __future__ import annotations
 
+import math
 import os
 import re
 import tomllib
@@ -461,6 +462,19 @@ def parse_scenario(
             _WARNED.add(message)
             warnings.warn(message, ScenarioWarning, stacklevel=2)
     return scenario
+
+
+def layout_count(scenario: Scenario) -> int:
+    """How many (object subset, ordered spots) deals the initial layouts enumerate, times start locations.
+
+    The exact model (the oracle) enumerates them all; computed without allocating, so a
+    caller can refuse a scenario whose enumeration would not fit.
+    """
+    count, left = len(scenario.robot_start), scenario.n_objects
+    for group in scenario.layout:
+        count *= math.comb(left, group.count) * math.perm(len(group.spots), group.count)
+        left -= group.count
+    return count
 
 
 class ScenarioWarning(UserWarning):

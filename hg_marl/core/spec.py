@@ -27,6 +27,16 @@ REQUIRED: Any = None
 """Default marking a parameter with no default (e.g. a file path)."""
 
 
+class _PythonOnly:
+    """Marks a parameter that takes a Python object (a learner, a cost model): not settable in a spec."""
+
+    def __repr__(self) -> str:
+        return "<python object>"
+
+
+PYTHON_ONLY: Any = _PythonOnly()
+
+
 @dataclass(frozen=True)
 class Spec:
     """A parsed spec: the registry name and the raw text of each parameter."""
@@ -141,6 +151,10 @@ def convert(value: Any, default: Any, what: str, *, from_text: bool) -> Any:
         SpecError: a value of the wrong type, or a NaN/infinite number.
     """
     text = value if from_text else None
+    if isinstance(default, _PythonOnly):
+        if from_text:
+            raise SpecError(f"{what}: takes a Python object, not a value in a spec")
+        return value
     if from_text:
         value = _literal(value)
         if isinstance(value, str) and value.lstrip()[:1] in ("{", "["):
@@ -206,8 +220,30 @@ def signature_defaults(factory: Any) -> dict[str, Any]:
     for name, param in inspect.signature(factory).parameters.items():
         if param.kind in (param.VAR_POSITIONAL, param.VAR_KEYWORD) or name == "self":
             continue
-        out[name] = REQUIRED if param.default is param.empty else param.default
+        default = REQUIRED if param.default is param.empty else param.default
+        if default is None:
+            default = _placeholder(str(param.annotation))
+        out[name] = default
     return out
+
+
+def _placeholder(annotation: str) -> Any:
+    """A default of the right type for a parameter whose default is None, read from its annotation.
+
+    ``dict[...] | None`` takes a JSON object, ``str | Path | None`` a text, numbers a
+    number; anything else (a class of the project) only a Python object.
+    """
+    kinds = {part.strip().split("[")[0] for part in annotation.replace("Optional[", "").split("|")}
+    kinds.discard("None")
+    if "dict" in kinds:
+        return {}
+    if kinds & {"str", "Path"}:
+        return ""
+    if "float" in kinds:
+        return 0.0
+    if "int" in kinds:
+        return 0
+    return PYTHON_ONLY
 
 
 def bind(

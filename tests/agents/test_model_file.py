@@ -9,7 +9,6 @@ loader is used, so the other tests would catch a loader that unpickles.
 from __future__ import annotations
 
 import base64
-import io
 import json
 import pickle
 import re
@@ -33,6 +32,7 @@ from hg_marl.agents.model_file import (
 )
 from hg_marl.core import Agent, World
 from hg_marl.core.errors import HgMarlError, ModelFileError
+from tests.cli_helpers import error_lines, run_main
 
 
 class Payload:
@@ -110,31 +110,11 @@ def test_sb3_robot_refuses_sb3_zip(tmp_path: Path, marker: Path) -> None:
 
 
 def test_cli_run_refuses_sb3_zip_in_one_line(tmp_path: Path, marker: Path) -> None:
-    from hg_marl.training.cli import main
-
     zip_path = malicious_sb3_zip(tmp_path / "model.zip", marker)
-    lines = _main_lines(main, ["run", "--robot", "sb3", "--model", str(zip_path), "--duration", "5"])
-    assert lines[0] == 2 and len(lines[1]) == 1 and str(zip_path) in lines[1][0] and "convert" in lines[1][0]
+    code, _, err = run_main(["run", "--robot", "sb3", "--model", str(zip_path), "--duration", "5"])
+    lines = error_lines(err)
+    assert code == 2 and len(lines) == 1 and str(zip_path) in lines[0] and "convert" in lines[0]
     assert not marker.exists()
-
-
-def _main_lines(main: Any, args: list[str]) -> tuple[int, list[str]]:
-    """Run the CLI's ``main`` (which catches HgMarlError); return the exit code and stderr lines."""
-    import contextlib
-    import sys
-
-    err = io.StringIO()
-    old = sys.argv
-    sys.argv = ["hg-marl", *args]
-    code = 0
-    try:
-        with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
-            main()
-    except SystemExit as exc:
-        code = int(exc.code or 0)
-    finally:
-        sys.argv = old
-    return code, [line for line in err.getvalue().splitlines() if line.strip()]
 
 
 def test_learned_human_refuses_old_sb3_kind(tmp_path: Path, marker: Path) -> None:

@@ -231,6 +231,10 @@ def test_specs_read_alike_and_values_are_typed() -> None:
         make_robot("hybrid:q_config={bad json}")
     with pytest.raises(CriterionError, match="parameter 'tau': expected a finite number"):
         make_robot("hybrid", criterion="vpi:tau=nan")
+    with pytest.raises(RobotError, match="parameter 'cost': takes a Python object"):
+        make_robot("planner:cost=3")  # found by the fuzz suite: it failed later inside the robot
+    with pytest.raises(RobotError, match="parameter 'q_config': expected a JSON object"):
+        make_robot("habit:q_config=[1]")  # found by the fuzz suite
 
 
 def test_q_config_as_plain_dict() -> None:

@@ -115,3 +115,13 @@ def test_unreachable_bin_warns_or_refuses(tmp_path: Path) -> None:
 def test_builtins_are_solvable() -> None:
     for name in ("paper2015", "roboergosum", "generated:objects=6,seed=3"):
         assert solvability_problems(load_scenario(name)) == []
+
+
+def test_layout_count_is_the_oracles_enumeration() -> None:
+    from hg_marl.core.scenario import layout_count
+
+    # paper2015 by hand: 3 objects; group 1 takes 2 of them (C(3,2)=3) onto 2 of its 3 spots in
+    # order (P(3,2)=6); group 2 takes the last one onto 1 of its 2 spots (2); 1 start location.
+    assert layout_count(load_scenario("paper2015")) == 3 * 6 * 2
+    # 12 objects on 14 spots: 14!/2! ordered deals, refused by `hg-marl oracle` before enumerating.
+    assert layout_count(load_scenario("generated:objects=12,spots=14")) == 43_589_145_600

@@ -6,31 +6,12 @@ Each case states the option the message must name; the CLI runs in-process throu
 
 from __future__ import annotations
 
-import contextlib
-import io
-import sys
 from pathlib import Path
 
 import pytest
 
-from hg_marl.training.cli import app, main
-
-
-def run_main(args: list[str]) -> tuple[int, str, str]:
-    """Run ``hg-marl ARGS`` through ``main``; return exit code, stdout, stderr."""
-    out, err = io.StringIO(), io.StringIO()
-    old = sys.argv
-    sys.argv = ["hg-marl", *args]
-    code = 0
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            main()
-    except SystemExit as exc:
-        code = int(exc.code or 0)
-    finally:
-        sys.argv = old
-    return code, out.getvalue(), err.getvalue()
-
+from hg_marl.training.cli import app
+from tests.cli_helpers import run_main
 
 CASES = [
     (["run", "--duration", "nan"], "--duration"),
