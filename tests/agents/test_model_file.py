@@ -301,3 +301,31 @@ def test_table_policy_loads_without_torch(tmp_path: Path) -> None:
     mf = load_model_file(folder)
     assert isinstance(mf, ModelFile) and mf.header["kind"] == "table"
     assert mf.arrays["actions"].tolist() == [0]
+
+
+def test_convert_trusted_zip_round_trips(tmp_path: Path) -> None:
+    """The README's `hg-marl convert --trust model.zip`: same predictions after conversion."""
+    pytest.importorskip("sb3_contrib")
+    from sb3_contrib import MaskablePPO
+
+    from hg_marl.agents.robots import make_robot
+    from hg_marl.agents.views import RobotView
+
+    view = RobotView("paper2015", human="cooperative")
+    model = MaskablePPO("MlpPolicy", view, n_steps=32, batch_size=32, seed=0, device="cpu")
+    zip_path = tmp_path / "model.zip"
+    model.save(zip_path)
+    code, _, err = run_main(["convert", str(zip_path)])
+    assert code == 2 and "--trust" in err and not (tmp_path / "model.json").exists()
+    code, out, err = run_main(["convert", "--trust", str(zip_path), "--algo", "MaskablePPO"])
+    assert code == 0, err
+    robot = make_robot("sb3", path=str(tmp_path / "model.json"))
+    obs, _ = view.reset(seed=1)
+    for _ in range(20):
+        mask = view.action_masks()
+        expected, _ = model.predict(obs, deterministic=True, action_masks=mask)
+        got, _ = robot.model.predict(obs, deterministic=True, action_masks=mask)
+        assert int(expected) == int(got)
+        obs, _, term, trunc, _ = view.step(int(expected))
+        if term or trunc:
+            obs, _ = view.reset()
