@@ -317,7 +317,7 @@ def test_convert_trusted_zip_round_trips(tmp_path: Path) -> None:
     model.save(zip_path)
     code, _, err = run_main(["convert", str(zip_path)])
     assert code == 2 and "--trust" in err and not (tmp_path / "model.json").exists()
-    code, out, err = run_main(["convert", "--trust", str(zip_path), "--algo", "MaskablePPO"])
+    code, _, err = run_main(["convert", "--trust", str(zip_path), "--algo", "MaskablePPO"])
     assert code == 0, err
     robot = make_robot("sb3", path=str(tmp_path / "model.json"))
     obs, _ = view.reset(seed=1)
