@@ -612,8 +612,8 @@ def restore_sb3(model: Any, mf: ModelFile, *, optimizer: bool = True) -> None:
 _BUFFER_ARRAYS = ("observations", "next_observations", "actions", "rewards", "dones", "timeouts")
 
 
-def save_replay_buffer(buffer: Any, path: Path) -> dict[str, Any]:
-    """Write a replay buffer's arrays as ``.npz``; return the header entry that names it."""
+def _buffer_arrays(buffer: Any) -> dict[str, np.ndarray]:
+    """A replay buffer's arrays by name (``observations/<key>`` for dict observations)."""
     arrays: dict[str, np.ndarray] = {}
     for name in _BUFFER_ARRAYS:
         value = getattr(buffer, name, None)
@@ -621,6 +621,12 @@ def save_replay_buffer(buffer: Any, path: Path) -> dict[str, Any]:
             arrays.update({f"{name}/{k}": v for k, v in value.items()})
         elif isinstance(value, np.ndarray):
             arrays[name] = value
+    return arrays
+
+
+def save_replay_buffer(buffer: Any, path: Path) -> dict[str, Any]:
+    """Write a replay buffer's arrays as ``.npz``; return the header entry that names it."""
+    arrays = _buffer_arrays(buffer)
     sha = write_arrays(path, arrays, compress=True)
     return {"file": path.name, "sha256": sha, "pos": int(buffer.pos), "full": bool(buffer.full)}
 
@@ -631,13 +637,7 @@ def load_replay_buffer(buffer: Any, header_path: Path, entry: Any) -> None:
         raise ModelFileError(f"{header_path}: field 'replay_buffer' must be an object")
     path = weights_file(header_path, entry)
     arrays = read_arrays(path, entry.get("sha256") if isinstance(entry.get("sha256"), str) else None)
-    expected: dict[str, np.ndarray] = {}
-    for name in _BUFFER_ARRAYS:
-        value = getattr(buffer, name, None)
-        if isinstance(value, dict):
-            expected.update({f"{name}/{k}": v for k, v in value.items()})
-        elif isinstance(value, np.ndarray):
-            expected[name] = value
+    expected = _buffer_arrays(buffer)
     if set(arrays) != set(expected):
         raise ModelFileError(f"{path}: arrays {sorted(arrays)} differ from the buffer's {sorted(expected)}")
     for key, target in expected.items():

@@ -12,8 +12,8 @@ from hg_marl.agents.meta.entropy_cost import EntropyAndCostCriterion
 from hg_marl.agents.meta.fixed import HabitOnly, PlannerOnly
 from hg_marl.agents.meta.learning_state import LearningStateCriterion
 from hg_marl.agents.meta.vpi import VPICriterion
-from hg_marl.core.errors import CriterionError, HgMarlError, SpecError
-from hg_marl.core.spec import bind, parse_spec, signature_defaults
+from hg_marl.core.errors import CriterionError
+from hg_marl.core.spec import construct
 
 CRITERIA: dict[str, type[Criterion]] = {
     c.name: c
@@ -54,15 +54,5 @@ def make_criterion(name: str, **params: Any) -> Criterion:
         CriterionError: unknown name (the message lists the known ones), unknown parameter
             (lists the accepted ones) or a parameter out of range.
     """
-    try:
-        spec = parse_spec(name, "criterion")
-    except SpecError as exc:
-        raise CriterionError(str(exc)) from None
-    cls = _lookup(spec.name)
-    kwargs = bind(spec, signature_defaults(cls), params, what=f"criterion {spec.name!r}", error=CriterionError)
-    try:
-        return cls(**kwargs)
-    except HgMarlError:
-        raise
-    except (TypeError, ValueError) as exc:
-        raise CriterionError(f"criterion {spec.name!r}: {exc}") from None
+    criterion: Criterion = construct(name, CRITERIA, params, kind="criterion", error=CriterionError)
+    return criterion

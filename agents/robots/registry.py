@@ -11,8 +11,8 @@ from hg_marl.agents.robots.hybrid import HybridRobot
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.agents.robots.sb3 import SB3Robot
 from hg_marl.agents.robots.uniform import RandomRobot
-from hg_marl.core.errors import HgMarlError, RobotError, SpecError
-from hg_marl.core.spec import bind, parse_spec, signature_defaults
+from hg_marl.core.errors import RobotError
+from hg_marl.core.spec import construct
 
 ROBOTS: dict[str, type[Robot]] = {c.name: c for c in (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot)}
 """Robot classes by name (a registry of classes: the only module-level table)."""
@@ -45,15 +45,5 @@ def make_robot(name: str, **params: Any) -> Robot:
         RobotError: unknown name (the message lists the known ones), unknown parameter
             (lists the accepted ones) or a bad value; CriterionError for the criterion's own.
     """
-    try:
-        spec = parse_spec(name, "robot")
-    except SpecError as exc:
-        raise RobotError(str(exc)) from None
-    cls = _lookup(spec.name)
-    kwargs = bind(spec, signature_defaults(cls), params, what=f"robot {spec.name!r}", error=RobotError)
-    try:
-        return cls(**kwargs)
-    except HgMarlError:
-        raise
-    except (TypeError, ValueError) as exc:
-        raise RobotError(f"robot {spec.name!r}: {exc}") from None
+    robot: Robot = construct(name, ROBOTS, params, kind="robot", error=RobotError)
+    return robot

@@ -27,6 +27,8 @@ from hg_marl.agents.humans.trace import read_trace
 from hg_marl.core import Agent, World
 from hg_marl.core.errors import HgMarlError
 from hg_marl.core.scenario import Scenario, load_scenario
+from tests.agents.test_trace_validation import header as trace_header
+from tests.agents.test_trace_validation import step as trace_step
 from tests.cli_helpers import error_lines, run_main
 
 EXAMPLES = 150
@@ -234,21 +236,8 @@ def test_fuzz_plan_command(args: list[str]) -> None:
 
 # ---- trace lines -------------------------------------------------------------------------
 
-WORLD = World("paper2015")
-N_F, N_A = WORLD.n_facts, WORLD.n_actions(Agent.HUMAN)
-HEADER = {
-    "type": "header",
-    "format": "hg_marl.trace",
-    "version": 1,
-    "episode": 0,
-    "scenario": "paper2015",
-    "seed": 0,
-    "seat": "human",
-    "actor": "fuzz",
-    "fact_names": list(WORLD.fact_names),
-    "action_names": list(WORLD.action_names[Agent.HUMAN]),
-    "meta": {},
-}
+HEADER = trace_header()
+N_F, N_A = len(HEADER["fact_names"]), len(HEADER["action_names"])
 json_values = st.recursive(
     st.one_of(st.none(), st.booleans(), st.integers(-5, 40), st.floats(), st.text(max_size=5)),
     lambda children: st.lists(children, max_size=4) | st.dictionaries(st.text(max_size=5), children, max_size=3),
@@ -258,16 +247,7 @@ json_values = st.recursive(
 
 @st.composite
 def step_line(draw: st.DrawFn) -> str:
-    record: dict = {
-        "type": "step",
-        "step": 0,
-        "clock": 0.0,
-        "tasks_solved": 0,
-        "facts": [0] * N_F,
-        "mask": [1] * N_A,
-        "action": N_A - 1,
-        "action_name": HEADER["action_names"][N_A - 1],
-    }
+    record = trace_step()
     for key in draw(st.lists(st.sampled_from([*record, "extra"]), max_size=3)):
         record[key] = draw(json_values)
     if draw(st.integers(0, 9)) == 0:

@@ -43,10 +43,13 @@ class _Every(BaseCallback):
         self._next = (self.num_timesteps // self.freq + 1) * self.freq
 
     def _on_step(self) -> bool:
+        self._fire_if_due()
+        return True
+
+    def _fire_if_due(self) -> None:
         if self.num_timesteps >= self._next:
             self._next = (self.num_timesteps // self.freq + 1) * self.freq
             self._fire()
-        return True
 
     @abstractmethod
     def _fire(self) -> None:
@@ -74,7 +77,7 @@ class ProgressBar(BaseCallback):
         self._bar.close()
 
 
-class Checkpoints(BaseCallback):
+class Checkpoints(_Every):
     """Every ``freq`` steps, at a rollout's start: ``DIR/ckpt_<steps>_steps.json`` + ``.npz`` (+ replay buffer).
 
     Args:
@@ -84,26 +87,20 @@ class Checkpoints(BaseCallback):
     """
 
     def __init__(self, freq: int, directory: Path, save: Callable[[Any, Path], Path]) -> None:
-        super().__init__()
-        if freq < 1:
-            raise ValueError(f"frequency must be a positive number of steps, got {freq}")
-        self.freq = freq
+        super().__init__(freq)
         self.directory = Path(directory)
         self.save = save
         self.saved: list[Path] = []
-        self._next = 0
-
-    def _on_training_start(self) -> None:
-        self._next = (self.num_timesteps // self.freq + 1) * self.freq
 
     def _on_rollout_start(self) -> None:
-        if self.num_timesteps >= self._next:
-            self._next = (self.num_timesteps // self.freq + 1) * self.freq
-            self.saved.append(self.save(self.model, self.path(self.num_timesteps)))
-            log.info("checkpoint %s", self.saved[-1])
+        self._fire_if_due()  # not mid-rollout: every counted step has been trained on
 
     def _on_step(self) -> bool:
         return True
+
+    def _fire(self) -> None:
+        self.saved.append(self.save(self.model, self.path(self.num_timesteps)))
+        log.info("checkpoint %s", self.saved[-1])
 
     def path(self, steps: int) -> Path:
         """The header path of the checkpoint at ``steps``."""
