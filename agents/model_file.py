@@ -113,27 +113,42 @@ def read_arrays(path: Path, sha256: str | None = None) -> dict[str, np.ndarray]:
         raise ModelFileError(f"{path}: weights file not found")
     if sha256 is not None and sha256_of(path) != sha256:
         raise ModelFileError(f"{path}: sha256 differs from its header's (the file changed or is corrupt)")
-    out: dict[str, np.ndarray] = {}
-    total = 0
     try:
+        _check_npz_headers(path)
         data = np.load(path, allow_pickle=False)
         if not isinstance(data, np.lib.npyio.NpzFile):
             raise ModelFileError(f"{path}: not an .npz archive of arrays")
         with data:
-            for key in data.files:
-                # Check the size from the header before reading the array's data.
-                array = data[key]
-                if array.dtype.kind not in "biuf":
-                    raise ModelFileError(f"{path}: array {key!r} has dtype {array.dtype}; only numbers are allowed")
-                total += array.nbytes
-                if total > MAX_ARRAY_BYTES:
-                    raise ModelFileError(f"{path}: more than {MAX_ARRAY_BYTES} bytes of arrays")
-                out[key] = array
+            out = {key: data[key] for key in data.files}
     except ModelFileError:
         raise
     except (ValueError, OSError, EOFError, zipfile.BadZipFile, KeyError) as exc:
         raise ModelFileError(f"{path}: not a readable .npz of numeric arrays ({exc})") from None
     return out
+
+
+def _check_npz_headers(path: Path) -> None:
+    """Read every array's header (dtype, shape) from the archive before any data is loaded.
+
+    Refuses object arrays (a pickle inside) and more than :data:`MAX_ARRAY_BYTES` in all,
+    so a small compressed file cannot make the loader allocate gigabytes.
+    """
+    total = 0
+    with zipfile.ZipFile(path) as archive:
+        for name in archive.namelist():
+            if not name.endswith(".npy"):
+                raise ModelFileError(f"{path}: member {name!r} is not an array")
+            with archive.open(name) as member:
+                version = np.lib.format.read_magic(member)
+                if version == (1, 0):
+                    shape, _, dtype = np.lib.format.read_array_header_1_0(member)
+                else:
+                    shape, _, dtype = np.lib.format.read_array_header_2_0(member)
+            if dtype.kind not in "biuf" or dtype.hasobject:
+                raise ModelFileError(f"{path}: array {name[:-4]!r} has dtype {dtype}; only numbers are allowed")
+            total += int(np.prod(shape, dtype=np.float64)) * dtype.itemsize
+            if total > MAX_ARRAY_BYTES:
+                raise ModelFileError(f"{path}: more than {MAX_ARRAY_BYTES} bytes of arrays (a limit of the format)")
 
 
 def _json_error(path: Path, text: str, exc: json.JSONDecodeError) -> ModelFileError:

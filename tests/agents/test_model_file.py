@@ -9,6 +9,7 @@ loader is used, so the other tests would catch a loader that unpickles.
 from __future__ import annotations
 
 import base64
+import io
 import json
 import pickle
 import re
@@ -329,3 +330,14 @@ def test_convert_trusted_zip_round_trips(tmp_path: Path) -> None:
         obs, _, term, trunc, _ = view.step(int(expected))
         if term or trunc:
             obs, _ = view.reset()
+
+
+def test_npz_claiming_huge_arrays_is_refused_before_loading(tmp_path: Path) -> None:
+    """A 1 kB file whose array header claims 8 TB: refused from the header, nothing allocated."""
+    path = tmp_path / "bomb.npz"
+    header = io.BytesIO()
+    np.lib.format.write_array_header_1_0(header, {"descr": "<f8", "fortran_order": False, "shape": (10**6, 10**6)})
+    with zipfile.ZipFile(path, "w") as archive:
+        archive.writestr("W.npy", header.getvalue() + b"\0" * 64)  # the header writer adds the magic
+    with pytest.raises(ModelFileError, match=re.escape(f"{path}: more than")):
+        read_arrays(path)
