@@ -303,3 +303,35 @@ def test_nasty_inputs_stay_within_memory(args: list[str]) -> None:
 
 def test_builtin_scenario_text_is_the_fuzz_seed() -> None:
     assert tomllib.loads(PAPER)["name"] == "paper2015"
+
+
+# ---- specs given to the registries ---------------------------------------------------------
+
+spec_text = st.builds(
+    lambda name, params: name + (":" + ",".join(f"{k}={v}" for k, v in params) if params else ""),
+    st.sampled_from(["lazy", "noisy", "random", "switching", "cooperative", "hybrid", "habit", "vpi", "entropy", "x"]),
+    st.lists(
+        st.tuples(
+            st.sampled_from(["p_idle", "temperature", "feasible_only", "humans", "at", "by", "criterion", "learn",
+                             "q_config", "tau", "rate", "kappa", "bogus"]),
+            st.one_of(numbers, st.sampled_from(["true", "no", "[1,2]", '{"beta":2}', "{x", "lazy|cooperative", ""])),
+        ),
+        max_size=3,
+    ),
+)  # fmt: skip
+
+
+@settings(max_examples=EXAMPLES, deadline=None)
+@given(text=spec_text)
+def test_fuzz_registry_specs(text: str) -> None:
+    from hg_marl.agents.humans import make_human
+    from hg_marl.agents.meta import make_criterion
+    from hg_marl.agents.robots import make_robot
+
+    for make in (make_human, make_robot, make_criterion):
+        try:
+            make(text)
+            event(f"{make.__name__}: built")
+        except HgMarlError as exc:
+            assert "\n" not in str(exc)
+            event(f"{make.__name__}: one-line error")
