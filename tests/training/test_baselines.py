@@ -283,7 +283,7 @@ def test_behaviour_cloning_errors(tmp_path: Path) -> None:
 
 # ---- command line -------------------------------------------------------------------------
 def _app() -> typer.Typer:
-    from hg_marl.training.commands import compare, train
+    from hg_marl.training.cli import register_all
 
     app = typer.Typer()
 
@@ -291,8 +291,7 @@ def _app() -> typer.Typer:
     def _root() -> None:
         """Test app."""
 
-    train.register(app)
-    compare.register(app)
+    register_all(app, ("train", "compare"))
     return app
 
 
