@@ -10,7 +10,14 @@ reached from and whether the human reaches it. The robot reaches what its curren
 location reaches; handovers need the robot at one of ``handover_locations``.
 
 Built-in names: ``paper2015`` (default), ``roboergosum``, and ``generated`` (seeded
-random geometry, parameters after a colon: ``"generated:objects=6,spots=9,seed=3"``).
+random geometry, parameters after a colon: ``"generated:objects=6,spots=9,seed=3"``,
+read by the one spec parser of :mod:`hg_marl.core.spec`).
+
+Strictness. Files must be UTF-8; unknown keys, duplicate names and non-finite or
+non-positive durations are refused, with ``path:line`` found by searching the file's
+text for the field. Sizes are bounded (:data:`LIMITS`, raised by environment variables)
+and checked before anything is built. A layout where no agent can bring some object to
+a bin loads with a :class:`ScenarioWarning` (``strict=True`` refuses it).
 """
 
 from __future__ import annotations
