@@ -27,6 +27,9 @@ Checkpoints. By default every tenth of the budget, rounded up to whole rollouts
 rollout's start. Ctrl-C or SIGTERM stops at the next step and writes a final checkpoint
 (a second signal aborts).
 
+Imports. SB3 and torch are imported inside :func:`train` only, so the command line can
+read :class:`TrainConfig`'s defaults without them.
+
 Threads. Small MLPs gain nothing from intra-op parallelism, and several trainings may
 share a 2-core machine, so ``torch_threads`` (default 1) is applied with
 ``torch.set_num_threads`` before the model is built.
@@ -51,7 +54,6 @@ from hg_marl.agents.model_file import (
 )
 from hg_marl.core import Agent, World
 from hg_marl.core.errors import ConfigError, ModelFileError, check_int
-from hg_marl.training.baselines.callbacks import Checkpoints, ProgressBar, StopOnSignal, save_checkpoint
 from hg_marl.training.baselines.envs import DEFAULT_MAX_CYCLES, EnvSpec, make_vec_env
 from hg_marl.training.baselines.hyperparams import (
     OWN_KEYS,
@@ -242,6 +244,8 @@ def train(config: TrainConfig, callbacks: Sequence[Any] = ()) -> TrainResult:
     """
     import torch
     from stable_baselines3.common.callbacks import CallbackList
+
+    from hg_marl.training.baselines.callbacks import Checkpoints, ProgressBar, StopOnSignal, save_checkpoint
 
     torch.set_num_threads(config.torch_threads)
     resume = load_model_file(config.resume, what="--resume") if config.resume is not None else None

@@ -12,7 +12,10 @@ import typer
 
 from hg_marl.core.errors import check_finite
 from hg_marl.training.baselines.envs import EnvSpec
+from hg_marl.training.baselines.train import TrainConfig
 from hg_marl.training.commands.common import checked, default
+
+DEFAULT_OUT: Path = default(TrainConfig, "out")
 
 
 def register(app: typer.Typer) -> None:
@@ -36,8 +39,10 @@ def register(app: typer.Typer) -> None:
             EnvSpec, "scenario"
         ),
         steps: Annotated[int | None, typer.Option(help="Total environment steps (default: the YAML's).")] = None,
-        seed: Annotated[int, typer.Option(min=0, help="Seed of the model and the training tables.")] = 0,
-        out: Annotated[Path, typer.Option(help="Output directory.")] = Path("runs/train"),
+        seed: Annotated[int, typer.Option(min=0, help="Seed of the model and the training tables.")] = default(
+            TrainConfig, "seed"
+        ),
+        out: Annotated[Path, typer.Option(help="Output directory.")] = DEFAULT_OUT,
         hp: Annotated[list[str] | None, typer.Option("--hp", help="Hyperparameter override key=value.")] = None,
         hyperparams: Annotated[Path | None, typer.Option(help="YAML file instead of the packaged one.")] = None,
         observation: Annotated[str, typer.Option(help="View observation: facts, flat or dict.")] = default(
@@ -46,8 +51,12 @@ def register(app: typer.Typer) -> None:
         max_cycles: Annotated[int, typer.Option(min=1, help="Training episode length in cycles.")] = default(
             EnvSpec, "max_cycles"
         ),
-        eval_freq: Annotated[int, typer.Option(min=0, help="Steps between evaluations (0: none).")] = 10_000,
-        eval_episodes: Annotated[int, typer.Option(min=1, help="Episodes per evaluation.")] = 10,
+        eval_freq: Annotated[int, typer.Option(min=0, help="Steps between evaluations (0: none).")] = default(
+            TrainConfig, "eval_freq"
+        ),
+        eval_episodes: Annotated[int, typer.Option(min=1, help="Episodes per evaluation.")] = default(
+            TrainConfig, "eval_episodes"
+        ),
         checkpoint_freq: Annotated[
             int | None,
             typer.Option(
@@ -59,9 +68,11 @@ def register(app: typer.Typer) -> None:
         ] = None,
         traces: Annotated[list[Path] | None, typer.Option("--traces", help="bc: trace file(s) (repeat).")] = None,
         bc_kind: Annotated[str, typer.Option(help="bc: table or linear_softmax.")] = "table",
-        tensorboard: Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")] = True,
+        tensorboard: Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")] = default(
+            TrainConfig, "tensorboard"
+        ),
         progress: Annotated[bool, typer.Option(help="Show a progress bar.")] = True,
-        verbose: Annotated[int, typer.Option(help="SB3 verbosity.")] = 0,
+        verbose: Annotated[int, typer.Option(help="SB3 verbosity.")] = default(TrainConfig, "verbose"),
     ) -> None:
         """Train an SB3 algorithm on a seat of the table (or clone recorded play with --algo bc)."""
         if algo == "bc":
@@ -74,8 +85,8 @@ def register(app: typer.Typer) -> None:
             typer.echo(f"  policy  {path}  (make_human('learned', path='{path}'))")
             return
 
-        from hg_marl.training.baselines.envs import EnvSpec, split_population
-        from hg_marl.training.baselines.train import TrainConfig, train
+        from hg_marl.training.baselines.envs import split_population
+        from hg_marl.training.baselines.train import train
 
         partners = human if seat == "robot" else robot
         check_finite(effort_weight, "--effort-weight", minimum=0.0)
