@@ -6,7 +6,7 @@ row per workload: median and 95th-percentile cold planning time and the median C
 constructing it (its static tables: not part of the planning time)
 (no plan, candidate or bound cached; the ``World`` is shared, as in a run), the
 warm time (the same query again: a cache hit), nodes expanded, and how many calls
-proved the optimum within the node budget. Targets (DESIGN.md section 3 / issue 3):
+proved the optimum within the node budget. Targets:
 paper2015 initial state <= 1 ms median, roboergosum <= 10 ms, 20 objects <= 100 ms with
 the optimum proven.
 """

@@ -24,7 +24,7 @@ from dataclasses import replace
 from hg_marl.agents.planner.costs import PlannerConfig, Terms
 from hg_marl.agents.planner.domain import Domain
 from hg_marl.agents.planner.expectimax import expectimax
-from hg_marl.agents.planner.halfstep import astar, prepare
+from hg_marl.agents.planner.halfstep import astar
 from hg_marl.agents.planner.models import HumanModel, cooperative
 from hg_marl.agents.planner.plan import NO_ACTION, Plan, PlanResult, build_plan, failure
 from hg_marl.agents.planner.space import Space
@@ -52,8 +52,6 @@ class Planner:
         self.human_model: HumanModel = human_model if human_model is not None else cooperative()
         self.domain = Domain(world, self.human_model)
         self.space = Space(self.domain, self.config.weights)
-        if not self.human_model.stochastic:
-            prepare(self.space)  # the half-step search's compiled tables
         self._cache: OrderedDict[_Key, tuple[PlanResult, int]] = OrderedDict()
         self._wait = self.space.wait
 
