@@ -209,22 +209,40 @@ class World:
         """Length of the fact vector."""
         return len(self.fact_names)
 
+    @cached_property
+    def _fact_lookup(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+        """Every fact but the offers as a look-up: ``table[robot_at][fact, place of its object]``.
+
+        Each fact of the paper's vector depends on one object's place and the robot's
+        location (a bin's or the human's reachability on the location only, any object
+        standing in), so one fancy index computes the vector.
+        """
+        t, n, b, m = self.table, self.n_objects, self.n_bins, self.n_spots
+        n_locs, places = t.n_locations, range(t.n_places)
+        rows: list[tuple[int, list[list[bool]]]] = []  # (object, value per location and place)
+        for agent in (Agent.ROBOT, Agent.HUMAN):
+            for o in range(n):
+                rows.append((o, [[p < m and t.reach[agent][at][p] for p in places] for at in range(n_locs)]))
+            for k in range(b):
+                reached = [at in t.bin_robot[k] if agent is Agent.ROBOT else t.bin_human[k] for at in range(n_locs)]
+                rows.append((0, [[reached[at]] * t.n_places for at in range(n_locs)]))
+        rows += [(o, [[p in t.done[o] for p in places]] * n_locs) for o in range(n)]
+        rows.append((0, [[at in t.handover] * t.n_places for at in range(n_locs)]))
+        for hand in self.hand:
+            rows += [(o, [[p == hand for p in places]] * n_locs) for o in range(n)]
+        lookup = np.array([[values[at] for _, values in rows] for at in range(n_locs)], dtype=np.int8)
+        objects = np.array([o for o, _ in rows], dtype=np.intp)
+        return lookup, np.arange(len(rows)), objects, len(rows)
+
     def compute_facts(self, state: State) -> np.ndarray:
         """The paper's boolean fact vector for ``state`` (a fresh int8 array)."""
-        n, b, m = self.n_objects, self.n_bins, self.n_spots
-        where = state.where
-        out: list[bool] = []
-        for agent in (Agent.ROBOT, Agent.HUMAN):
-            out += [p < m and self.spot_reachable(state, agent, p) for p in where]
-            out += [self.bin_reachable(state, agent, k) for k in range(b)]
-        done = self.table.done
-        out += [p in done[o] for o, p in enumerate(where)]
-        out.append(state.robot_at in self.scenario.handover_locations)
-        out += [p == self.hand[Agent.ROBOT] for p in where]
-        out += [p == self.hand[Agent.HUMAN] for p in where]
-        for giver in (Agent.ROBOT, Agent.HUMAN):
-            out += [state.offer_by == giver and state.offer_obj == o for o in range(n)]
-        return np.array(out, dtype=np.int8)
+        lookup, rows, objects, n_fixed = self._fact_lookup
+        fixed = lookup[state.robot_at][rows, np.array(state.where, dtype=np.intp)[objects]]
+        out = np.zeros(n_fixed + 2 * self.n_objects, dtype=np.int8)
+        out[:n_fixed] = fixed
+        if state.offer_by >= 0:
+            out[n_fixed + state.offer_by * self.n_objects + state.offer_obj] = 1
+        return out
 
     def facts(self, state: State) -> np.ndarray:
         """Memoised, read-only :meth:`compute_facts`."""

@@ -103,3 +103,23 @@ def is_clean(scenario: Scenario, state: State) -> bool:
     """Every object is in a bin that accepts it."""
     m = len(scenario.spots)
     return all(p >= m and p - m < len(scenario.bins) and accepts(scenario, p - m, o) for o, p in enumerate(state.where))
+
+
+def facts(scenario: Scenario, state: State) -> list[int]:
+    """The paper's fact vector, in ``World.fact_names`` order."""
+    m, b, n = len(scenario.spots), len(scenario.bins), len(scenario.objects)
+    out: list[bool] = []
+    for agent in (Agent.ROBOT, Agent.HUMAN):
+        for p in state.where:
+            reach = scenario.spots[p].reach if p < m else None
+            out.append(
+                reach is not None and (state.robot_at in reach.robot_from if agent is Agent.ROBOT else reach.human)
+            )
+        out += [bin_reached(scenario, state, agent, k) for k in range(b)]
+    out += [m <= p < m + b and accepts(scenario, p - m, o) for o, p in enumerate(state.where)]
+    out.append(state.robot_at in scenario.handover_locations)
+    out += [p == m + b for p in state.where]
+    out += [p == m + b + 1 for p in state.where]
+    for giver in (0, 1):
+        out += [state.offer_by == giver and state.offer_obj == o for o in range(n)]
+    return [int(x) for x in out]

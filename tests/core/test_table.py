@@ -63,5 +63,6 @@ def test_table_matches_reference_rules(name: str) -> None:
             assert world.feasible_indices(state, agent) == feasible
             assert list(world.mask(state, agent).nonzero()[0]) == feasible
         assert world.is_clean(state) == ref.is_clean(sc, state)
+        assert world.compute_facts(state).tolist() == ref.facts(sc, state)
 
     check()
