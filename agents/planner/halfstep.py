@@ -54,7 +54,7 @@ class SearchOutcome:
 
 def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, int], budget: int) -> SearchOutcome:
     """Find a minimum-cost plan from ``root`` over half-steps (see the module docstring)."""
-    world, model = space.world, space.domain.human_model
+    world = space.world
     weights = space.weights.vector
     wait_r, wait_h = space.wait
     table = space.table
@@ -68,27 +68,10 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
     takes = space.human_takes
     final_cost = cycle_cost(weights, world.durations.wait, False, world.durations.wait, False, False)
     base = space.base
-    space_sums = space.sums
+    sums = space.cached_sums
+    allowed = space.allowed
     n_k = len(space.coefs)
     cr = tuple(c for c, _ in space.coefs)
-    sums_cache: dict[object, tuple[float, ...] | None] = {}
-    allowed_cache: dict[State, tuple[int, ...]] = {}
-
-    def sums(s: State, key: object) -> tuple[float, ...] | None:
-        """Per-lambda weighted remaining work of ``s`` (None: a dead end), memoised per key."""
-        out = sums_cache.get(key, 0)
-        if out == 0:
-            out = sums_cache[key] = space_sums(s)
-        return out  # type: ignore[return-value]
-
-    def allowed(s1: State) -> tuple[int, ...]:
-        out = allowed_cache.get(s1)
-        if out is None:
-            out = ()
-            for _, choice in model.choices(world, s1, cands(s1, human)):
-                out += tuple(choice)
-            allowed_cache[s1] = out
-        return out
 
     # node arrays
     states: list[State] = []

@@ -32,11 +32,13 @@ one back when the robot stands, empty-handed, where it could acquire something.
 from __future__ import annotations
 
 import math
+import weakref
 from operator import getitem
 
 from hg_marl.agents.planner.costs import CostWeights
 from hg_marl.agents.planner.domain import Domain
-from hg_marl.core import Agent, Kind, State
+from hg_marl.agents.planner.models import HumanModel
+from hg_marl.core import Agent, Kind, State, World
 
 LAMBDAS: tuple[float, ...] = (0.0, 0.25, 0.5, 0.75, 1.0)
 """Mixing weights of robot and human work tried by the bound."""
@@ -45,6 +47,28 @@ _CACHE_LIMIT = 500_000
 
 Entry = tuple[Kind, int, object, int]
 """A tabulated candidate: (kind, action index, symmetry signature or None, PLACE spot or -1)."""
+
+
+_SHARED: weakref.WeakKeyDictionary[World, dict[tuple[object, CostWeights], Space]] = weakref.WeakKeyDictionary()
+
+
+def shared_space(world: World, human_model: HumanModel, weights: CostWeights) -> Space:
+    """The one :class:`Space` of a world, human model and cost model, shared by every planner.
+
+    Its caches (candidates, bounds, allowed replies) are pure functions of the state, so
+    the robot's planner and the planner-driven humans on the same layout share them
+    without changing any answer. A model that is not hashable gets a space of its own.
+    """
+    try:
+        key = (human_model, weights)
+        hash(key)
+    except TypeError:
+        return Space(Domain(world, human_model), weights)
+    per_world = _SHARED.setdefault(world, {})
+    space = per_world.get(key)
+    if space is None:
+        space = per_world[key] = Space(Domain(world, human_model), weights)
+    return space
 
 
 class Space:
@@ -104,6 +128,8 @@ class Space:
         self._entries = self._tabulate_candidates()
         self._cand: tuple[dict[State, tuple[int, ...]], dict[State, tuple[int, ...]]] = ({}, {})
         self._bound: dict[object, float] = {}
+        self._sums: dict[object, tuple[float, ...] | None] = {}
+        self._allowed: dict[State, tuple[int, ...]] = {}
 
     # ---- bound -------------------------------------------------------------------
     def _tabulate(self) -> list[list[list[list[float]]]]:
@@ -167,6 +193,27 @@ class Space:
             out[state.offer_obj] = d.human_offer if state.offer_by == Agent.HUMAN else d.robot_offer
         return out
 
+    def cached_sums(self, state: State, key: object) -> tuple[float, ...] | None:
+        """:meth:`sums` memoised by canonical key (symmetric states have the same sums)."""
+        out = self._sums.get(key, 0)
+        if out == 0:
+            if len(self._sums) > _CACHE_LIMIT:
+                self._sums.clear()
+            out = self._sums[key] = self.sums(state)
+        return out  # type: ignore[return-value]
+
+    def allowed(self, state: State) -> tuple[int, ...]:
+        """The human replies a deterministic model allows at ``state`` (its candidates, filtered)."""
+        out = self._allowed.get(state)
+        if out is None:
+            out = ()
+            for _, choice in self.domain.human_model.choices(self.world, state, self.candidates(state, Agent.HUMAN)):
+                out += tuple(choice)
+            if len(self._allowed) > _CACHE_LIMIT:
+                self._allowed.clear()
+            self._allowed[state] = out
+        return out
+
     def sums(self, state: State) -> tuple[float, ...] | None:
         """Per ``LAMBDAS[k]``, the weighted remaining work of ``state`` (None: a dead end).
 
@@ -197,7 +244,7 @@ class Space:
         value = self._bound.get(key)
         if value is not None:
             return value
-        sm = self.sums(state)
+        sm = self.cached_sums(state, key)
         value = math.inf if sm is None else self.base + max(0.0, *sm)
         if len(self._bound) > _CACHE_LIMIT:
             self._bound.clear()

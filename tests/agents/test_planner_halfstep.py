@@ -74,3 +74,26 @@ def test_same_cost_as_joint_cycle_search(scenario: str, weights: CostWeights) ->
                 a2 = joint_search.astar(planner.space, mid, Agent.HUMAN, part, 200_000)
                 b2 = astar(planner.space, mid, Agent.HUMAN, part, 200_000)
                 assert b2.cost == pytest.approx(a2.cost, abs=1e-9)
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "roboergosum"])
+def test_intent_answers_like_a_full_plan(scenario: str) -> None:
+    """``Planner.intent`` (no Plan built) gives the actions, duration and cost of ``plan``."""
+    world = World(scenario)
+    config = PlannerConfig(cache_suffixes=False)
+    for seed in range(3):
+        state = world.initial_state(np.random.default_rng(seed))
+        for to_move, robot_action in ((Agent.ROBOT, None), (Agent.HUMAN, None), (Agent.HUMAN, 0)):
+            full = Planner(World(scenario), config).plan(state, to_move, robot_action=robot_action)
+            light = Planner(World(scenario), config).intent(state, to_move, robot_action=robot_action)
+            assert full.plan is not None
+            assert (light.robot_action, light.human_action) == (full.robot_action, full.human_action)
+            assert light.duration == pytest.approx(full.plan.duration)
+            assert light.cost == pytest.approx(full.cost)
+
+
+def test_planners_of_one_world_share_their_space() -> None:
+    world = World("paper2015")
+    assert Planner(world).space is Planner(world, PlannerConfig(cache_size=0)).space
+    assert Planner(world).space is not Planner(world, human_model=make_human_model("lazy")).space
+    assert Planner(world).space is not Planner(World("paper2015")).space
