@@ -57,27 +57,18 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
     world = space.world
     weights = space.weights.vector
     wait_r, wait_h = space.wait
-    table = space.table
-    hand_h = table.hand[Agent.HUMAN]
-    apply = table.successor_feasible
-    robot, human = Agent.ROBOT, Agent.HUMAN
-    cands = space.candidates
     key_of = space.key
-    done = table.done
+    done = space.table.done
     gives = space.robot_gives
-    takes = space.human_takes
     final_cost = cycle_cost(weights, world.durations.wait, False, world.durations.wait, False, False)
-    base = space.base
     sums = space.cached_sums
-    allowed = space.allowed
-    n_k = len(space.coefs)
-    cr = tuple(c for c, _ in space.coefs)
+    robot_edges = space.robot_edges
+    human_edges = space.human_edges
 
     # node arrays
     states: list[State] = []
     parents: list[int] = []
     acts: list[int] = []  # robot nodes: the human action that led here; human nodes: the robot action
-    gs: list[float] = []
     keys: list[object] = []
     kinds: list[int] = []  # 0 robot node, 1 human node, 2 terminal
     durs: list[float] = []
@@ -94,23 +85,20 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
         states.append(state)
         parents.append(parent)
         acts.append(action)
-        gs.append(g)
         keys.append(key)
         kinds.append(kind)
         durs.append(dr)
         actives.append(act)
         push(heap, (f, -g, node))
 
-    def push_h(s1: State, parent: int, ar: int, g: float, d_r: float, active: bool) -> None:
-        key = (key_of(s1), d_r, active)
-        if g >= best_h.get(key, math.inf) - 1e-12:
-            return
-        sm = sums(s1, key[0])
-        if sm is None:
-            return
-        best_h[key] = g
-        h = max(sm[k] + cr[k] * d_r for k in range(n_k))
-        add(s1, parent, ar, g, 1, key, g + base + h, d_r, active)
+    def expand_r(node: int, g: float, s: State) -> None:
+        for ar, s1, d_r, k1, h in robot_edges(s):
+            active = ar != wait_r
+            key = (k1, d_r, active)
+            if g >= best_h.get(key, math.inf) - 1e-12:
+                continue
+            best_h[key] = g
+            add(s1, node, ar, g, 1, key, g + h, d_r, active)
 
     def expand_h(node: int, g: float) -> None:
         s1 = states[node]
@@ -120,23 +108,16 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
         parent = parents[node]
         noop = states[parent] if (ar == wait_r and parent >= 0) else None
         give = ar in gives
-        for ah in allowed(s1):
-            s2, d_h = apply(s1, human, ah)
+        for ah, s2, d_h, take, active_h, holding, key, h in human_edges(s1):
             if noop is not None and s2 == noop:
                 continue  # a cycle in which nothing happens only costs time
-            g2 = g + cycle_cost(
-                weights, d_r, active_r and (not give or ah in takes), d_h, ah != wait_h, hand_h in s2.where
-            )
-            key = key_of(s2)
+            g2 = g + cycle_cost(weights, d_r, active_r and (not give or take), d_h, active_h, holding)
             if g2 >= best_r.get(key, math.inf) - 1e-12:
                 continue
-            sm = sums(s2, key)
-            if sm is None:
-                continue
             best_r[key] = g2
-            add(s2, node, ah, g2, 0, key, g2 + base + max(sm), 0.0, False)
+            add(s2, node, ah, g2, 0, key, g2 + h, 0.0, False)
 
-    if to_move is human:
+    if to_move is Agent.HUMAN:
         d_r, ra = robot_part
         # the root is a human node; its replies are the first cycle (the robot's part given)
         add(root, -1, ra, 0.0, 1, None, 0.0, d_r, ra >= 0 and ra != wait_r)
@@ -170,9 +151,7 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
         if all(p in done[o] for o, p in enumerate(where)):
             add(s, node, wait_h, g + final_cost, 2, None, g + final_cost, 0.0, False)
             continue
-        for ar in cands(s, robot):
-            s1, d_r = apply(s, robot, ar)
-            push_h(s1, node, ar, g, d_r, ar != wait_r)
+        expand_r(node, g, s)
     return SearchOutcome(None, math.inf, expanded, "no plan")
 
 

@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 import weakref
 from operator import getitem
+from typing import NamedTuple
 
 from hg_marl.agents.planner.costs import CostWeights
 from hg_marl.agents.planner.domain import Domain
@@ -69,6 +70,33 @@ def shared_space(world: World, human_model: HumanModel, weights: CostWeights) ->
     if space is None:
         space = per_world[key] = Space(Domain(world, human_model), weights)
     return space
+
+
+class RobotEdge(NamedTuple):
+    """A robot candidate from a cycle-boundary state, with what the search needs of its result."""
+
+    action: int
+    state: State
+    duration: float
+    key: object
+    """Canonical key of the mid-cycle state."""
+    h: float
+    """Bound on the cost-to-go after it (the cycle's robot duration counted)."""
+
+
+class HumanEdge(NamedTuple):
+    """A human reply from a mid-cycle state, with what the search needs of its result."""
+
+    action: int
+    state: State
+    duration: float
+    take: bool
+    active: bool
+    holding: bool
+    """Whether the human holds an object after it."""
+    key: object
+    h: float
+    """Bound on the cost-to-go from the next cycle boundary."""
 
 
 class Space:
@@ -129,6 +157,8 @@ class Space:
         self._cand: tuple[dict[State, tuple[int, ...]], dict[State, tuple[int, ...]]] = ({}, {})
         self._bound: dict[object, float] = {}
         self._sums: dict[object, tuple[float, ...] | None] = {}
+        self._robot_edges: dict[State, tuple[RobotEdge, ...]] = {}
+        self._human_edges: dict[State, tuple[HumanEdge, ...]] = {}
         self._allowed: dict[State, tuple[int, ...]] = {}
 
     # ---- bound -------------------------------------------------------------------
@@ -201,6 +231,54 @@ class Space:
                 self._sums.clear()
             out = self._sums[key] = self.sums(state)
         return out  # type: ignore[return-value]
+
+    def robot_edges(self, state: State) -> tuple[RobotEdge, ...]:
+        """The robot's candidates at ``state`` applied (dead ends left out), memoised.
+
+        A pure function of the state, so successive searches (the humans plan at every
+        turn, from neighbouring states) reuse each other's expansions.
+        """
+        out = self._robot_edges.get(state)
+        if out is None:
+            apply, key_of, base = self.table.successor_feasible, self.key, self.base
+            cr = [c for c, _ in self.coefs]
+            edges = []
+            for ar in self.candidates(state, Agent.ROBOT):
+                s1, d_r = apply(state, Agent.ROBOT, ar)
+                key = key_of(s1)
+                sm = self.cached_sums(s1, key)
+                if sm is not None:
+                    h = base + max(v + c * d_r for v, c in zip(sm, cr, strict=True))
+                    edges.append(RobotEdge(ar, s1, d_r, key, h))
+            out = tuple(edges)
+            if len(self._robot_edges) > _CACHE_LIMIT:
+                self._robot_edges.clear()
+            self._robot_edges[state] = out
+        return out
+
+    def human_edges(self, state: State) -> tuple[HumanEdge, ...]:
+        """The replies the human model allows at mid-cycle ``state`` applied (dead ends left out), memoised."""
+        out = self._human_edges.get(state)
+        if out is None:
+            apply, key_of, base = self.table.successor_feasible, self.key, self.base
+            hand_h = self.table.hand[Agent.HUMAN]
+            wait_h = self.wait[Agent.HUMAN]
+            edges = []
+            for ah in self.allowed(state):
+                s2, d_h = apply(state, Agent.HUMAN, ah)
+                key = key_of(s2)
+                sm = self.cached_sums(s2, key)
+                if sm is not None:
+                    edges.append(
+                        HumanEdge(
+                            ah, s2, d_h, ah in self.human_takes, ah != wait_h, hand_h in s2.where, key, base + max(sm)
+                        )
+                    )
+            out = tuple(edges)
+            if len(self._human_edges) > _CACHE_LIMIT:
+                self._human_edges.clear()
+            self._human_edges[state] = out
+        return out
 
     def allowed(self, state: State) -> tuple[int, ...]:
         """The human replies a deterministic model allows at ``state`` (its candidates, filtered)."""
