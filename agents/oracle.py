@@ -195,7 +195,7 @@ class _Model:
         for root in roots:
             self._id(root)
         bar = tqdm(
-            desc=f"oracle {self.world.scenario.name}",
+            desc=f"oracle {self.world.scenario.name}: states",
             unit=" states",
             disable=not self.progress,
             file=sys.stderr,
@@ -319,7 +319,10 @@ def oracle_rate(
     model = _Model(world, policy_human, failed_actions, max_states, progress)
     wait = world.durations.wait
     wait_index = world.n_actions(Agent.ROBOT) - 1
-    regen = [(nxt, q * p, tau) for table, q in layouts for nxt, p, tau in model.replies(table, wait, wait_index)]
+    first_replies = tqdm(
+        layouts, desc=f"oracle {world.scenario.name}: layouts", unit=" layouts", disable=not progress, file=sys.stderr
+    )
+    regen = [(nxt, q * p, tau) for table, q in first_replies for nxt, p, tau in model.replies(table, wait, wait_index)]
     model.build([s for s, _ in layouts] + [s for s, _, _ in regen])
     n = len(model.states)
     pair_state = np.repeat(np.arange(n), np.diff([*model.pair_start, len(model.pair_action)]))

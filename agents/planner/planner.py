@@ -28,7 +28,7 @@ from hg_marl.agents.planner.expectimax import expectimax
 from hg_marl.agents.planner.halfstep import astar
 from hg_marl.agents.planner.models import HumanModel, cooperative
 from hg_marl.agents.planner.plan import NO_ACTION, Plan, PlanResult, build_plan, failure
-from hg_marl.agents.planner.space import shared_space
+from hg_marl.agents.planner.space import Relabel, shared_space
 from hg_marl.core import Agent, State, World
 
 logger = logging.getLogger(__name__)
@@ -70,6 +70,9 @@ class Planner:
         self.domain = self.space.domain
         self._cache: OrderedDict[_Key, tuple[PlanResult, int]] = OrderedDict()
         self._intents: dict[_Key, Intent] = {}
+        self._relabel = Relabel(world)
+        # ground actions ruled out by name are not invariant under relabelling objects
+        self._has_blocked = bool(getattr(self.human_model, "blocked", None))
         self._wait = self.space.wait
 
     def plan(self, state: State, to_move: Agent = Agent.ROBOT, *, robot_action: int | None = None) -> PlanResult:
@@ -100,10 +103,20 @@ class Planner:
     def intent(self, state: State, to_move: Agent = Agent.ROBOT, *, robot_action: int | None = None) -> Intent:
         """The next actions, the duration and the cost of the plan :meth:`plan` would return.
 
-        Deterministic human models run the search alone (no :class:`Plan` is built) and
-        memoise exact queries; stochastic ones ask :meth:`plan`.
+        Deterministic human models run the search alone (no :class:`Plan` is built), on
+        the state with its interchangeable objects in canonical order (:class:`.Relabel`;
+        the actions are mapped back), and memoise the queries; stochastic ones ask
+        :meth:`plan`. The answer is a function of the state alone.
         """
         ra = robot_action if (to_move is Agent.HUMAN and robot_action is not None) else NO_ACTION
+        if self._relabel.active and not self.human_model.stochastic and not self._has_blocked:
+            canonical, orig = self._relabel.canonical(state)
+            if canonical != state:
+                answer = self.intent(canonical, to_move, robot_action=robot_action)
+                back = self._relabel.action_back
+                return answer._replace(
+                    robot_action=back(0, answer.robot_action, orig), human_action=back(1, answer.human_action, orig)
+                )
         key = (state, to_move, ra)
         out = self._intents.get(key)
         if out is not None:

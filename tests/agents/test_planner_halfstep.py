@@ -8,6 +8,7 @@ import pytest
 from hg_marl.agents.planner import CostWeights, Planner, PlannerConfig, make_human_model
 from hg_marl.agents.planner.costs import cycle_cost, cycle_terms
 from hg_marl.agents.planner.halfstep import astar
+from hg_marl.agents.planner.space import Relabel
 from hg_marl.core import Agent, World
 from tests.agents import joint_search
 
@@ -78,11 +79,13 @@ def test_same_cost_as_joint_cycle_search(scenario: str, weights: CostWeights) ->
 
 @pytest.mark.parametrize("scenario", ["paper2015", "roboergosum"])
 def test_intent_answers_like_a_full_plan(scenario: str) -> None:
-    """``Planner.intent`` (no Plan built) gives the actions, duration and cost of ``plan``."""
+    """``Planner.intent`` (no Plan built) gives the actions, duration and cost of ``plan``
+    (on canonical states, where no relabelling happens)."""
     world = World(scenario)
     config = PlannerConfig(cache_suffixes=False)
+    relabel = Relabel(world)
     for seed in range(3):
-        state = world.initial_state(np.random.default_rng(seed))
+        state, _ = relabel.canonical(world.initial_state(np.random.default_rng(seed)))
         for to_move, robot_action in ((Agent.ROBOT, None), (Agent.HUMAN, None), (Agent.HUMAN, 0)):
             full = Planner(World(scenario), config).plan(state, to_move, robot_action=robot_action)
             light = Planner(World(scenario), config).intent(state, to_move, robot_action=robot_action)
@@ -97,3 +100,27 @@ def test_planners_of_one_world_share_their_space() -> None:
     assert Planner(world).space is Planner(world, PlannerConfig(cache_size=0)).space
     assert Planner(world).space is not Planner(world, human_model=make_human_model("lazy")).space
     assert Planner(world).space is not Planner(World("paper2015")).space
+
+
+@pytest.mark.parametrize("scenario", ["roboergosum", "paper2015"])
+def test_intent_on_a_relabelled_state_is_optimal_and_feasible(scenario: str) -> None:
+    """Answering for the canonical relabelling keeps the answer feasible and optimal: the
+    proposed human action followed by the plan from there costs what a full plan costs."""
+    world = World(scenario)
+    planner = Planner(world, PlannerConfig(cache_suffixes=False))
+    reference = Planner(World(scenario), PlannerConfig(cache_suffixes=False, cache_size=0))
+    rng = np.random.default_rng(7)
+    state = world.initial_state(rng)
+    for _ in range(12):
+        ar = int(rng.choice(world.feasible_indices(state, Agent.ROBOT)))
+        mid = world.step(state, Agent.ROBOT, ar).state
+        intent = planner.intent(mid, Agent.HUMAN, robot_action=ar)
+        full = reference.plan(mid, Agent.HUMAN, robot_action=ar)
+        assert intent.success == full.success
+        if not full.success:
+            break
+        assert world.mask(mid, Agent.HUMAN)[intent.human_action]
+        assert intent.cost == pytest.approx(full.cost)
+        state = world.step(mid, Agent.HUMAN, intent.human_action).state
+        if world.is_clean(state):
+            break
