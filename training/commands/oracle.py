@@ -28,7 +28,7 @@ def register(app: typer.Typer) -> None:
                 f"scenario {scenario}: {layouts} initial layouts, over --max-states {max_states} (raise it to try)"
             )
         try:
-            result = oracle_rate(scenario, human, max_states=max_states, failed_actions=failed_actions)
+            result = oracle_rate(scenario, human, max_states=max_states, failed_actions=failed_actions, progress=True)
         except (HumanError, OracleTooLarge, ValueError) as exc:
             typer.echo(f"error: {exc}", err=True)
             raise typer.Exit(2) from exc
