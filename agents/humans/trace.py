@@ -9,6 +9,11 @@ one line per turn of the recorded seat::
     {"type": "step", "step": 0, "clock": 0.0, "tasks_solved": 0, "facts": [0, 1, ...],
      "mask": [1, 0, ...], "action": 17, "action_name": "wait"}
 
+A recording of a person adds, in the header's ``meta``, who played (``player``), when
+(``started``, ISO 8601 UTC), the front end and the robot's spec, and on each step line
+the ``response_time`` in wall seconds, and an end line closes the episode with its
+totals: ``{"type": "end", "clock": 93.4, "tasks_solved": 2, "rewards": 2.0}``.
+
 ``facts`` and ``mask`` are the seat's observation (what a learned policy or a person
 sees), ``clock`` the simulated seconds at the turn. The same format holds recordings of
 people playing the human (write them with :class:`TraceWriter`), replayed by
@@ -40,6 +45,8 @@ class Episode:
     """The header line (scenario, seed, seat, names, meta)."""
     steps: list[dict[str, Any]] = field(default_factory=list)
     """The step lines, in order."""
+    end: dict[str, Any] = field(default_factory=dict)
+    """The optional end line (final ``clock``, ``tasks_solved``, ``rewards``); empty if absent."""
 
     @property
     def actions(self) -> list[int]:
@@ -68,8 +75,12 @@ def read_trace(path: str | Path) -> list[Episode]:
                 if not episodes:
                     raise ValueError(f"{path}:{number}: step before any header line")
                 episodes[-1].steps.append(record)
+            elif kind == "end" and episodes:
+                episodes[-1].end = record
             else:
-                raise ValueError(f"{path}:{number}: unknown line type {kind!r} (expected 'header' or 'step')")
+                raise ValueError(
+                    f"{path}:{number}: unknown line type {kind!r} (expected 'header', 'step' or 'end' after a header)"
+                )
     if not episodes:
         raise ValueError(f"{path}: empty trace (no header line)")
     return episodes
@@ -123,8 +134,14 @@ class TraceWriter:
         self.episodes += 1
         self._steps = 0
 
-    def step(self, turn: Turn, action: int) -> None:
-        """Record the seat's observation at ``turn`` and the action it took."""
+    def step(self, turn: Turn, action: int, extra: dict[str, Any] | None = None) -> None:
+        """Record the seat's observation at ``turn`` and the action it took.
+
+        Args:
+            turn: the seat's turn.
+            action: the action taken.
+            extra: further fields of the step line (a person's ``response_time``).
+        """
         self._write(
             {
                 "type": "step",
@@ -135,9 +152,16 @@ class TraceWriter:
                 "mask": np.asarray(turn.mask).astype(int).tolist(),
                 "action": int(action),
                 "action_name": turn.world.action_names[turn.agent][action],
+                **(extra or {}),
             }
         )
         self._steps += 1
+
+    def end(self, clock: float, tasks_solved: int, rewards: float) -> None:
+        """Close the episode with its totals (what a replay must reproduce)."""
+        self._write(
+            {"type": "end", "clock": float(clock), "tasks_solved": int(tasks_solved), "rewards": float(rewards)}
+        )
 
     def close(self) -> None:
         """Close the file (further writes reopen it, truncating: open a new writer instead)."""
