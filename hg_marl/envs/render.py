@@ -112,13 +112,13 @@ def layout(world: World) -> Layout:
     """The layout of ``world``'s scenario (cached: it depends on the scenario only)."""
     sc = world.scenario
     columns = max(world.n_spots + world.n_bins, len(sc.robot_locations))
-    width = columns * CELL + CELL // 2
+    width = columns * CELL + CELL
     table = Box(CELL // 4, 88, width - CELL // 2, 150)
     spots = tuple(Box(CELL // 2 + i * CELL + 4, 118, CELL - 8, 96) for i in range(world.n_spots))
     bins = tuple(Box(CELL // 2 + (world.n_spots + b) * CELL + 4, 110, CELL - 8, 112) for b in range(world.n_bins))
     n = max(len(sc.robot_locations), 1)
     step = (width - CELL // 2) / n
-    locations = tuple((int(CELL // 4 + step * (i + 0.5)), 296) for i in range(len(sc.robot_locations)))
+    locations = tuple((int(CELL // 4 + step * (i + 0.5)), 280) for i in range(len(sc.robot_locations)))
     return Layout(width, 384, table, spots, bins, locations, (width // 2, 44), 340)
 
 
