@@ -31,6 +31,7 @@ from typing import IO, Any
 import numpy as np
 
 from hg_marl.core import Agent, World
+from hg_marl.core.errors import ConfigError
 from hg_marl.policy import Actor, Turn
 
 FORMAT = "hg_marl.trace"
@@ -52,6 +53,23 @@ class Episode:
     def actions(self) -> list[int]:
         """The recorded action indices."""
         return [int(s["action"]) for s in self.steps]
+
+
+def trace_paths(path: str | Path) -> list[Path]:
+    """A trace file, or every ``*.jsonl`` under a directory (sorted): what ``--traces DIR`` means.
+
+    Raises:
+        ConfigError: a missing path, or a directory without trace files.
+    """
+    path = Path(path)
+    if path.is_dir():
+        files = sorted(path.rglob("*.jsonl"))
+        if not files:
+            raise ConfigError(f"{path}: no *.jsonl trace files in this directory")
+        return files
+    if not path.exists():
+        raise ConfigError(f"{path}: no such trace file or directory")
+    return [path]
 
 
 def read_trace(path: str | Path) -> list[Episode]:

@@ -44,7 +44,9 @@ def register(app: typer.Typer) -> None:
         resume: Annotated[Path | None, typer.Option(help="Checkpoint zip to continue (keeps its step count).")] = (
             None
         ),
-        traces: Annotated[list[Path] | None, typer.Option("--traces", help="bc: trace file(s) (repeat).")] = None,
+        traces: Annotated[
+            list[Path] | None, typer.Option("--traces", help="bc: trace files or directories (repeat).")
+        ] = None,
         bc_kind: Annotated[str, typer.Option(help="bc: table or linear_softmax.")] = "table",
         tensorboard: Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")] = True,
         progress: Annotated[bool, typer.Option(help="Show a progress bar.")] = True,

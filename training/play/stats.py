@@ -27,8 +27,8 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.humans import make_human
-from hg_marl.agents.humans.trace import Episode, TraceRecorder, read_trace
-from hg_marl.core.errors import ConfigError, HumanError
+from hg_marl.agents.humans.trace import Episode, TraceRecorder, read_trace, trace_paths
+from hg_marl.core.errors import HumanError
 from hg_marl.training.play.session import build_robot
 from hg_marl.training.runner import RunConfig, run
 
@@ -87,22 +87,10 @@ def episode_stats(episode: Episode, who: str | None = None) -> PlayStats:
     )
 
 
-def trace_files(path: Path) -> list[Path]:
-    """A trace file, or every ``*.jsonl`` under a directory (sorted)."""
-    if path.is_dir():
-        files = sorted(path.rglob("*.jsonl"))
-        if not files:
-            raise ConfigError(f"{path}: no *.jsonl trace files in this directory")
-        return files
-    if not path.exists():
-        raise ConfigError(f"{path}: no such trace file or directory")
-    return [path]
-
-
 def load_games(path: Path) -> list[Episode]:
     """Every episode of every trace under ``path``."""
     games: list[Episode] = []
-    for file in trace_files(path):
+    for file in trace_paths(path):
         try:
             games += read_trace(file)
         except (ValueError, KeyError) as exc:
