@@ -187,7 +187,7 @@ def render_rgb(world: World, state: State, caption: str = "") -> np.ndarray:
     draw.text((hx - 15, hy - 6), "human", fill=(20, 20, 20))
     for o, (x, y) in enumerate(lay.objects(world, state)):
         draw.rectangle((x - 9, y - 9, x + 9, y + 9), fill=object_colour(world, o), outline=(0, 0, 0))
-        draw.text((x - 9, y + 10), sc.objects[o], fill=(0, 0, 0))
+        draw.text((x - 9, y + 10), sc.objects[o], fill=(0, 0, 0), stroke_width=2, stroke_fill=(255, 255, 255))
     if state.offer_by >= 0:
         x, y = lay.offer(state)
         draw.rectangle((x - 7, y - 7, x + 7, y + 7), fill=object_colour(world, state.offer_obj), outline=(0, 0, 0))
