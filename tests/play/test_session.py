@@ -139,3 +139,20 @@ def test_terminal_front_end_by_scripted_input(tmp_path: Path) -> None:
     assert "unknown action 'zz'" in text and "robot: take(tape3)" in text
     assert episode.header["meta"]["frontend"] == "terminal" and summary["moves"] == 5
     assert json.loads(Path(str(summary["trace"])).read_text().splitlines()[-1])["type"] == "end"
+
+
+def test_play_command_in_the_terminal_and_bad_robot(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from typer.testing import CliRunner
+
+    from hg_marl.training.cli import app, main
+
+    result = CliRunner().invoke(app, ["play", "--tui", "--record", str(tmp_path), "--player", "cli"], input="1\nq\n")
+    assert result.exit_code == 0, result.output
+    assert "1 moves, 0 tasks" in result.output
+    (trace,) = tmp_path.glob("*.jsonl")
+    (episode,) = read_trace(trace)
+    assert [s["action_name"] for s in episode.steps] == ["pick(tape3)"] and episode.header["meta"]["player"] == "cli"
+    monkeypatch.setattr("sys.argv", ["hg-marl", "play", "--tui", "--robot", "butler"])
+    with pytest.raises(SystemExit) as stop:
+        main()
+    assert stop.value.code == 2
