@@ -9,6 +9,11 @@ one line per turn of the recorded seat::
     {"type": "step", "step": 0, "clock": 0.0, "tasks_solved": 0, "facts": [0, 1, ...],
      "mask": [1, 0, ...], "action": 17, "action_name": "wait"}
 
+A recording of a person adds, in the header's ``meta``, who played (``player``), when
+(``started``, ISO 8601 UTC), the front end and the robot's spec, and on each step line
+the ``response_time`` in wall seconds, and an end line closes the episode with its
+totals: ``{"type": "end", "clock": 93.4, "tasks_solved": 2, "rewards": 2.0}``.
+
 ``facts`` and ``mask`` are the seat's observation (what a learned policy or a person
 sees), ``clock`` the simulated seconds at the turn. The same format holds recordings of
 people playing the human (write them with :class:`TraceWriter`), replayed by
@@ -27,7 +32,7 @@ from typing import IO, Any
 import numpy as np
 
 from hg_marl.core import Agent, World
-from hg_marl.core.errors import ModelFileError
+from hg_marl.core.errors import ConfigError, ModelFileError
 from hg_marl.policy import Actor, Turn
 
 FORMAT = "hg_marl.trace"
@@ -42,6 +47,8 @@ class Episode:
     """The header line (scenario, seed, seat, names, meta)."""
     steps: list[dict[str, Any]] = field(default_factory=list)
     """The step lines, in order."""
+    end: dict[str, Any] = field(default_factory=dict)
+    """The optional end line (final ``clock``, ``tasks_solved``, ``rewards``); empty if absent."""
 
     @property
     def actions(self) -> list[int]:
@@ -88,6 +95,23 @@ MAX_TRACE_BYTES = 1 << 30
 """A trace file may be at most 1 GiB."""
 
 
+def trace_paths(path: str | Path) -> list[Path]:
+    """A trace file, or every ``*.jsonl`` under a directory (sorted): what ``--traces DIR`` means.
+
+    Raises:
+        ConfigError: a missing path, or a directory without trace files.
+    """
+    path = Path(path)
+    if path.is_dir():
+        files = sorted(path.rglob("*.jsonl"))
+        if not files:
+            raise ConfigError(f"{path}: no *.jsonl trace files in this directory")
+        return files
+    if not path.exists():
+        raise ConfigError(f"{path}: no such trace file or directory")
+    return [path]
+
+
 def read_trace(path: str | Path) -> list[Episode]:
     """Parse a trace file into its episodes, checking every line's shape and values.
 
@@ -124,8 +148,12 @@ def read_trace(path: str | Path) -> list[Episode]:
                         raise ModelFileError(f"{at}: step before any header line")
                     _check_step(record, episodes[-1].header, at)
                     episodes[-1].steps.append(record)
+                elif kind == "end" and episodes:
+                    episodes[-1].end = record
                 else:
-                    raise ModelFileError(f"{at}: unknown line type {kind!r} (expected 'header' or 'step')")
+                    raise ModelFileError(
+                        f"{at}: unknown line type {kind!r} (expected 'header', 'step' or 'end' after a header)"
+                    )
         except UnicodeDecodeError:
             raise ModelFileError(f"{path}:{number + 1}: not UTF-8 text") from None
     if not episodes:
@@ -185,8 +213,14 @@ class TraceWriter:
         self.episodes += 1
         self._steps = 0
 
-    def step(self, turn: Turn, action: int) -> None:
-        """Record the seat's observation at ``turn`` and the action it took."""
+    def step(self, turn: Turn, action: int, extra: dict[str, Any] | None = None) -> None:
+        """Record the seat's observation at ``turn`` and the action it took.
+
+        Args:
+            turn: the seat's turn.
+            action: the action taken.
+            extra: further fields of the step line (a person's ``response_time``).
+        """
         self._write(
             {
                 "type": "step",
@@ -197,9 +231,16 @@ class TraceWriter:
                 "mask": np.asarray(turn.mask).astype(int).tolist(),
                 "action": int(action),
                 "action_name": turn.world.action_names[turn.agent][action],
+                **(extra or {}),
             }
         )
         self._steps += 1
+
+    def end(self, clock: float, tasks_solved: int, rewards: float) -> None:
+        """Close the episode with its totals (what a replay must reproduce)."""
+        self._write(
+            {"type": "end", "clock": float(clock), "tasks_solved": int(tasks_solved), "rewards": float(rewards)}
+        )
 
     def close(self) -> None:
         """Close the file (further writes reopen it, truncating: open a new writer instead)."""

@@ -21,7 +21,8 @@ Termination                   episodic (default): at the end of the cycle in whi
                               experiments): the table is re-drawn and play goes on.
 Truncation                    after ``max_cycles`` cycles or when the clock reaches
                               ``time_budget`` simulated seconds.
-Render modes                  ``ansi`` (text), ``rgb_array`` (numpy image); no window, ever.
+Render modes                  ``ansi`` (text), ``rgb_array`` (labelled numpy image); no window,
+                              ever (``human`` is refused with a pointer to ``--video``).
 ============================  =================================================================
 
 Rules. An action whose preconditions fail is legal input: it has no effect, costs the
@@ -55,7 +56,7 @@ from pettingzoo.utils import wrappers
 
 from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Kind, Scenario, State, World
 from hg_marl.core.errors import ConfigError, check_bool, check_finite, check_int
-from hg_marl.envs.render import render_ansi, render_rgb
+from hg_marl.envs.render import HUMAN_MESSAGE, caption_of, render_ansi, render_rgb
 from hg_marl.policy import Turn
 
 _RESET_EVENT = Event("reset", "table", "", "new layout")
@@ -96,6 +97,8 @@ class raw_env(AECEnv):
             durations: override the scenario's action durations.
         """
         super().__init__()
+        if render_mode == "human":
+            raise ValueError(HUMAN_MESSAGE)
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
             raise ValueError(
                 f"render_mode {render_mode!r} is not supported; use one of {self.metadata['render_modes']} or None"
@@ -321,7 +324,8 @@ class raw_env(AECEnv):
             return None
         if self.render_mode == "ansi":
             return render_ansi(self.world, self.world_state, self.clock, self.cycles, self.tasks_solved)
-        return render_rgb(self.world, self.world_state)
+        last = (self._last_actions[0], self._last_actions[1])
+        return render_rgb(self.world, self.world_state, caption_of(self.world, self.clock, self.tasks_solved, last))
 
     def close(self) -> None:
         """Nothing to release: no window is ever opened."""

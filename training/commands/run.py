@@ -36,6 +36,9 @@ def register(app: typer.Typer) -> None:
         robot_param: Annotated[list[str] | None, typer.Option("--robot-param", help="key=value for the robot.")] = None,
         human_param: Annotated[list[str] | None, typer.Option("--human-param", help="key=value for the human.")] = None,
         out: Annotated[Path | None, typer.Option(help="Write the per-decision log (CSV) here.")] = None,
+        video: Annotated[
+            Path | None, typer.Option(help="Write the run as a labelled GIF or MP4 (one frame per cycle).")
+        ] = None,
         list_agents: Annotated[
             bool, typer.Option("--list", help="List robots, criteria and humans, then exit.")
         ] = False,
@@ -67,12 +70,18 @@ def register(app: typer.Typer) -> None:
         the_human = checked(lambda: make_human(spec_with(human, human_param, "--human", "--human-param")))
         config = RunConfig(scenario=scenario, duration=duration, seed=seed)
         load_scenario(scenario)  # a bad scenario fails before the progress bar starts
+        recorder = None
+        if video is not None:
+            from hg_marl.training.video import FrameRecorder, check_video_path
+
+            check_video_path(video)
+            recorder = FrameRecorder(the_robot)
         with tqdm(total=int(duration), unit="sim s", desc=f"{robot} + {human}", leave=False) as bar:
 
             def progress(clock: float) -> None:
                 bar.update(int(min(clock, duration)) - bar.n)
 
-            result = checked(lambda: run(the_robot, the_human, config, on_decision=progress))
+            result = checked(lambda: run(recorder or the_robot, the_human, config, on_decision=progress))
         s = result.summary
         label = f"{robot}({criterion})" if robot == "hybrid" else robot
         typer.echo(f"robot {label} with human {human} on {scenario}, seed {seed}, {duration:.0f} simulated s")
@@ -82,3 +91,8 @@ def register(app: typer.Typer) -> None:
         typer.echo(f"  simulated time   {s['simulated_time']:.1f} s")
         if out is not None:
             typer.echo(f"  log              {result.save(out)}")
+        if recorder is not None and video is not None:
+            from hg_marl.training.video import write_video
+
+            written = write_video(recorder.frames, video)
+            typer.echo(f"  video            {written} ({len(recorder.frames)} frames)")

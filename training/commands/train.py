@@ -66,7 +66,9 @@ def register(app: typer.Typer) -> None:
         resume: Annotated[
             Path | None, typer.Option(help="Checkpoint (.json) to continue: keeps its steps and optimizer state.")
         ] = None,
-        traces: Annotated[list[Path] | None, typer.Option("--traces", help="bc: trace file(s) (repeat).")] = None,
+        traces: Annotated[
+            list[Path] | None, typer.Option("--traces", help="bc: trace files or directories (repeat).")
+        ] = None,
         bc_kind: Annotated[str, typer.Option(help="bc: table or linear_softmax.")] = "table",
         tensorboard: Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")] = default(
             TrainConfig, "tensorboard"
