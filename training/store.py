@@ -49,6 +49,7 @@ import json
 import logging
 import os
 import shutil
+import time
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import asdict, dataclass, field, is_dataclass
 from importlib import resources
@@ -60,6 +61,9 @@ import pandas as pd
 from hg_marl.training.io import atomic_write, write_json
 
 log = logging.getLogger(__name__)
+
+CLAIM_POLL = 0.2
+"""Seconds between looks at a value another process is computing."""
 
 SCHEMA = 1
 """Version of the entry layout; part of every key."""
@@ -307,17 +311,37 @@ class Store:
             os.close(fd)
 
     def cached(self, kind: str, fields: Mapping[str, Any], compute: Callable[[], Any]) -> Any:
-        """A JSON result of ``kind`` keyed by ``fields``: read from the store or computed and stored."""
+        """A JSON result of ``kind`` keyed by ``fields``: read from the store, or computed once and stored.
+
+        The computation runs under the key's claim, so two processes asking for the same
+        value compute it once (the second waits for the first's result).
+        """
         key = content_key(kind, fields)
         path = self.root / "cached" / kind / f"{key}.json"
-        if path.is_file():
-            try:
-                data = json.loads(path.read_text())
-                if isinstance(data, dict) and data.get("key") == key and "value" in data:
-                    return data["value"]
-            except (OSError, UnicodeDecodeError, json.JSONDecodeError):
-                pass
-            log.warning("store: cached %s %s is corrupt; computing it again", kind, key[:12])
-        value = compute()
-        write_json(path, {"key": key, "kind": kind, "fields": dict(fields), "value": value})
-        return value
+        while True:
+            found = self._read_cached(path, key)
+            if found is not None:
+                return found[0]
+            with self.claim(key) as held:
+                if held:
+                    found = self._read_cached(path, key, repair=True)
+                    if found is not None:
+                        return found[0]
+                    value = compute()
+                    write_json(path, {"key": key, "kind": kind, "fields": dict(fields), "value": value})
+                    return value
+            time.sleep(CLAIM_POLL)
+
+    def _read_cached(self, path: Path, key: str, repair: bool = False) -> tuple[Any] | None:
+        if not path.is_file():
+            return None
+        try:
+            data = json.loads(path.read_text())
+            if isinstance(data, dict) and data.get("key") == key and "value" in data:
+                return (data["value"],)
+        except (OSError, UnicodeDecodeError, json.JSONDecodeError):
+            pass
+        if repair:
+            log.warning("store: cached %s %s is corrupt; computing it again", path.parent.name, key[:12])
+            path.unlink(missing_ok=True)
+        return None
