@@ -39,7 +39,13 @@ def execute(job: Job) -> Any:
     from hg_marl.agents.robots import make_robot
     from hg_marl.training.runner import RunConfig, run
 
-    robot = make_robot(job.robot, **job.robot_params)
+    if job.robot == "oracle":  # the optimal policy against this very human (stationary humans only)
+        from hg_marl.agents.oracle import OracleRobot
+        from hg_marl.core.spec import format_spec
+
+        robot: Any = OracleRobot(human=format_spec(job.human, job.human_params))
+    else:
+        robot = make_robot(job.robot, **job.robot_params)
     human = make_human(job.human, **job.human_params)
     config = RunConfig(
         scenario=job.scenario, duration=job.duration, seed=job.seed, charge_decision_time=job.charge_decision_time

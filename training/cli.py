@@ -12,7 +12,7 @@ import logging
 
 import typer
 
-COMMANDS = ("run", "plan", "oracle", "reproduce", "train", "compare")
+COMMANDS = ("run", "plan", "oracle", "reproduce", "train", "compare", "evaluate")
 """Subcommand modules, in the order ``--help`` lists them."""
 
 app = typer.Typer(
