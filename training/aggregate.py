@@ -13,8 +13,9 @@ shapes the score table into its matrices.
 
 from __future__ import annotations
 
+import contextlib
 import warnings
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from itertools import combinations
 from typing import Any
 
@@ -23,6 +24,9 @@ import pandas as pd
 
 REPS = 2000
 """Bootstrap replications of every interval."""
+POI_REPS = 200
+"""Replications of each probability-of-improvement interval (a Mann-Whitney U per task per
+replication: the costly one, ~20 pairs x 7 humans in the cross-play study)."""
 SEED = 0
 """Seed of the bootstrap's RandomState."""
 
@@ -54,10 +58,26 @@ def _interval(
 ) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray]]:
     from rliable import library as rly
 
-    with warnings.catch_warnings():
+    with warnings.catch_warnings(), _seeded_global_rng():
         # arch announces that RandomState is deprecated; rliable 1.2 still passes one, which is what we want
         warnings.filterwarnings("ignore", category=FutureWarning, module="arch")
         return rly.get_interval_estimates(data, func, reps=reps, random_state=np.random.RandomState(SEED))
+
+
+@contextlib.contextmanager
+def _seeded_global_rng() -> Iterator[None]:
+    """Seed numpy's global generator for the block, then put its state back.
+
+    rliable 1.2's stratified bootstrap draws its indices with ``np.random.choice`` (the
+    global generator) whatever ``random_state`` it is given, so without this the
+    intervals would change from call to call.
+    """
+    state = np.random.get_state()
+    np.random.seed(SEED)
+    try:
+        yield
+    finally:
+        np.random.set_state(state)
 
 
 def iqm_and_mean(scores: np.ndarray) -> np.ndarray:
@@ -67,13 +87,16 @@ def iqm_and_mean(scores: np.ndarray) -> np.ndarray:
     return np.array([metrics.aggregate_iqm(scores), metrics.aggregate_mean(scores)])
 
 
-def aggregate(frame: pd.DataFrame, groups: dict[str, str] | None = None, reps: int = REPS) -> dict[str, Any]:
+def aggregate(
+    frame: pd.DataFrame, groups: dict[str, str] | None = None, reps: int = REPS, poi_reps: int = POI_REPS
+) -> dict[str, Any]:
     """``aggregate.json``: per robot IQM/mean with CIs, pairwise improvement, generalisation gap.
 
     Args:
         frame: the score table (``scores.csv``'s columns).
         groups: partner label -> ``train``/``test`` (held-out studies), else None.
-        reps: bootstrap replications.
+        reps: bootstrap replications of the IQM, mean and gap intervals.
+        poi_reps: bootstrap replications of the probability-of-improvement intervals.
     """
     from rliable import metrics
 
@@ -81,7 +104,11 @@ def aggregate(frame: pd.DataFrame, groups: dict[str, str] | None = None, reps: i
     matrices = {r: score_matrix(frame, r) for r in robots}
     matrices = {r: m for r, m in matrices.items() if m.size}
     point, ci = _interval(matrices, iqm_and_mean, reps) if matrices else ({}, {})
-    out: dict[str, Any] = {"robots": {}, "improvement": {}, "bootstrap": {"reps": reps, "seed": SEED, "ci": 0.95}}
+    out: dict[str, Any] = {
+        "robots": {},
+        "improvement": {},
+        "bootstrap": {"reps": reps, "poi_reps": poi_reps, "seed": SEED, "ci": 0.95},
+    }
     for r in robots:
         if r not in matrices:
             out["robots"][r] = {"iqm": None, "iqm_ci": None, "mean": None, "mean_ci": None, "runs": 0}
@@ -100,9 +127,7 @@ def aggregate(frame: pd.DataFrame, groups: dict[str, str] | None = None, reps: i
         if common:
             pairs[f"{a}>{b}"] = [score_matrix(frame, a, common), score_matrix(frame, b, common)]
     if pairs:
-        p_point, p_ci = _interval(
-            pairs, lambda x, y: np.array([metrics.probability_of_improvement(x, y)]), max(reps // 4, 100)
-        )
+        p_point, p_ci = _interval(pairs, lambda x, y: np.array([metrics.probability_of_improvement(x, y)]), poi_reps)
         for name in pairs:
             low, high = p_ci[name][:, 0]
             out["improvement"][name] = {"p": float(p_point[name][0]), "ci": [float(low), float(high)]}
@@ -147,11 +172,11 @@ Curves = dict[str, np.ndarray]
 def profiles(frame: pd.DataFrame, taus: np.ndarray, reps: int = 200) -> tuple[Curves, Curves]:
     """Performance profiles (fraction of runs with score > tau) and their CIs, per robot (rliable).
 
-    rliable's profile function takes no random state, so the bands (figure only, never
-    in ``aggregate.json``) may move slightly between calls; the profiles themselves do not.
+    The bands come from a bootstrap seeded like every interval here.
     """
     from rliable import library as rly
 
     matrices = {r: score_matrix(frame, r) for r in dict.fromkeys(frame["robot"])}
     matrices = {r: m for r, m in matrices.items() if m.size}
-    return rly.create_performance_profile(matrices, taus, reps=reps)
+    with _seeded_global_rng():
+        return rly.create_performance_profile(matrices, taus, reps=reps)

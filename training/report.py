@@ -134,7 +134,8 @@ def markdown(study: Study, frame: pd.DataFrame, agg: dict[str, Any], stats: dict
         f"({stats['ran']} run now, {stats['reused']} reused from the store). Score = tasks per hour / the "
         "reference rate of that human and scenario (the oracle's optimum, or where it cannot be computed the "
         "best robot's mean rate: see the reference table). Intervals: 95% stratified bootstrap over seeds "
-        f"within each (human, scenario), {agg['bootstrap']['reps']} replications (rliable).",
+        f"within each (human, scenario), {agg['bootstrap']['reps']} replications "
+        f"({agg['bootstrap']['poi_reps']} for the probability of improvement; rliable).",
         "",
         "## Per robot",
         "",
