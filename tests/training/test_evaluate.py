@@ -163,3 +163,11 @@ def test_cli_evaluate_runs_and_reports(tmp_path: Path) -> None:
     result = CliRunner().invoke(app, ["evaluate", str(TINY), "--out", str(tmp_path), "--seeds", "1", "--workers", "1"])
     assert result.exit_code == 0, result.output
     assert "planner" in result.output and (tmp_path / "report.md").is_file()
+
+
+@pytest.mark.parametrize("name", ["crossplay", "heldout"])
+def test_bundled_studies_are_valid(name: str) -> None:
+    study = load_study(Path(__file__).parents[2] / "studies" / f"{name}.toml")
+    assert study.robots and study.humans and len(study.seeds) >= 5
+    if name == "heldout":
+        assert study.train and study.test and not set(study.train) & set(study.test)
