@@ -17,6 +17,7 @@ gives byte-identical results on every backend and any number of workers.
 from __future__ import annotations
 
 import ctypes
+import functools
 import multiprocessing
 import os
 import signal
@@ -43,7 +44,8 @@ def execute(job: Job) -> Any:
         from hg_marl.agents.oracle import OracleRobot
         from hg_marl.core.spec import format_spec
 
-        robot: Any = OracleRobot(human=format_spec(job.human, job.human_params))
+        human_spec = format_spec(job.human, job.human_params)
+        robot: Any = OracleRobot(_oracle_policy(job.scenario, human_spec), human=human_spec)
     else:
         robot = make_robot(job.robot, **job.robot_params)
     human = make_human(job.human, **job.human_params)
@@ -51,6 +53,14 @@ def execute(job: Job) -> Any:
         scenario=job.scenario, duration=job.duration, seed=job.seed, charge_decision_time=job.charge_decision_time
     )
     return run(robot, human, config)
+
+
+@functools.lru_cache(maxsize=16)
+def _oracle_policy(scenario: str, human: str) -> Any:
+    """The oracle's solution, solved once per worker process (every seed of a cell shares it)."""
+    from hg_marl.agents.oracle import oracle_rate
+
+    return oracle_rate(scenario, human)
 
 
 class Backend(Protocol):

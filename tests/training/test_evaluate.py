@@ -171,3 +171,13 @@ def test_bundled_studies_are_valid(name: str) -> None:
     assert study.robots and study.humans and len(study.seeds) >= 5
     if name == "heldout":
         assert study.train and study.test and not set(study.train) & set(study.test)
+
+
+def test_readme_quick_look_command_runs(tmp_path: Path) -> None:
+    # The README's quick look: the bundled cross-play study narrowed to one seed, robot and human.
+    study = Path(__file__).parents[2] / "studies" / "crossplay.toml"
+    args = ["evaluate", str(study), "--out", str(tmp_path), "--seeds", "1", "--robots", "planner,habit"]
+    result = CliRunner().invoke(app, [*args, "--humans", "lazy", "--workers", "1"])
+    assert result.exit_code == 0, result.output
+    frame = pd.read_csv(tmp_path / "scores.csv")
+    assert list(frame["robot"]) == ["planner", "habit"] and set(frame["human"]) == {"lazy"}
