@@ -133,6 +133,9 @@ def score_table(study: Study, plan: list[Cell], runs: list[StoredRun], store: St
             if rate is not None and rate > 0:
                 refs[(human.label, scenario)] = Reference(rate, "oracle")
                 continue
+            if rate == 0:  # the oracle proves that no robot can solve a task with this human
+                refs[(human.label, scenario)] = Reference(None, "oracle: 0 tasks/h, no score")
+                continue
             mine = frame[(frame["human"] == human.label) & (frame["scenario"] == scenario)]
             means = mine[mine["robot"] != ORACLE].groupby("robot", sort=False)["rate"].mean()
             if len(means) and means.max() > 0:
