@@ -6,8 +6,8 @@
 Each backend runs the same study into a fresh store (nothing reused), so the figures are
 directly comparable: the in-process run (1 worker) is the reference measured in the same
 run. ``--ray`` starts a local cluster the way a user would (``ray start --head``, here
-with ``--block`` in its own process group, ended by this script) and joins it by its
-address, as ``--address`` does. ``--big`` adds the wall time of a 1,000-cell study on the 2-worker pool.
+with ``--block`` in its own process group, ended by this script) and joins it with
+``address="auto"``, as ``--address auto`` does. ``--big`` adds the wall time of a 1,000-cell study on the 2-worker pool.
 Scores are checked identical across backends before any figure is printed.
 """
 
@@ -43,12 +43,14 @@ def study_file(folder: Path, seeds: int, duration: float) -> Path:
     return path
 
 
-def measure(path: Path, make: Callable[[], Backend], out: Path) -> tuple[float, int, str]:
-    """Wall seconds, cells, and the scores table of one run of the study."""
+def measure(path: Path, make: Callable[[], Backend], out: Path) -> tuple[float, float, int, str]:
+    """Seconds until the last cell finished, seconds of the whole study (oracle solves,
+    aggregates, figures included), cells, and the scores table of one run of the study."""
     study = load_study(path)
+    last = [0.0]
     start = time.perf_counter()
-    evaluate(study, out, make())
-    return time.perf_counter() - start, len(cells(study)), (out / "scores.csv").read_text()
+    evaluate(study, out, make(), on_done=lambda job, run: last.__setitem__(0, time.perf_counter()))
+    return last[0] - start, time.perf_counter() - start, len(cells(study)), (out / "scores.csv").read_text()
 
 
 RAY_PORT = 6391
@@ -59,17 +61,40 @@ def start_ray_head(cpus: int) -> subprocess.Popen[bytes]:
     """``ray start --head --block`` in its own process group (so it can be ended alone), once it answers."""
     ray_bin = str(Path(sys.executable).with_name("ray"))
     proc = subprocess.Popen(
-        [ray_bin, "start", "--head", "--block", f"--num-cpus={cpus}", "--disable-usage-stats", f"--port={RAY_PORT}"],
+        [
+            ray_bin,
+            "start",
+            "--head",
+            "--block",
+            f"--num-cpus={cpus}",
+            "--disable-usage-stats",
+            "--include-dashboard=false",
+            f"--port={RAY_PORT}",
+        ],
         start_new_session=True,
         stdout=subprocess.DEVNULL,
         stderr=subprocess.DEVNULL,
     )
     deadline = time.monotonic() + 120
-    while subprocess.run([ray_bin, "status", f"--address=127.0.0.1:{RAY_PORT}"], capture_output=True).returncode:
+    while subprocess.run([ray_bin, "status", "--address=auto"], capture_output=True).returncode:
         if proc.poll() is not None or time.monotonic() > deadline:
+            stop_ray_head(proc)
             raise SystemExit("ray start --head did not come up")
         time.sleep(1.0)
     return proc
+
+
+def stop_ray_head(proc: subprocess.Popen[bytes]) -> None:
+    """End the head and every process it started (its process group)."""
+    try:
+        os.killpg(proc.pid, signal.SIGTERM)
+    except ProcessLookupError:
+        return
+    try:
+        proc.wait(timeout=60)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait()
 
 
 def main() -> None:
@@ -83,42 +108,43 @@ def main() -> None:
     root = Path(tempfile.mkdtemp(prefix="hg_marl_bench_"))
     try:
         path = study_file(root, args.seeds, args.duration)
-        rows: list[tuple[str, float, int]] = []
+        rows: list[tuple[str, float, float, int]] = []
         reference: str | None = None
         backends: list[tuple[str, Callable[[], Backend]]] = [
             ("local, 1 worker (in-process)", lambda: LocalBackend(1)),
             ("local, 2 workers", lambda: LocalBackend(2)),
         ]
-        head = None
         if args.ray:
             from hg_marl.training.backends import RayBackend
 
-            head = start_ray_head(2)
-            backends.append(("ray, local cluster (2 CPUs)", lambda: RayBackend(address=f"127.0.0.1:{RAY_PORT}")))
+            backends.append(("ray, local cluster (2 CPUs)", lambda: RayBackend(address="auto")))
+        head = None
         try:
             for i, (name, make) in enumerate(backends):
-                seconds, n, scores = measure(path, make, root / f"out{i}")
+                if name.startswith("ray"):
+                    head = start_ray_head(2)
+                runs, total, n, scores = measure(path, make, root / f"out{i}")
                 if reference is not None and scores != reference:
                     raise SystemExit(f"{name}: scores differ from the in-process run")
                 reference = scores
-                rows.append((name, seconds, n))
-                print(f"{name:<32}{n:>6} cells {seconds:>8.1f} s {n / seconds:>8.2f} cells/s", flush=True)
+                rows.append((name, runs, total, n))
+                print(f"{name:<32}{n:>5} cells: runs {runs:>6.1f} s, whole study {total:>6.1f} s", flush=True)
         finally:
             if head is not None:
                 import ray
 
                 ray.shutdown()
-                os.killpg(head.pid, signal.SIGTERM)
-                head.wait(timeout=60)
-        base = rows[0][2] / rows[0][1]
+                stop_ray_head(head)
+        base = rows[0][3] / rows[0][1]
         print(f"\nstudy: 2 robots x 2 humans x {args.seeds} seeds, {args.duration:.0f} simulated s per cell")
-        print(f"{'backend':<32}{'cells/s':>10}{'vs in-process':>15}")
-        for name, seconds, n in rows:
-            print(f"{name:<32}{n / seconds:>10.2f}{(n / seconds) / base:>14.2f}x")
+        print(f"{'backend':<32}{'cells/s (runs)':>15}{'vs in-process':>15}{'cells/s (study)':>17}")
+        for name, runs, total, n in rows:
+            print(f"{name:<32}{n / runs:>15.2f}{(n / runs) / base:>14.2f}x{n / total:>17.2f}")
         if args.big:
             big = study_file(root, 250, 60.0)
-            seconds, n, _ = measure(big, lambda: LocalBackend(2), root / "big")
-            print(f"\n{n}-cell study (60 simulated s per cell), local 2 workers: {seconds:.1f} s wall")
+            runs, total, n, _ = measure(big, lambda: LocalBackend(2), root / "big")
+            print(f"\n{n}-cell study (60 simulated s per cell), local 2 workers: {total:.1f} s wall")
+            print(f"  of which runs {runs:.1f} s ({n / runs:.2f} cells/s)")
     finally:
         shutil.rmtree(root, ignore_errors=True)
 
