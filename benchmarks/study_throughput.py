@@ -76,7 +76,8 @@ def start_ray_head(cpus: int) -> subprocess.Popen[bytes]:
         stderr=subprocess.DEVNULL,
     )
     deadline = time.monotonic() + 120
-    while subprocess.run([ray_bin, "status", "--address=auto"], capture_output=True).returncode:
+    probe = [sys.executable, "-c", "import ray; ray.init(address='auto', log_to_driver=False); ray.shutdown()"]
+    while subprocess.run(probe, capture_output=True).returncode:
         if proc.poll() is not None or time.monotonic() > deadline:
             stop_ray_head(proc)
             raise SystemExit("ray start --head did not come up")
