@@ -8,6 +8,8 @@ from typing import Annotated, Any
 
 import typer
 
+from hg_marl.training.commands.common import check_duration
+
 
 def register(app: typer.Typer) -> None:
     """Add the ``reproduce`` subcommand."""
@@ -38,7 +40,7 @@ def register(app: typer.Typer) -> None:
         config = ReproduceConfig(
             out=out,
             seeds=seeds,
-            duration=duration or paper.DEFAULT_DURATION,
+            duration=paper.DEFAULT_DURATION if duration is None else check_duration(duration),
             scenario=scenario,
             paper_only=paper_only,
             adaptation=adaptation,
