@@ -7,7 +7,9 @@ BIN := $(VENV)/bin
 OUT ?= results/paper2015
 PYTEST_ARGS ?=
 
-.PHONY: setup reproduce test test-slow test-browser lint bench clean
+RAY_VENV ?= .venv-ray
+
+.PHONY: setup reproduce test test-slow test-browser test-ray lint bench clean
 
 $(BIN)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -34,6 +36,16 @@ test-browser: setup
 	mkdir -p artifacts
 	HG_MARL_BROWSER_REQUIRED=1 $(BIN)/python -m pytest -m browser $(PYTEST_ARGS)
 
+# Ray may pull other versions of shared dependencies, so it gets its own environment.
+$(RAY_VENV)/bin/.installed: pyproject.toml
+	$(PYTHON) -m venv $(RAY_VENV)
+	$(RAY_VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(RAY_VENV)/bin/python -m pip install --quiet -e ".[dev,ray]"
+	touch $@
+
+test-ray: $(RAY_VENV)/bin/.installed
+	HG_MARL_RAY_STAGE=1 $(RAY_VENV)/bin/python -m pytest -m ray tests/training/test_ray.py $(PYTEST_ARGS)
+
 lint: setup
 	$(BIN)/ruff check .
 	$(BIN)/mypy
@@ -44,4 +56,4 @@ bench: setup
 	$(BIN)/python benchmarks/decision_latency.py
 
 clean:
-	rm -rf $(VENV) results .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) $(RAY_VENV) results .pytest_cache .mypy_cache .ruff_cache
