@@ -25,7 +25,7 @@ from hg_marl.agents.habit import QLearner, QLearnerConfig, sample, softmax
 from hg_marl.agents.meta.base import PlanProposal, planner_distribution
 from hg_marl.agents.meta.cost import CostModel
 from hg_marl.core import WAIT, Agent, World
-from hg_marl.policy import Turn
+from hg_marl.policy import Decision, Turn
 
 
 class Robot(ABC):
@@ -40,8 +40,8 @@ class Robot(ABC):
 
     def __init__(self, cost: CostModel | None = None) -> None:
         self.cost = cost or CostModel()
-        self.last_decision: dict[str, Any] = {}
-        """Record of the last decision (see the package docstring for the keys)."""
+        self.last_decision: Decision | None = None
+        """Record of the last decision (None before the first)."""
         self.rng = np.random.default_rng(0)
         self.world: World | None = None
         self.agent = Agent.ROBOT
@@ -51,7 +51,7 @@ class Robot(ABC):
         """Start a run on ``world`` in seat ``agent``; ``rng`` is now this robot's."""
         self.world, self.agent, self.rng = world, agent, rng
         self.n_actions = world.n_actions(agent)
-        self.last_decision = {}
+        self.last_decision = None
         self._reset(world)
 
     def _reset(self, world: World) -> None:  # noqa: B027 (optional hook)
@@ -65,19 +65,8 @@ class Robot(ABC):
         """The run or episode is over; learners take their last TD step (see module docstring)."""
 
     def _record(self, expert: str, action: int, **fields: Any) -> None:
-        rec: dict[str, Any] = {
-            "expert": expert,
-            "action": int(action),
-            "planner_action": -1,
-            "habit_action": -1,
-            "planning_time": 0.0,
-            "planner_nodes": 0,
-            "planner_success": False,
-            "decision_time": 0.0,
-            "expected_human_action": -1,
-        }
-        rec.update(fields)
-        self.last_decision = rec
+        """Keep this decision's :class:`~hg_marl.policy.Decision` (unnamed fields keep their defaults)."""
+        self.last_decision = Decision(expert=expert, action=int(action), **fields)
 
 
 class LearningRobot(Robot):

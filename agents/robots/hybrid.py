@@ -99,7 +99,7 @@ class HybridRobot(LearningRobot):
             expected_human_action=prop.human_action if prop is not None else -1,
             weight_amplitude=habit.weight_amplitude,
             reason=decision.reason,
-            **{f"meta_{k}": v for k, v in decision.stats.items()},
+            stats=tuple((k, float(v)) for k, v in decision.stats.items()),
         )
         return decision.action
 

@@ -48,7 +48,8 @@ class PlannerRobot(Robot):
             planner_nodes=prop.nodes,
             planner_success=prop.success,
             decision_time=prop.cost,
+            planner_consulted=True,
             expected_human_action=prop.human_action,
-            planner_reason=str(result.reason),
+            reason=str(result.reason),
         )
         return prop.action
