@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from hg_marl.training.paper import FURTHER_CRITERIA, FURTHER_HABIT
+from hg_marl.training.paper import FURTHER_CRITERIA, PAPER_HABIT
 from hg_marl.training.sweep import Job, load_log, run_sweep
 
 DURATION = 2400.0
@@ -35,8 +35,8 @@ NEW_HUMANS = ("no_handover", "lazy")
 ROBOTS: dict[str, tuple[str, dict[str, Any]]] = {
     "planner": ("planner", {}),
     "habit": ("habit", {}),
-    "random": ("hybrid", {"criterion": "random"}),
-    **{c: ("hybrid", {"criterion": c, "q_config": dict(FURTHER_HABIT)}) for c in FURTHER_CRITERIA},
+    "random": ("hybrid", {"criterion": "random", "q_config": dict(PAPER_HABIT)}),
+    **{c: ("hybrid", {"criterion": c}) for c in FURTHER_CRITERIA},
 }
 """Robots compared."""
 

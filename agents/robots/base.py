@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import time
 from abc import ABC, abstractmethod
+from dataclasses import replace
 from typing import Any, ClassVar
 
 import numpy as np
@@ -74,8 +75,9 @@ class LearningRobot(Robot):
 
     Args:
         q_config: the Q-learner's hyper-parameters (used when ``learner`` is None): a
-            :class:`QLearnerConfig` or a plain dict of its fields, e.g.
-            ``{"features": "tabular"}`` (so sweeps and the CLI can pass it as JSON).
+            :class:`QLearnerConfig`, or a plain dict of the fields that differ from
+            :attr:`default_habit`, e.g. ``{"features": "facts"}`` (so sweeps and the CLI
+            can pass it as JSON).
         learner: an existing Q-learner to use and keep across resets (to continue
             training or evaluate a saved habit). When None, each :meth:`reset` starts a
             fresh, zero-weight learner, as each of the paper's runs does.
@@ -85,6 +87,8 @@ class LearningRobot(Robot):
 
     _prev: tuple[np.ndarray, int] | None
     """The previous turn's (facts, executed action), pending its TD step."""
+    default_habit: ClassVar[QLearnerConfig] = QLearnerConfig()
+    """The habit's configuration when ``q_config`` is None; a dict ``q_config`` overrides its fields."""
 
     def __init__(
         self,
@@ -96,10 +100,10 @@ class LearningRobot(Robot):
         super().__init__(cost)
         if isinstance(q_config, dict):
             try:
-                q_config = QLearnerConfig(**q_config)
+                q_config = replace(self.default_habit, **q_config)
             except TypeError as exc:
                 raise ValueError(f"bad q_config {q_config!r}: {exc}") from None
-        self.q_config = q_config or QLearnerConfig()
+        self.q_config = q_config or self.default_habit
         self._given_learner = learner
         self.learner = learner
         self.learn = learn
@@ -182,6 +186,17 @@ def plan_proposal(result: Any, n_actions: int, agent: Agent, cost: CostModel) ->
         nodes=int(result.nodes),
         human_action=int(result.human_action) if success else -1,
     )
+
+
+def stall_move(turn: Turn, rng: np.random.Generator) -> int:
+    """A feasible move other than ``wait``, drawn uniformly: the way out of a stall.
+
+    A partner who waits for the robot to leave (or to do anything else) gets a new
+    situation; ``wait`` is returned only when nothing else is feasible.
+    """
+    wait = wait_index(turn.world, turn.agent)
+    moves = [int(i) for i in np.flatnonzero(turn.mask) if i != wait]
+    return moves[int(rng.integers(len(moves)))] if moves else wait
 
 
 def wait_index(world: World, agent: Agent) -> int:

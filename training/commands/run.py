@@ -18,7 +18,9 @@ def register(app: typer.Typer) -> None:
         robot: Annotated[
             str, typer.Option(help="Robot agent: planner, habit, hybrid, random, sb3, oracle.")
         ] = "hybrid",
-        criterion: Annotated[str, typer.Option(help="MetaController criterion (hybrid robot only).")] = "random",
+        criterion: Annotated[
+            str, typer.Option(help="MetaController criterion (hybrid robot only).")
+        ] = "entropy_and_cost",
         human: Annotated[str, typer.Option(help="Human partner (see `hg-marl run --list`).")] = "cooperative",
         scenario: Annotated[
             str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml path.")
