@@ -42,7 +42,7 @@ class LearningStateCriterion(Criterion):
 
     name = "learning_state"
 
-    def __init__(self, threshold: float = 0.05, min_visits: int = DEFAULT_MIN_VISITS) -> None:
+    def __init__(self, threshold: float = 0.5, min_visits: int = DEFAULT_MIN_VISITS) -> None:
         super().__init__()
         self.threshold = check_positive("learning_state.threshold", threshold, allow_zero=False)
         self.min_visits = check_count("learning_state.min_visits", min_visits)

@@ -200,7 +200,7 @@ def test_vpi_threshold_follows_reward_rate() -> None:
 
 
 def test_learning_state_switches_once_the_state_settles() -> None:
-    mc = controller("learning_state", threshold=0.05, min_visits=5)
+    mc = controller("learning_state", threshold=0.05, min_visits=5)  # explicit: not the default
     settled, moving = np.full(N, 0.01), np.full(N, 0.2)
     assert mc.decide(view(sd=moving), plan()).expert is Expert.PLANNER  # still learning here
     assert mc.decide(view(sd=settled, visits=4), plan()).expert is Expert.PLANNER  # too few visits
@@ -213,7 +213,7 @@ def test_learning_state_ignores_the_global_amplitude() -> None:
     """The defect it had: a growing weight amplitude read as "settled" everywhere."""
     mc = controller("learning_state")
     for t in range(2000):
-        decision = mc.decide(view(amplitude=float(t), sd=np.full(N, 0.3), visits=t), plan())
+        decision = mc.decide(view(amplitude=float(t), sd=np.full(N, 0.7), visits=t), plan())
         assert decision.expert is Expert.PLANNER
 
 
