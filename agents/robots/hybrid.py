@@ -25,6 +25,7 @@ from hg_marl.agents.meta.cost import CostModel
 from hg_marl.agents.robots.base import LearningRobot, plan_proposal
 from hg_marl.agents.robots.partnering import Partnering
 from hg_marl.core import State, World
+from hg_marl.core.errors import RobotError, check_bool
 from hg_marl.policy import Turn
 
 
@@ -65,7 +66,7 @@ class HybridRobot(LearningRobot):
         self.meta = MetaController(criterion, **(criterion_params or {}))
         self.planner_config = planner_config
         self.human_model = human_model
-        self.partner_aware = bool(partner_aware)
+        self.partner_aware = check_bool(partner_aware, f"{self.name}.partner_aware", RobotError)
         self.planner: Any = None
         self.partnering: Any = None
 

@@ -20,6 +20,7 @@ from hg_marl.agents.meta.cost import CostModel
 from hg_marl.agents.robots.base import Robot, plan_proposal, stall_move
 from hg_marl.agents.robots.partnering import Partnering
 from hg_marl.core import World
+from hg_marl.core.errors import RobotError, check_bool
 from hg_marl.policy import Turn
 
 
@@ -46,7 +47,7 @@ class PlannerRobot(Robot):
         super().__init__(cost)
         self.planner_config = planner_config
         self.human_model = human_model
-        self.partner_aware = bool(partner_aware)
+        self.partner_aware = check_bool(partner_aware, f"{self.name}.partner_aware", RobotError)
         self.planner: Any = None
         self.partnering: Any = None
 

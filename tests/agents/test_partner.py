@@ -12,6 +12,7 @@ from hg_marl.agents.humans import make_human
 from hg_marl.agents.partner import PartnerMonitor, PartnerPosterior
 from hg_marl.agents.robots import make_robot
 from hg_marl.core import WAIT, Agent, Kind, World
+from hg_marl.core.errors import RobotError
 from hg_marl.training.runner import RunConfig, run
 from tests.agents.partners import PARTNERS
 
@@ -128,3 +129,9 @@ def test_no_livelock_with_adversarial_partners(name: str, params: dict[str, Any]
 @pytest.mark.parametrize("name, params", SLOW, ids=_id)
 def test_no_livelock_with_adversarial_partners_all_robots(name: str, params: dict[str, Any], partner: str) -> None:
     assert _tasks_in_second_half(name, params, partner) > 0
+
+
+@pytest.mark.parametrize("name", ["planner", "hybrid"])
+def test_partner_aware_must_be_a_bool(name: str) -> None:
+    with pytest.raises(RobotError, match=rf"{name}\.partner_aware: expected true or false, got 'yes'"):
+        make_robot(name, partner_aware="yes")
