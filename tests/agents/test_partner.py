@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+from partners import PARTNERS
 
 from hg_marl.agents.humans import make_human
 from hg_marl.agents.partner import PartnerMonitor, PartnerPosterior
@@ -14,7 +15,6 @@ from hg_marl.agents.robots import make_robot
 from hg_marl.core import WAIT, Agent, Kind, World
 from hg_marl.core.errors import RobotError
 from hg_marl.training.runner import RunConfig, run
-from tests.agents.partners import PARTNERS
 
 
 @pytest.fixture(scope="module")
