@@ -30,7 +30,7 @@ DURATION = 1500.0
 """Simulated seconds per adaptation run."""
 SWITCH_AT = 600.0
 """When the human first changes."""
-WINDOW = 120.0
+WINDOW = 300.0
 """Trailing window (simulated seconds) of the plotted reward rates (not used by the metrics)."""
 
 
