@@ -31,7 +31,7 @@ DEFAULT_MIN_VISITS = 5
 learning_state): the best measured setting (README, Results)."""
 
 PLANNER_EPSILON = 0.01
-"""Probability the planner's distribution puts on each non-planned action (DESIGN.md 4)."""
+"""Probability the planner's distribution puts on each non-planned action (docs/task.md, section 4)."""
 
 
 class Expert(StrEnum):
