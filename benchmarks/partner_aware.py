@@ -5,6 +5,10 @@ difference with its 95% bootstrap CI (the README's partner-aware table):
 ``python benchmarks/partner_aware.py``.
 """
 
+from __future__ import annotations
+
+from typing import Any
+
 import numpy as np
 
 from hg_marl.agents.humans import make_human
@@ -12,33 +16,42 @@ from hg_marl.agents.robots import make_robot
 from hg_marl.training.regret import bootstrap_ci
 from hg_marl.training.runner import RunConfig, run
 
-HUMANS = {
+SWITCHING = {"humans": ["cooperative", "lazy", "no_handover"], "at": [400.0, 750.0], "by": "time"}
+HUMANS: dict[str, tuple[str, dict[str, Any]]] = {
     "cooperative": ("cooperative", {}),
     "lazy": ("lazy", {}),
     "no_handover": ("no_handover", {}),
     "noisy": ("noisy", {}),
-    "switching": ("switching", {"humans": ["cooperative", "lazy", "no_handover"], "at": [400.0, 750.0], "by": "time"}),
+    "switching": ("switching", SWITCHING),
 }
-ROBOTS = {
+ROBOTS: dict[str, tuple[str, dict[str, Any]]] = {
     "planner": ("planner", {}),
     "planner_pa": ("planner", {"partner_aware": True}),
     "hybrid": ("hybrid", {}),
     "hybrid_pa": ("hybrid", {"partner_aware": True}),
 }
-for h, (hn, hp) in HUMANS.items():
-    res = {}
-    for r, (rn, rp) in ROBOTS.items():
-        res[r] = np.array(
-            [
-                run(make_robot(rn, **rp), make_human(hn, **hp), RunConfig(duration=1100, seed=s)).summary[
-                    "tasks_solved"
-                ]
-                for s in range(10)
-            ],
-            float,
+
+
+def tasks(robot: tuple[str, dict[str, Any]], human: tuple[str, dict[str, Any]], seeds: int = 10) -> np.ndarray:
+    """Tasks solved in each seed's 1100 s run."""
+    out = []
+    for seed in range(seeds):
+        result = run(
+            make_robot(robot[0], **robot[1]), make_human(human[0], **human[1]), RunConfig(duration=1100.0, seed=seed)
         )
-    line = f"{h:12s} " + " ".join(f"{r}={v.mean():.1f}" for r, v in res.items())
-    for a, b in (("planner_pa", "planner"), ("hybrid_pa", "hybrid")):
-        m, lo, hi = bootstrap_ci(res[a] - res[b])
-        line += f" | {a}-{b}: {m:+.2f} [{lo:+.2f}, {hi:+.2f}]"
-    print(line, flush=True)
+        out.append(result.summary["tasks_solved"])
+    return np.array(out, dtype=float)
+
+
+def main() -> None:
+    for name, human in HUMANS.items():
+        res = {label: tasks(robot, human) for label, robot in ROBOTS.items()}
+        line = f"{name:12s} " + " ".join(f"{label}={v.mean():.1f}" for label, v in res.items())
+        for a, b in (("planner_pa", "planner"), ("hybrid_pa", "hybrid")):
+            mean, low, high = bootstrap_ci(res[a] - res[b])
+            line += f" | {a}-{b}: {mean:+.2f} [{low:+.2f}, {high:+.2f}]"
+        print(line, flush=True)
+
+
+if __name__ == "__main__":
+    main()
