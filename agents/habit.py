@@ -118,6 +118,7 @@ class QLearner:
         self._var = np.full((16, self.n_actions), self.config.uncertainty_prior)
         self._state_var = np.full(16, self.config.uncertainty_prior)
         self._tried = np.zeros((16, self.n_actions), dtype=bool)
+        self._visits = np.zeros(16, dtype=np.int64)
         self.n_updates = 0
         """TD updates applied so far."""
 
@@ -146,6 +147,7 @@ class QLearner:
         prior = np.full(capacity - old, self.config.uncertainty_prior)
         self._state_var = np.concatenate([self._state_var, prior])
         self._tried = np.concatenate([self._tried, np.zeros((capacity - old, self.n_actions), dtype=bool)])
+        self._visits = np.concatenate([self._visits, np.zeros(capacity - old, dtype=np.int64)])
         if self._tabular:
             w = np.zeros((self.n_actions, capacity))
             w[:, : self.weights.shape[1]] = self.weights
@@ -174,6 +176,14 @@ class QLearner:
         """
         code = self.state_code(facts)
         return np.sqrt(np.where(self._tried[code], self._var[code], self._state_var[code]))
+
+    def visits(self, facts: np.ndarray) -> int:
+        """TD updates made from this state so far: how much the habit has learnt *here*.
+
+        The linear habit's Q-values are defined (and often sharp) in states it never saw;
+        this count is what tells a criterion where they rest on experience.
+        """
+        return int(self._visits[self.state_code(facts)])
 
     @property
     def weight_amplitude(self) -> float:
@@ -214,6 +224,7 @@ class QLearner:
         self._var[code, action] += eta * (sq - self._var[code, action])
         self._state_var[code] += eta * (sq - self._state_var[code])
         self._tried[code, action] = True
+        self._visits[code] += 1
         self.n_updates += 1
         if not np.isfinite(delta):
             logger.warning("Q-learner diverged (delta=%s); try normalise=True or a smaller alpha", delta)
@@ -241,6 +252,7 @@ class QLearner:
                     var=self._var,
                     state_var=self._state_var,
                     tried=self._tried,
+                    visits=self._visits,
                     codes=codes,
                     n_updates=np.array(self.n_updates),
                 )
@@ -262,6 +274,9 @@ class QLearner:
             out._var = data["var"].copy()
             out._state_var = data["state_var"].copy()
             out._tried = data["tried"].copy()
+            # files written before visit counts existed: nothing is known to have been learnt where
+            visits = data["visits"] if "visits" in data.files else np.zeros(len(out._tried), dtype=np.int64)
+            out._visits = np.array(visits, dtype=np.int64)
             for row in data["codes"]:
                 out._codes[row.tobytes()] = len(out._code_facts)
                 out._code_facts.append(row.copy())

@@ -52,7 +52,7 @@ from tqdm import tqdm
 from hg_marl.agents.humans.base import Distribution, HumanError
 from hg_marl.agents.humans.registry import make_human
 from hg_marl.core import Agent, Durations, Scenario, State, World
-from hg_marl.policy import Turn
+from hg_marl.policy import Decision, Turn
 
 logger = logging.getLogger(__name__)
 
@@ -399,7 +399,7 @@ class OracleRobot:
     def __init__(self, result: OracleResult | None = None, human: Any = "cooperative") -> None:
         self.result = result
         self.human = human
-        self.last_decision: dict[str, object] = {}
+        self.last_decision: Decision | None = None
         self._missing = 0
 
     def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
@@ -419,9 +419,6 @@ class OracleRobot:
             if self._missing == 1:
                 logger.warning("oracle policy has no entry for state %s; waiting", turn.state)
             action = self._wait
-        self.last_decision = {
-            "expert": "oracle",
-            "action": action,
-            "expected_seconds": self.result.values.get(turn.state, math.inf),
-        }
+        seconds = self.result.values.get(turn.state, math.inf)
+        self.last_decision = Decision("oracle", int(action), stats=(("expected_seconds", float(seconds)),))
         return action

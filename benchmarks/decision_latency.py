@@ -48,7 +48,7 @@ def measure(name: str, params: dict, cycles: int, seed: int) -> dict[str, list[f
         turn = Turn(world, state, Agent.ROBOT, obs, reward=reward)
         t0 = time.perf_counter()
         action = robot.act(turn)
-        times[robot.last_decision["expert"]].append(time.perf_counter() - t0)
+        times[robot.last_decision.expert].append(time.perf_counter() - t0)
         out = world.step(state, Agent.ROBOT, action)
         state, reward = out.state, out.reward
         if reward > 0:

@@ -9,7 +9,7 @@ observation (learned policies see only the facts and the mask).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
@@ -57,7 +57,57 @@ class Actor(Protocol):
         """Return the index of the action to execute this turn."""
 
 
-def info_of(actor: Any) -> dict[str, Any]:
-    """The actor's record of its last decision (``last_decision``), or an empty dict."""
+@dataclass(frozen=True)
+class Decision:
+    """A robot's record of one decision, read by the runner (one log row) and by viewers.
+
+    One typed record instead of a dict whose keys were written by each robot and read
+    back with defaults: a field added here becomes a log column (see :func:`log_fields`).
+    """
+
+    expert: str
+    """Who chose the executed action: "planner", "habit", "random", "sb3", "oracle"..."""
+    action: int
+    """The executed action's index."""
+    planner_action: int = -1
+    """The planner's proposal (-1: the planner did not propose or failed)."""
+    habit_action: int = -1
+    """The habit's proposal (-1: no habit)."""
+    planning_time: float = 0.0
+    """Wall seconds spent planning (or deciding, for robots without a planner)."""
+    planner_nodes: int = 0
+    """Search nodes the planner expanded."""
+    planner_success: bool = False
+    """Whether the planner found a plan."""
+    planner_consulted: bool = False
+    """Whether the planner was asked at all (criteria may spare it)."""
+    decision_time: float = 0.0
+    """Simulated seconds to charge to the clock for this decision."""
+    expected_human_action: int = -1
+    """The human action the robot's plan expects next (-1: no expectation)."""
+    weight_amplitude: float = 0.0
+    """The habit's weight amplitude (the paper's Fig. 5; 0 without a habit)."""
+    reason: str = ""
+    """Why this expert was chosen, or why the planner failed."""
+    partner: str = ""
+    """The partner model's current estimate of the human (partner-aware robots)."""
+    stats: tuple[tuple[str, float], ...] = ()
+    """The criterion's numbers (entropy, VPI, ...), as (name, value) pairs."""
+
+
+def log_fields() -> tuple[str, ...]:
+    """The :class:`Decision` fields that are log columns (every scalar field)."""
+    return tuple(f.name for f in fields(Decision) if f.name != "stats")
+
+
+def decision_of(actor: Any) -> Decision:
+    """The actor's record of its last decision (``last_decision``).
+
+    Actors outside this package need not keep one: they get a record naming their class
+    with no expectation, so the runner logs them like any other robot.
+    """
     record = getattr(actor, "last_decision", None)
-    return dict(record) if record else {}
+    if isinstance(record, Decision):
+        return record
+    name = str(getattr(actor, "name", type(actor).__name__))
+    return Decision(expert=name, action=-1)

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -23,7 +23,7 @@ import pandas as pd
 import hg_marl
 from hg_marl.core import Agent
 from hg_marl.core.errors import check_bool, check_finite, check_int
-from hg_marl.policy import Actor, info_of
+from hg_marl.policy import Actor, decision_of, log_fields
 from hg_marl.training.io import atomic_write
 
 log = logging.getLogger(__name__)
@@ -32,25 +32,17 @@ COLUMNS = (
     "decision",
     "time",
     "cycle",
-    "expert",
-    "action",
+    *log_fields(),
     "action_name",
     "failed",
-    "planner_action",
-    "habit_action",
-    "planning_time",
-    "planner_nodes",
-    "planner_success",
-    "decision_time",
-    "expected_human_action",
     "human_action",
     "human_action_name",
     "human_as_expected",
     "reward",
     "tasks_solved",
-    "weight_amplitude",
 )
-"""Columns of the per-decision log."""
+"""Columns of the per-decision log: the run's own, then every field of the robot's
+:class:`~hg_marl.policy.Decision` (see :func:`~hg_marl.policy.log_fields`), then the outcome."""
 
 
 @dataclass(frozen=True)
@@ -143,33 +135,25 @@ def run(
             if config.max_decisions is not None and len(rows) >= config.max_decisions:
                 break
             action = int(robot.act(raw.turn("robot")))
-            record = info_of(robot)
-            decision_time = float(record.get("decision_time", 0.0))
-            if config.charge_decision_time and decision_time > 0:
-                raw.charge_time(decision_time)
+            record = decision_of(robot)
+            if config.charge_decision_time and record.decision_time > 0:
+                raw.charge_time(record.decision_time)
             env.step(action)
-            expected = int(record.get("expected_human_action", -1))
+            fields = asdict(record)
+            del fields["stats"]
+            fields["action"] = action
             row = {
                 "decision": len(rows),
                 "time": raw.clock,
                 "cycle": raw.cycles,
-                "expert": record.get("expert", getattr(robot, "name", type(robot).__name__)),
-                "action": action,
+                **fields,
                 "action_name": names[Agent.ROBOT][action],
                 "failed": bool(raw.infos["robot"]["failed"]),
-                "planner_action": int(record.get("planner_action", -1)),
-                "habit_action": int(record.get("habit_action", -1)),
-                "planning_time": float(record.get("planning_time", 0.0)),
-                "planner_nodes": int(record.get("planner_nodes", 0)),
-                "planner_success": record.get("planner_success"),
-                "decision_time": decision_time,
-                "expected_human_action": expected,
                 "human_action": -1,
                 "human_action_name": "",
                 "human_as_expected": None,
                 "reward": float(raw.rewards["robot"]),
                 "tasks_solved": raw.tasks_solved,
-                "weight_amplitude": float(record.get("weight_amplitude", 0.0)),
             }
             rows.append(row)
         else:

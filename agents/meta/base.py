@@ -26,6 +26,10 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+DEFAULT_MIN_VISITS = 5
+"""Default ``min_visits`` of the learned criteria (entropy, entropy_and_cost, vpi,
+learning_state): the best measured setting (README, Results)."""
+
 PLANNER_EPSILON = 0.01
 """Probability the planner's distribution puts on each non-planned action (docs/task.md, section 4)."""
 
@@ -55,6 +59,8 @@ class HabitView:
     """``sum |w|`` of the habit's weights now."""
     cost: float
     """The habit's decision cost (seconds; see :class:`~hg_marl.agents.meta.cost.CostModel`)."""
+    visits: int = 0
+    """TD updates the habit has made from this state (``QLearner.visits``)."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -103,6 +109,10 @@ class Criterion(ABC):
 
     name: ClassVar[str]
     """Registry name."""
+    min_visits: int = 0
+    """The habit is trusted only in states it has learnt from this many times; elsewhere the
+    controller consults the planner whatever the criterion says (0: trust it everywhere, as
+    the paper's fixed and random criteria do)."""
 
     def __init__(self) -> None:
         self.rng = np.random.default_rng(0)
@@ -139,6 +149,13 @@ def check_probability(name: str, value: float) -> float:
     if not 0.0 <= float(value) <= 1.0:
         raise ValueError(f"{name}: expected a value in [0, 1], got {value!r}")
     return float(value)
+
+
+def check_count(name: str, value: int) -> int:
+    """Validate a non-negative integer parameter."""
+    if isinstance(value, bool) or not isinstance(value, int | float) or value < 0 or int(value) != value:
+        raise ValueError(f"{name}: expected a non-negative integer, got {value!r}")
+    return int(value)
 
 
 def check_positive(name: str, value: float, allow_zero: bool = True) -> float:

@@ -31,7 +31,8 @@ class Decision:
     plan: PlanProposal | None
     """The planner's proposal if it was consulted, else None."""
     reason: str
-    """``"criterion"``, ``"planner_failed"`` (fallback) or ``"habit_only"`` (planner not consulted)."""
+    """``"criterion"``, ``"planner_failed"`` (fallback), ``"habit_only"`` (planner not consulted) or
+    ``"habit_untrained"`` (the habit has not learnt enough in this state: ``Criterion.min_visits``)."""
     stats: dict[str, float] = field(default_factory=dict)
     """The criterion's numbers behind the choice (entropies, VPI, ...)."""
 
@@ -75,6 +76,12 @@ class MetaController:
                 criterion wants a plan; None when no planner is available.
         """
         crit = self.criterion
+        if plan is not None and habit.visits < crit.min_visits:
+            proposal = plan() if callable(plan) else plan
+            crit.stats = {**crit.stats, "visits": float(habit.visits)}
+            if proposal.success:
+                return Decision(Expert.PLANNER, proposal.action, proposal, "habit_untrained", dict(crit.stats))
+            return Decision(Expert.HABIT, habit.action, proposal, "planner_failed", dict(crit.stats))
         if plan is None or not crit.wants_plan(habit):
             return Decision(Expert.HABIT, habit.action, None, "habit_only", dict(crit.stats))
         proposal = plan() if callable(plan) else plan

@@ -18,10 +18,12 @@ from __future__ import annotations
 import numpy as np
 
 from hg_marl.agents.meta.base import (
+    DEFAULT_MIN_VISITS,
     Criterion,
     Expert,
     HabitView,
     PlanProposal,
+    check_count,
     check_probability,
     normalised_entropy,
 )
@@ -48,12 +50,15 @@ class EntropyCriterion(Criterion):
     Args:
         rate: filter rate ``a`` (lineage default 0.6).
         tie_tolerance: entropies closer than this count as a tie.
+        min_visits: the habit acts only in states it has learnt from this many times
+            (see ``Criterion.min_visits``).
     """
 
     name = "entropy"
 
-    def __init__(self, rate: float = 0.6, tie_tolerance: float = 1e-9) -> None:
+    def __init__(self, rate: float = 0.6, tie_tolerance: float = 1e-9, min_visits: int = DEFAULT_MIN_VISITS) -> None:
         super().__init__()
+        self.min_visits = check_count("entropy.min_visits", min_visits)
         self.rate = check_probability("entropy.rate", rate)
         self.tie_tolerance = float(tie_tolerance)
         self._reset()

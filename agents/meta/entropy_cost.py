@@ -21,10 +21,12 @@ from __future__ import annotations
 import math
 
 from hg_marl.agents.meta.base import (
+    DEFAULT_MIN_VISITS,
     Criterion,
     Expert,
     HabitView,
     PlanProposal,
+    check_count,
     check_positive,
     check_probability,
     entropy_bits,
@@ -40,12 +42,15 @@ class EntropyAndCostCriterion(Criterion):
     Args:
         kappa: how fast the cost weight rises as the habit's entropy falls (default 1).
         rate: filter rate for distributions and costs (lineage default 0.6).
+        min_visits: the habit acts only in states it has learnt from this many times
+            (see ``Criterion.min_visits``).
     """
 
     name = "entropy_and_cost"
 
-    def __init__(self, kappa: float = 1.0, rate: float = 0.6) -> None:
+    def __init__(self, kappa: float = 1.0, rate: float = 0.6, min_visits: int = DEFAULT_MIN_VISITS) -> None:
         super().__init__()
+        self.min_visits = check_count("entropy_and_cost.min_visits", min_visits)
         self.kappa = check_positive("entropy_and_cost.kappa", kappa)
         self.rate = check_probability("entropy_and_cost.rate", rate)
         self._reset()

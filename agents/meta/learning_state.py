@@ -1,62 +1,57 @@
-"""``learning_state``: the habit takes over once its weights have stopped changing.
+"""``learning_state``: the habit takes over where its values have stopped changing.
 
 The paper's own proposal (Renaudo et al. 2015, section V): "give to the MetaController
-an information on the variation of MF weights". At each decision we measure the relative
-change of the weight amplitude ``A = sum |w|`` since the previous decision,
-``d = |A_t - A_{t-1}| / max(A_t, eps)``, low-pass filter it, ``f <- (1 - a) f + a d``
-(``f`` starts at 1: nothing is known to have settled), and let the habit act while
-``f < threshold``. The measure is relative so that one threshold fits any task's reward
-scale and feature count. It is global, not per state: the weights are shared by all
-states in the paper's linear habit.
+an information on the variation of MF weights". The habit acts in a state when the
+variation of its value there has settled: the running root-mean-square TD error of the
+proposed action in this state (``HabitView.sd``, the same estimate VPI uses) is below
+``threshold``, and the habit has learnt from this state at least ``min_visits`` times.
 
-Control returns to the planner by itself: when the habit's actions fail or the human
-changes, TD errors move the weights again and ``f`` rises above the threshold.
+Why per state. An earlier version filtered the *global* relative change of the weight
+amplitude, ``|A_t - A_{t-1}| / A_t``. As a tabular habit meets new states the amplitude
+grows roughly linearly, so that ratio decays like ``1 / t`` whatever the habit knows:
+it crossed the threshold after 13-15 simulated minutes in every run, and the habit then
+took over everywhere, including states it had never seen (failures, 20-40 tasks/h
+instead of ~110). In the adaptation runs this happened at the same moment for every
+switch (before the switch, the runs are identical), which is why the criterion seemed to
+"anticipate" the human's switch by about two minutes. Variation measured where the
+decision is taken has no such drift, and it rises again when the human changes (TD
+errors grow), which returns control to the planner by itself.
 """
 
 from __future__ import annotations
 
 from hg_marl.agents.meta.base import (
+    DEFAULT_MIN_VISITS,
     Criterion,
     Expert,
     HabitView,
     PlanProposal,
+    check_count,
     check_positive,
-    check_probability,
 )
 
 
 class LearningStateCriterion(Criterion):
-    """Habit while the filtered relative weight change is below ``threshold``.
+    """Habit where its value's running RMS TD error is below ``threshold``.
 
     Args:
-        threshold: filtered relative change per decision under which the habit acts.
-        rate: filter rate ``a``; smaller than the entropy filter's 0.6 because a single
-            decision's change is noisy (many decisions leave the weights untouched).
-        min_amplitude: the habit must have learnt something (``A`` above this) to act.
+        threshold: RMS TD error (reward units) of the habit's proposed action in this
+            state under which the habit acts.
+        min_visits: the habit acts only in states it has learnt from this many times.
     """
 
     name = "learning_state"
 
-    def __init__(self, threshold: float = 1e-3, rate: float = 0.1, min_amplitude: float = 1e-6) -> None:
+    def __init__(self, threshold: float = 0.5, min_visits: int = DEFAULT_MIN_VISITS) -> None:
         super().__init__()
         self.threshold = check_positive("learning_state.threshold", threshold, allow_zero=False)
-        self.rate = check_probability("learning_state.rate", rate)
-        self.min_amplitude = check_positive("learning_state.min_amplitude", min_amplitude)
-        self._reset()
-
-    def _reset(self) -> None:
-        self.change = 1.0
-        self._last: float | None = None
+        self.min_visits = check_count("learning_state.min_visits", min_visits)
 
     def wants_plan(self, habit: HabitView) -> bool:
-        """Update the filtered weight change; plan unless the habit has settled."""
-        amplitude = habit.weight_amplitude
-        if self._last is not None and max(amplitude, self._last) > 0.0:  # nothing learnt yet: no news
-            d = abs(amplitude - self._last) / max(amplitude, 1e-12)
-            self.change += self.rate * (d - self.change)
-        self._last = amplitude
-        settled = self.change < self.threshold and amplitude > self.min_amplitude
-        self.stats = {"weight_change": self.change, "weight_amplitude": amplitude}
+        """Plan unless the habit's value for its proposal has settled in this state."""
+        change = float(habit.sd[habit.action])
+        settled = change < self.threshold and habit.visits >= self.min_visits
+        self.stats = {"td_rms": change, "visits": float(habit.visits)}
         return not settled
 
     def choose(self, habit: HabitView, plan: PlanProposal) -> Expert:

@@ -25,10 +25,12 @@ import math
 import numpy as np
 
 from hg_marl.agents.meta.base import (
+    DEFAULT_MIN_VISITS,
     Criterion,
     Expert,
     HabitView,
     PlanProposal,
+    check_count,
     check_positive,
     check_probability,
 )
@@ -63,12 +65,15 @@ class VPICriterion(Criterion):
     Args:
         tau: planning time in units of decisions, the cost multiplier (default 0.08).
         rate_step: step of the running average reward ``R`` (default 0.02).
+        min_visits: the habit acts only in states it has learnt from this many times
+            (see ``Criterion.min_visits``).
     """
 
     name = "vpi"
 
-    def __init__(self, tau: float = 0.08, rate_step: float = 0.02) -> None:
+    def __init__(self, tau: float = 0.08, rate_step: float = 0.02, min_visits: int = DEFAULT_MIN_VISITS) -> None:
         super().__init__()
+        self.min_visits = check_count("vpi.min_visits", min_visits)
         self.tau = check_positive("vpi.tau", tau)
         self.rate_step = check_probability("vpi.rate_step", rate_step)
         self._reset()

@@ -8,13 +8,11 @@
 ``sb3``        a trained Stable-Baselines3 model (``path=``; torch loads on first use)
 =============  ==============================================================
 
-After every ``act`` a robot's ``last_decision`` dict holds: ``expert`` ("planner",
-"habit" or "random"), ``action``, ``planner_action`` and ``habit_action`` (-1 when that
-expert did not propose), ``planning_time`` (wall seconds), ``planner_nodes``,
-``planner_success``, ``decision_time`` (simulated seconds to charge to the clock; the
-deterministic :class:`~hg_marl.agents.meta.cost.CostModel` by default),
-``expected_human_action`` (-1 if none) and, for learning robots, ``weight_amplitude``.
-The hybrid adds ``planner_consulted``, ``reason`` and the criterion's ``meta_*`` numbers.
+After every ``act`` a robot's ``last_decision`` is a :class:`hg_marl.policy.Decision`
+(its fields are documented there): who decided, both experts' proposals, planning time
+and nodes, the decision time to charge to the clock (the deterministic
+:class:`~hg_marl.agents.meta.cost.CostModel` by default), the human action the plan
+expects, the habit's weight amplitude and the criterion's numbers.
 """
 
 from hg_marl.agents.robots.base import LearningRobot, Robot

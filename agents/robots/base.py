@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import time
 from abc import ABC, abstractmethod
+from dataclasses import replace
 from typing import Any, ClassVar
 
 import numpy as np
@@ -25,7 +26,7 @@ from hg_marl.agents.habit import QLearner, QLearnerConfig, sample, softmax
 from hg_marl.agents.meta.base import PlanProposal, planner_distribution
 from hg_marl.agents.meta.cost import CostModel
 from hg_marl.core import WAIT, Agent, World
-from hg_marl.policy import Turn
+from hg_marl.policy import Decision, Turn
 
 
 class Robot(ABC):
@@ -40,8 +41,8 @@ class Robot(ABC):
 
     def __init__(self, cost: CostModel | None = None) -> None:
         self.cost = cost or CostModel()
-        self.last_decision: dict[str, Any] = {}
-        """Record of the last decision (see the package docstring for the keys)."""
+        self.last_decision: Decision | None = None
+        """Record of the last decision (None before the first)."""
         self.rng = np.random.default_rng(0)
         self.world: World | None = None
         self.agent = Agent.ROBOT
@@ -51,7 +52,7 @@ class Robot(ABC):
         """Start a run on ``world`` in seat ``agent``; ``rng`` is now this robot's."""
         self.world, self.agent, self.rng = world, agent, rng
         self.n_actions = world.n_actions(agent)
-        self.last_decision = {}
+        self.last_decision = None
         self._reset(world)
 
     def _reset(self, world: World) -> None:  # noqa: B027 (optional hook)
@@ -65,19 +66,8 @@ class Robot(ABC):
         """The run or episode is over; learners take their last TD step (see module docstring)."""
 
     def _record(self, expert: str, action: int, **fields: Any) -> None:
-        rec: dict[str, Any] = {
-            "expert": expert,
-            "action": int(action),
-            "planner_action": -1,
-            "habit_action": -1,
-            "planning_time": 0.0,
-            "planner_nodes": 0,
-            "planner_success": False,
-            "decision_time": 0.0,
-            "expected_human_action": -1,
-        }
-        rec.update(fields)
-        self.last_decision = rec
+        """Keep this decision's :class:`~hg_marl.policy.Decision` (unnamed fields keep their defaults)."""
+        self.last_decision = Decision(expert=expert, action=int(action), **fields)
 
 
 class LearningRobot(Robot):
@@ -85,8 +75,9 @@ class LearningRobot(Robot):
 
     Args:
         q_config: the Q-learner's hyper-parameters (used when ``learner`` is None): a
-            :class:`QLearnerConfig` or a plain dict of its fields, e.g.
-            ``{"features": "tabular"}`` (so sweeps and the CLI can pass it as JSON).
+            :class:`QLearnerConfig`, or a plain dict of the fields that differ from
+            :attr:`default_habit`, e.g. ``{"features": "facts"}`` (so sweeps and the CLI
+            can pass it as JSON).
         learner: an existing Q-learner to use and keep across resets (to continue
             training or evaluate a saved habit). When None, each :meth:`reset` starts a
             fresh, zero-weight learner, as each of the paper's runs does.
@@ -96,6 +87,8 @@ class LearningRobot(Robot):
 
     _prev: tuple[np.ndarray, int] | None
     """The previous turn's (facts, executed action), pending its TD step."""
+    default_habit: ClassVar[QLearnerConfig] = QLearnerConfig()
+    """The habit's configuration when ``q_config`` is None; a dict ``q_config`` overrides its fields."""
 
     def __init__(
         self,
@@ -107,12 +100,12 @@ class LearningRobot(Robot):
         super().__init__(cost)
         if isinstance(q_config, dict):
             try:
-                q_config = QLearnerConfig(**q_config)
+                q_config = replace(self.default_habit, **q_config)
             except TypeError as exc:
                 raise ValueError(f"bad q_config {q_config!r}: {exc}") from None
         elif q_config is not None and not isinstance(q_config, QLearnerConfig):
             raise ValueError(f"bad q_config {q_config!r}: expected a JSON object of habit settings")
-        self.q_config = q_config or QLearnerConfig()
+        self.q_config = q_config or self.default_habit
         self._given_learner = learner
         self.learner = learner
         self.learn = learn
@@ -195,6 +188,17 @@ def plan_proposal(result: Any, n_actions: int, agent: Agent, cost: CostModel) ->
         nodes=int(result.nodes),
         human_action=int(result.human_action) if success else -1,
     )
+
+
+def stall_move(turn: Turn, rng: np.random.Generator) -> int:
+    """A feasible move other than ``wait``, drawn uniformly: the way out of a stall.
+
+    A partner who waits for the robot to leave (or to do anything else) gets a new
+    situation; ``wait`` is returned only when nothing else is feasible.
+    """
+    wait = wait_index(turn.world, turn.agent)
+    moves = [int(i) for i in np.flatnonzero(turn.mask) if i != wait]
+    return moves[int(rng.integers(len(moves)))] if moves else wait
 
 
 def wait_index(world: World, agent: Agent) -> int:

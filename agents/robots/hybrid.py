@@ -7,6 +7,11 @@ its cost) and whose proposal is executed; a planner failure falls back to the ha
 The habit learns from every executed transition, whoever proposed it, which is how the
 planner bootstraps it (the paper's Fig. 5). The decision time charged is the habit's
 cost plus, when it was consulted, the planner's.
+
+The planner's model of the human is revised from what the human does (see
+:mod:`hg_marl.agents.partner`); when the partner keeps not doing what the plan expects,
+the habit acts for that decision instead of the planner (``reason="partner_stalled"``).
+With ``partner_aware=True`` the planner plans against the most probable partner type.
 """
 
 from __future__ import annotations
@@ -17,27 +22,37 @@ from hg_marl.agents.habit import QLearner, QLearnerConfig
 from hg_marl.agents.meta.base import Criterion, HabitView, PlanProposal
 from hg_marl.agents.meta.controller import MetaController
 from hg_marl.agents.meta.cost import CostModel
-from hg_marl.agents.robots.base import LearningRobot, make_planner, plan_proposal
+from hg_marl.agents.robots.base import LearningRobot, plan_proposal
+from hg_marl.agents.robots.partnering import Partnering
 from hg_marl.core import State, World
+from hg_marl.core.errors import RobotError, check_bool
 from hg_marl.policy import Turn
 
 
 class HybridRobot(LearningRobot):
     """Planner + Q-learner + MetaController.
 
+    The defaults are the best measured settings (README, Results): the ``entropy_and_cost``
+    criterion, which spares the planner once the habit is sure, over a *tabular* habit,
+    which is sure only where it has learnt. The paper's configuration is
+    ``criterion="random", q_config={"features": "facts"}``.
+
     Args:
         criterion: a criterion name (``hg_marl.agents.meta.available_criteria()``) or instance.
         criterion_params: parameters of a criterion given by name.
         planner_config: a ``PlannerConfig`` (None: defaults).
         human_model: the human model the planner assumes (None: cooperative).
+        partner_aware: plan against the most probable partner type, learnt online
+            (:class:`~hg_marl.agents.partner.PartnerPosterior`) instead of ``human_model``.
         q_config, learner, learn, cost: as for :class:`~hg_marl.agents.robots.base.LearningRobot`.
     """
 
     name = "hybrid"
+    default_habit = QLearnerConfig(features="tabular")
 
     def __init__(
         self,
-        criterion: str | Criterion = "random",
+        criterion: str | Criterion = "entropy_and_cost",
         criterion_params: dict[str, Any] | None = None,
         planner_config: Any = None,
         human_model: Any = None,
@@ -45,17 +60,21 @@ class HybridRobot(LearningRobot):
         learner: QLearner | None = None,
         learn: bool = True,
         cost: CostModel | None = None,
+        partner_aware: bool = False,
     ) -> None:
         super().__init__(q_config, learner, learn, cost)
         self.meta = MetaController(criterion, **(criterion_params or {}))
         self.planner_config = planner_config
         self.human_model = human_model
+        self.partner_aware = check_bool(partner_aware, f"{self.name}.partner_aware", RobotError)
         self.planner: Any = None
+        self.partnering: Any = None
 
     def _reset(self, world: World) -> None:
         super()._reset(world)
         self.meta.reset(self.rng)
-        self.planner = make_planner(world, self.planner_config, self.human_model)
+        self.partnering = Partnering(world, self.planner_config, self.human_model, self.partner_aware)
+        self.planner = self.partnering.planner
 
     def _plan(self, state: State) -> tuple[PlanProposal, float]:
         result = self.planner.plan(state, to_move=self.agent)
@@ -66,6 +85,8 @@ class HybridRobot(LearningRobot):
         facts = turn.observation["observation"]
         if self._learn_from(turn.reward, facts):
             self.meta.observe(turn.reward)
+        if self.partnering.observe(turn, self.last_decision):
+            self.planner = self.partnering.planner
         habit = self.habit
         q, probs, habit_action, wall = self._habit_proposal(facts)
         view = HabitView(
@@ -76,6 +97,7 @@ class HybridRobot(LearningRobot):
             sd=habit.uncertainty(facts),
             weight_amplitude=habit.weight_amplitude,
             cost=self.cost.habit_cost(wall),
+            visits=habit.visits(facts),
         )
         planning_time = [0.0]
 
@@ -83,8 +105,26 @@ class HybridRobot(LearningRobot):
             proposal, planning_time[0] = self._plan(turn.state)
             return proposal
 
+        if self.partnering.monitor.stalled:
+            self.partnering.monitor.fell_back()
+            self.partnering.acted(turn.state, habit_action)
+            self._remember(facts, habit_action)
+            self._record(
+                "habit",
+                habit_action,
+                habit_action=habit_action,
+                decision_time=view.cost,
+                weight_amplitude=habit.weight_amplitude,
+                reason="partner_stalled",
+                partner=self.partnering.estimate,
+            )
+            return habit_action
         decision = self.meta.decide(view, plan)
         prop = decision.plan
+        if prop is not None:
+            self.partnering.planned(prop.success)
+            self.planner = self.partnering.planner
+        self.partnering.acted(turn.state, decision.action)
         self._remember(facts, decision.action)
         self._record(
             str(decision.expert),
@@ -99,7 +139,8 @@ class HybridRobot(LearningRobot):
             expected_human_action=prop.human_action if prop is not None else -1,
             weight_amplitude=habit.weight_amplitude,
             reason=decision.reason,
-            **{f"meta_{k}": v for k, v in decision.stats.items()},
+            stats=tuple((k, float(v)) for k, v in decision.stats.items()),
+            partner=self.partnering.estimate,
         )
         return decision.action
 

@@ -4,6 +4,12 @@ Replanning each turn (rather than executing a stored plan step by step, as HATP'
 supervisor does) keeps the robot correct when the human deviates from the plan; the
 planner is deterministic, so with a cooperative human it reproduces the stored plan.
 On failure the planner's result proposes ``wait``.
+
+The model of the human is revised from what the human does (see
+:mod:`hg_marl.agents.partner`): expected actions the human keeps refusing are ruled out,
+and a robot whose partner keeps not doing what is expected takes any feasible move for
+one decision, so no partner who leaves the task solvable can hold it waiting forever.
+With ``partner_aware=True`` the planner plans against the most probable partner type.
 """
 
 from __future__ import annotations
@@ -11,8 +17,10 @@ from __future__ import annotations
 from typing import Any
 
 from hg_marl.agents.meta.cost import CostModel
-from hg_marl.agents.robots.base import Robot, make_planner, plan_proposal
+from hg_marl.agents.robots.base import Robot, plan_proposal, stall_move
+from hg_marl.agents.robots.partnering import Partnering
 from hg_marl.core import World
+from hg_marl.core.errors import RobotError, check_bool
 from hg_marl.policy import Turn
 
 
@@ -23,23 +31,44 @@ class PlannerRobot(Robot):
         planner_config: a ``PlannerConfig`` (None: defaults).
         human_model: the human model the planner assumes (None: cooperative).
         cost: decision cost model.
+        partner_aware: plan against the most probable partner type, learnt online
+            (:class:`~hg_marl.agents.partner.PartnerPosterior`) instead of ``human_model``.
     """
 
     name = "planner"
 
-    def __init__(self, planner_config: Any = None, human_model: Any = None, cost: CostModel | None = None) -> None:
+    def __init__(
+        self,
+        planner_config: Any = None,
+        human_model: Any = None,
+        cost: CostModel | None = None,
+        partner_aware: bool = False,
+    ) -> None:
         super().__init__(cost)
         self.planner_config = planner_config
         self.human_model = human_model
+        self.partner_aware = check_bool(partner_aware, f"{self.name}.partner_aware", RobotError)
         self.planner: Any = None
+        self.partnering: Any = None
 
     def _reset(self, world: World) -> None:
-        self.planner = make_planner(world, self.planner_config, self.human_model)
+        self.partnering = Partnering(world, self.planner_config, self.human_model, self.partner_aware)
+        self.planner = self.partnering.planner
 
     def act(self, turn: Turn) -> int:
         """Plan from the current state and return the plan's first robot action."""
+        if self.partnering.observe(turn, self.last_decision):
+            self.planner = self.partnering.planner
+        if self.partnering.monitor.stalled:
+            action = stall_move(turn, self.rng)
+            self.partnering.monitor.fell_back()
+            self.partnering.acted(turn.state, action)
+            self._record("random", action, reason="partner_stalled", partner=self.partnering.estimate)
+            return action
         result = self.planner.plan(turn.state, to_move=self.agent)
         prop = plan_proposal(result, self.n_actions, self.agent, self.cost)
+        self.partnering.planned(prop.success)
+        self.planner = self.partnering.planner
         self._record(
             "planner",
             prop.action,
@@ -48,7 +77,10 @@ class PlannerRobot(Robot):
             planner_nodes=prop.nodes,
             planner_success=prop.success,
             decision_time=prop.cost,
+            planner_consulted=True,
             expected_human_action=prop.human_action,
-            planner_reason=str(result.reason),
+            reason=str(result.reason),
+            partner=self.partnering.estimate,
         )
+        self.partnering.acted(turn.state, prop.action)
         return prop.action

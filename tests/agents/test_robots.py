@@ -3,7 +3,7 @@ cooperative human that follows the planner's human stream."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import asdict, dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -59,7 +59,7 @@ def drive(robot: Robot, world: World, cycles: int, seed: int = 0) -> Run:
     records, human_actions = [], []
     for _ in range(cycles):
         action = robot.act(robot_turn(world, state, reward))
-        records.append(dict(robot.last_decision))
+        records.append(asdict(robot.last_decision))
         out = world.step(state, Agent.ROBOT, action)
         state, reward, failed = out.state, out.reward, failed + (not out.ok)
         if reward > 0:
@@ -181,7 +181,7 @@ def test_hybrid_falls_back_to_habit_when_planning_fails(world: World) -> None:
 
     robot.planner = Failing()
     action = robot.act(robot_turn(world, world.initial_state(np.random.default_rng(0))))
-    rec = robot.last_decision
+    rec = asdict(robot.last_decision)
     assert rec["expert"] == "habit" and action == rec["habit_action"]
     assert rec["planner_success"] is False and rec["reason"] == "planner_failed" and rec["planner_nodes"] == 42
 

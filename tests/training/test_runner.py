@@ -3,14 +3,17 @@
 from __future__ import annotations
 
 import json
+from dataclasses import fields
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 from typer.testing import CliRunner
 
 from hg_marl.agents.humans import make_human
 from hg_marl.agents.robots import make_robot
+from hg_marl.policy import Decision, Turn
 from hg_marl.training import backends, sweep
 from hg_marl.training.cli import app
 from hg_marl.training.io import atomic_write
@@ -27,6 +30,25 @@ def test_planner_run_is_logged_and_charged() -> None:
     assert (log["decision_time"] > 0).all(), "planning is charged to the clock"
     assert log["time"].is_monotonic_increasing and log["time"].iloc[-1] >= 200.0
     assert log["human_as_expected"].dropna().mean() > 0.9, "the cooperative human follows the shared plan"
+
+
+class _PlainRobot:
+    """An Actor from outside the package: no decision record of its own."""
+
+    def reset(self, world: object, agent: object, rng: np.random.Generator) -> None:
+        self.rng = rng
+
+    def act(self, turn: Turn) -> int:
+        return int(np.flatnonzero(turn.mask)[-1])  # wait is the last action
+
+
+def test_log_columns_are_the_decision_fields() -> None:
+    names = {f.name for f in fields(Decision)} - {"stats"}
+    assert set(COLUMNS) >= names | {"decision", "time", "human_action", "reward"}
+    log = run(_PlainRobot(), make_human("cooperative"), RunConfig(duration=20.0, seed=0)).log
+    assert (log["expert"] == "_PlainRobot").all(), "a robot without a record is logged under its class name"
+    assert (log["expected_human_action"] == -1).all() and log["human_as_expected"].isna().all()
+    assert (log["action_name"] == "wait").all()
 
 
 def test_same_seed_same_trajectory() -> None:

@@ -29,7 +29,7 @@ def register(app: typer.Typer) -> None:
         adaptation: Annotated[
             bool, typer.Option(help="Also run the adaptation experiment (human switches mid-run).")
         ] = True,
-        adaptation_seeds: Annotated[int, typer.Option(min=1, help="Seeds per (robot, new human) when adapting.")] = 3,
+        adaptation_seeds: Annotated[int, typer.Option(min=1, help="Seeds per (robot, switch) when adapting.")] = 10,
     ) -> None:
         """Planner alone, habit alone, random mix (+ further criteria): Fig. 3-5, summary.json, table."""
         from tqdm import tqdm

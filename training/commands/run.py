@@ -23,7 +23,7 @@ def register(app: typer.Typer) -> None:
         ] = "hybrid",
         criterion: Annotated[
             str, typer.Option(help="MetaController criterion (hybrid robot only), e.g. vpi:tau=0.1.")
-        ] = "random",
+        ] = "entropy_and_cost",
         human: Annotated[str, typer.Option(help="Human partner (see `hg-marl run --list`).")] = "cooperative",
         scenario: Annotated[
             str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml path.")
