@@ -76,7 +76,7 @@ class Study:
     oracle_max_states: int = DEFAULT_ORACLE_MAX_STATES
 
     def narrowed(self, seeds: int | None = None, robots: Sequence[str] = (), humans: Sequence[str] = ()) -> Study:
-        """The first ``seeds`` seeds and the named robots and humans (by label or registry name).
+        """The first ``seeds`` seeds and the named robots and humans (by exact label, else registry name).
 
         Raises:
             StudyError: a name that is in the study under neither label nor registry name.
@@ -89,7 +89,11 @@ class Study:
             if unknown:
                 known = ", ".join(a.label for a in actors)
                 raise StudyError(f"{option}: {', '.join(unknown)} not in {self.path} (it has {known})")
-            return tuple(a for a in actors if a.label in names or a.name in names)
+            # A name that is some actor's exact label picks that actor only ("planner" is
+            # the plain planner, not "planner:partner_aware=true"); any other name picks
+            # every actor registered under it ("hybrid": all the hybrids).
+            labels = {a.label for a in actors}
+            return tuple(a for a in actors if a.label in names or (a.name in names and a.name not in labels))
 
         chosen_humans = pick(self.humans, humans, "--humans")
         labels = {h.label for h in chosen_humans}
