@@ -1,4 +1,12 @@
-"""Registers the environment ids with PettingZoo and Gymnasium (idempotent)."""
+"""Registers the environment ids with PettingZoo and Gymnasium (idempotent).
+
+Importing ``hg_marl`` calls :func:`register_envs`. Without that import, Gymnasium finds the
+ids through its ``"module:id"`` form, which imports the module first:
+``gymnasium.make("hg_marl:hg_marl/RobotTableCleaning-v0")`` (and ``gymnasium.make_vec``).
+Gymnasium 1.x has no entry-point plugin discovery, and PettingZoo's registry (1.27+) does
+not import modules by id, so ``pettingzoo.make("aec", "hg_marl/TableCleaning-v0")`` needs
+``import hg_marl`` first; older PettingZoo versions have no registry at all.
+"""
 
 from __future__ import annotations
 
@@ -12,7 +20,7 @@ def register_envs() -> None:
     import gymnasium
     import pettingzoo
 
-    if AEC_ID not in pettingzoo.aec_registry:
+    if hasattr(pettingzoo, "aec_registry") and AEC_ID not in pettingzoo.aec_registry:
         pettingzoo.register("aec", AEC_ID, entry_point="hg_marl.envs.table_cleaning:env")
         pettingzoo.register("parallel", AEC_ID, entry_point="hg_marl.envs.parallel:parallel_env")
     if ROBOT_VIEW_ID not in gymnasium.registry:

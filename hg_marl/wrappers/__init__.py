@@ -28,7 +28,7 @@ from __future__ import annotations
 from pettingzoo import AECEnv
 
 from hg_marl.envs.parallel import TurnBasedParallelEnv
-from hg_marl.wrappers.audit import MaskAuditWrapper, audit_v0
+from hg_marl.wrappers.audit import MaskAuditWrapper, audit_v0, find_audit
 from hg_marl.wrappers.flat import FlatObservationWrapper, flatten_v0
 from hg_marl.wrappers.homogenize import HomogenizeWrapper, homogenize_v0
 
@@ -43,6 +43,7 @@ __all__ = [
     "HomogenizeWrapper",
     "MaskAuditWrapper",
     "audit_v0",
+    "find_audit",
     "flatten_v0",
     "homogenize_v0",
     "to_parallel",

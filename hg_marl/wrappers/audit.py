@@ -45,6 +45,29 @@ class MaskAuditWrapper(BaseWrapper):
         super().step(action)
 
 
+_INNER = ("env", "aec_env", "par_env", "venv", "vec_envs")
+
+
+def find_audit(obj: Any, depth: int = 12) -> MaskAuditWrapper | None:
+    """The :class:`MaskAuditWrapper` inside a stack of PettingZoo, SuperSuit or SB3 wrappers.
+
+    Vector-env builders may copy the env they are given, so read the audit from the
+    object actually stepped rather than keep a reference to the one built.
+    """
+    if isinstance(obj, MaskAuditWrapper):
+        return obj
+    if depth == 0:
+        return None
+    for name in _INNER:
+        inner = getattr(obj, name, None)
+        for candidate in inner if isinstance(inner, list) else [inner]:
+            if candidate is not None and candidate is not obj:
+                found = find_audit(candidate, depth - 1)
+                if found is not None:
+                    return found
+    return None
+
+
 def audit_v0(env: AECEnv) -> MaskAuditWrapper:
     """Wrap ``env`` so that it counts the actions each agent sent against its real mask."""
     return MaskAuditWrapper(env)
