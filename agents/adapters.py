@@ -110,7 +110,7 @@ def tianshou_fixed_algorithm(action_space: Any) -> Any:
     from tianshou.algorithm.random import MARLRandomDiscreteMaskedOffPolicyAlgorithm
     from tianshou.data import Batch
 
-    class FirstAllowedPolicy(MARLRandomDiscreteMaskedOffPolicyAlgorithm.Policy):  # type: ignore[misc, name-defined]
+    class FirstAllowedPolicy(MARLRandomDiscreteMaskedOffPolicyAlgorithm.Policy):
         def forward(self, batch: Any, state: Any = None, **kwargs: Any) -> Any:
             return Batch(act=np.asarray(batch.obs.mask).argmax(axis=-1))
 
@@ -129,7 +129,7 @@ def rllib_fixed_module_class() -> type:
     from ray.rllib.core.columns import Columns
     from ray.rllib.core.rl_module.torch import TorchRLModule
 
-    class FixedMaskModule(TorchRLModule):  # type: ignore[misc]
+    class FixedMaskModule(TorchRLModule):
         def setup(self) -> None:
             super().setup()
             self._dummy = torch.nn.Parameter(torch.zeros(1), requires_grad=False)
