@@ -6,13 +6,17 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= results/paper2015
 PYTEST_ARGS ?=
+NOX_ARGS ?=
 
-.PHONY: setup reproduce test test-slow lint bench clean
+.PHONY: setup reproduce test test-slow test-integrations lint bench clean
 
 $(BIN)/.installed: pyproject.toml
+	@echo "setup: creating $(VENV) and installing hg-marl with its dev and sb3 extras"
+	@echo "setup: numpy, gymnasium, pettingzoo, matplotlib, pandas, torch==2.13.0 (CPU), stable-baselines3, sb3-contrib, pytest, ruff, mypy, nox (1-3 min)"
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e ".[dev,sb3]"
+	$(BIN)/python -m pip install --quiet --progress-bar off -e ".[dev,sb3]"
+	@echo "setup: done ($(VENV))"
 	touch $@
 
 setup: $(BIN)/.installed
@@ -21,10 +25,15 @@ reproduce: setup
 	$(BIN)/hg-marl reproduce --out $(OUT)
 
 test: setup lint
-	$(BIN)/python -m pytest -m "not slow" $(PYTEST_ARGS)
+	$(BIN)/python -m pytest -m "not slow and not integrations" $(PYTEST_ARGS)
 
 test-slow: setup
-	$(BIN)/python -m pytest -m slow $(PYTEST_ARGS)
+	$(BIN)/python -m pytest -m "slow and not integrations" $(PYTEST_ARGS)
+
+# The MARL libraries (Tianshou, RLlib, SuperSuit+SB3, CleanRL-style, make_vec) and the
+# lowest/newest gymnasium and pettingzoo, each in its own nox environment (noxfile.py).
+test-integrations: setup
+	$(BIN)/nox $(NOX_ARGS)
 
 lint: setup
 	$(BIN)/ruff check .

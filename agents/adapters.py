@@ -127,9 +127,10 @@ def rllib_fixed_module_class() -> type:
     """
     import torch
     from ray.rllib.core.columns import Columns
+    from ray.rllib.core.rl_module.apis.value_function_api import ValueFunctionAPI
     from ray.rllib.core.rl_module.torch import TorchRLModule
 
-    class FixedMaskModule(TorchRLModule):
+    class FixedMaskModule(TorchRLModule, ValueFunctionAPI):
         def setup(self) -> None:
             super().setup()
             self._dummy = torch.nn.Parameter(torch.zeros(1), requires_grad=False)
@@ -138,5 +139,9 @@ def rllib_fixed_module_class() -> type:
             mask = batch[Columns.OBS]["action_mask"].float()
             logits = torch.where(mask > 0, torch.zeros_like(mask), torch.full_like(mask, -1e9))
             return {Columns.ACTION_DIST_INPUTS: logits}
+
+        def compute_values(self, batch: dict[str, Any], embeddings: Any = None) -> Any:
+            # Values are asked for by PPO's connectors even for modules it does not train.
+            return torch.zeros(batch[Columns.OBS]["action_mask"].shape[0])
 
     return FixedMaskModule

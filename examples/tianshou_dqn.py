@@ -30,7 +30,7 @@ from tianshou.utils.net.common import Net
 
 import hg_marl
 from hg_marl.agents.adapters import scripted_v0, tianshou_fixed_algorithm
-from hg_marl.wrappers import audit_v0, find_audit, homogenize_v0
+from hg_marl.wrappers import AUDITS, audit_totals, audit_v0, homogenize_v0
 
 
 def make_env(human: str = "cooperative") -> PettingZooEnv:
@@ -43,6 +43,7 @@ def main(steps: int = 2000, seed: int = 0, human: str = "cooperative") -> dict[s
     """Train the robot for about ``steps`` env steps (both seats' turns count)."""
     torch.manual_seed(seed)
     torch.set_num_threads(1)
+    AUDITS.clear()
     train_envs = DummyVectorEnv([lambda: make_env(human)])
     test_envs = DummyVectorEnv([lambda: make_env(human)])
     train_envs.seed(seed)
@@ -80,9 +81,7 @@ def main(steps: int = 2000, seed: int = 0, human: str = "cooperative") -> dict[s
         )
     )
     seconds = time.perf_counter() - start
-    audits = [find_audit(e) for e in (*train_envs.workers, *test_envs.workers)]
-    sent = {a: sum(x.sent[a] for x in audits if x) for a in ("robot", "human")}
-    infeasible = {a: sum(x.infeasible[a] for x in audits if x) for a in ("robot", "human")}
+    sent, infeasible = audit_totals()
     return {
         "library": "tianshou",
         "steps": sent["robot"] + sent["human"],

@@ -28,7 +28,7 @@ from __future__ import annotations
 from pettingzoo import AECEnv
 
 from hg_marl.envs.parallel import TurnBasedParallelEnv
-from hg_marl.wrappers.audit import MaskAuditWrapper, audit_v0, find_audit
+from hg_marl.wrappers.audit import AUDITS, MaskAuditWrapper, audit_totals, audit_v0
 from hg_marl.wrappers.flat import FlatObservationWrapper, flatten_v0
 from hg_marl.wrappers.homogenize import HomogenizeWrapper, homogenize_v0
 
@@ -39,11 +39,12 @@ def to_parallel(env: AECEnv) -> TurnBasedParallelEnv:
 
 
 __all__ = [
+    "AUDITS",
     "FlatObservationWrapper",
     "HomogenizeWrapper",
     "MaskAuditWrapper",
+    "audit_totals",
     "audit_v0",
-    "find_audit",
     "flatten_v0",
     "homogenize_v0",
     "to_parallel",

@@ -14,11 +14,13 @@ Spaces, rewards, infos        unchanged.
 
 Why: every integration example claims "no infeasible action is ever sent"; this is the
 independent check, read from the environment's own mask rather than from the library's.
-Counts survive ``reset`` (they cover a whole training run).
+Counts survive ``reset`` (they cover a whole training run); :func:`audit_totals` sums
+them over every live audit of the process, wherever a library keeps its env copies.
 """
 
 from __future__ import annotations
 
+import weakref
 from typing import Any
 
 import numpy as np
@@ -33,6 +35,7 @@ class MaskAuditWrapper(BaseWrapper):
         super().__init__(env)
         self.sent = dict.fromkeys(env.possible_agents, 0)
         self.infeasible = dict.fromkeys(env.possible_agents, 0)
+        AUDITS.add(self)
 
     def step(self, action: Any) -> None:
         agent = self.agent_selection
@@ -45,27 +48,20 @@ class MaskAuditWrapper(BaseWrapper):
         super().step(action)
 
 
-_INNER = ("env", "aec_env", "par_env", "venv", "vec_envs")
+AUDITS: weakref.WeakSet[MaskAuditWrapper] = weakref.WeakSet()
+"""Every live audit wrapper of this process: vector-env builders (SuperSuit, Tianshou, RLlib)
+copy or build the envs they step, so read the counts here rather than from the env you built."""
 
 
-def find_audit(obj: Any, depth: int = 12) -> MaskAuditWrapper | None:
-    """The :class:`MaskAuditWrapper` inside a stack of PettingZoo, SuperSuit or SB3 wrappers.
-
-    Vector-env builders may copy the env they are given, so read the audit from the
-    object actually stepped rather than keep a reference to the one built.
-    """
-    if isinstance(obj, MaskAuditWrapper):
-        return obj
-    if depth == 0:
-        return None
-    for name in _INNER:
-        inner = getattr(obj, name, None)
-        for candidate in inner if isinstance(inner, list) else [inner]:
-            if candidate is not None and candidate is not obj:
-                found = find_audit(candidate, depth - 1)
-                if found is not None:
-                    return found
-    return None
+def audit_totals() -> tuple[dict[str, int], dict[str, int]]:
+    """Actions sent and infeasible ones, per agent, summed over :data:`AUDITS`."""
+    sent: dict[str, int] = {}
+    infeasible: dict[str, int] = {}
+    for audit in list(AUDITS):
+        for agent, n in audit.sent.items():
+            sent[agent] = sent.get(agent, 0) + n
+            infeasible[agent] = infeasible.get(agent, 0) + audit.infeasible[agent]
+    return sent, infeasible
 
 
 def audit_v0(env: AECEnv) -> MaskAuditWrapper:
