@@ -28,7 +28,9 @@ def test_the_section_has_examples() -> None:
 
 @pytest.mark.parametrize("index", range(len(BLOCKS)))
 def test_readme_block_runs(index: int) -> None:
-    out = subprocess.run([sys.executable, "-c", BLOCKS[index]], capture_output=True, text=True, timeout=180, check=False)
+    out = subprocess.run(
+        [sys.executable, "-c", BLOCKS[index]], capture_output=True, text=True, timeout=180, check=False
+    )
     assert out.returncode == 0, out.stderr
 
 
