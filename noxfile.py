@@ -19,12 +19,12 @@ nox.options.error_on_missing_interpreters = True
 
 TORCH = "torch==2.13.0"
 # The lowest versions pyproject.toml declares; core_lowest proves them.
-LOWEST = ["gymnasium==1.0.0", "pettingzoo==1.25.0", "numpy==1.26.4"]
+LOWEST = ["gymnasium==1.0.0", "pettingzoo==1.27.0", "numpy==1.26.4"]
 CORE_TESTS = ["tests/env", "tests/core"]
 
 
 def examples(session: nox.Session, extra: str, selector: str, name: str) -> None:
-    session.install(TORCH, f".[{extra}]", "pytest>=8", "hypothesis>=6.100")
+    session.install(TORCH, "-e", f".[{extra}]", "pytest>=8", "hypothesis>=6.100")
     session.run("python", "-m", "pip", "list", "--format=freeze", silent=False)
     session.run(
         "python", "-m", "pytest", "-q", "-m", "integrations", "-k", selector, "tests/integrations",
@@ -59,7 +59,7 @@ def rllib(session: nox.Session) -> None:
 @nox.session
 def core_lowest(session: nox.Session) -> None:
     """The environment and wrappers against the lowest declared gymnasium, pettingzoo and numpy."""
-    session.install(*LOWEST, ".", "pytest>=8", "hypothesis>=6.100")
+    session.install(*LOWEST, "-e", ".", "pytest>=8", "hypothesis>=6.100")
     session.run("python", "-m", "pip", "list", "--format=freeze", silent=False)
     session.run("python", "-m", "pytest", "-q", "-m", "not slow and not integrations", *CORE_TESTS)
 
@@ -67,6 +67,6 @@ def core_lowest(session: nox.Session) -> None:
 @nox.session
 def core_newest(session: nox.Session) -> None:
     """The environment and wrappers against the newest gymnasium and pettingzoo."""
-    session.install("--upgrade", "gymnasium", "pettingzoo", ".", "pytest>=8", "hypothesis>=6.100")
+    session.install("--upgrade", "gymnasium", "pettingzoo", "-e", ".", "pytest>=8", "hypothesis>=6.100")
     session.run("python", "-m", "pip", "list", "--format=freeze", silent=False)
     session.run("python", "-m", "pytest", "-q", "-m", "not slow and not integrations", *CORE_TESTS)

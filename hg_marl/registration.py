@@ -5,7 +5,8 @@ ids through its ``"module:id"`` form, which imports the module first:
 ``gymnasium.make("hg_marl:hg_marl/RobotTableCleaning-v0")`` (and ``gymnasium.make_vec``).
 Gymnasium 1.x has no entry-point plugin discovery, and PettingZoo's registry (1.27+) does
 not import modules by id, so ``pettingzoo.make("aec", "hg_marl/TableCleaning-v0")`` needs
-``import hg_marl`` first; older PettingZoo versions have no registry at all.
+``import hg_marl`` first (PettingZoo before 1.27 has no registry; 1.27 is the lowest
+version the project declares).
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ def register_envs() -> None:
     import gymnasium
     import pettingzoo
 
-    if hasattr(pettingzoo, "aec_registry") and AEC_ID not in pettingzoo.aec_registry:
+    if AEC_ID not in pettingzoo.aec_registry:
         pettingzoo.register("aec", AEC_ID, entry_point="hg_marl.envs.table_cleaning:env")
         pettingzoo.register("parallel", AEC_ID, entry_point="hg_marl.envs.parallel:parallel_env")
     if ROBOT_VIEW_ID not in gymnasium.registry:

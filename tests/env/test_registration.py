@@ -31,8 +31,6 @@ def test_gymnasium_make_needs_no_import_with_the_module_form() -> None:
 
 
 def test_pettingzoo_make_after_import() -> None:
-    if not hasattr(pettingzoo, "make"):
-        pytest.skip("this PettingZoo version has no registry")  # the lowest declared version
     aec = pettingzoo.make("aec", "hg_marl/TableCleaning-v0")
     par = pettingzoo.make("parallel", "hg_marl/TableCleaning-v0")
     aec.reset(seed=0)
