@@ -37,6 +37,10 @@ class MaskAuditWrapper(BaseWrapper):
         self.infeasible = dict.fromkeys(env.possible_agents, 0)
         AUDITS.add(self)
 
+    def reset(self, seed: int | None = None, options: dict[str, Any] | None = None) -> None:
+        AUDITS.add(self)  # copies made by vector-env builders (deepcopy, pickling) register here
+        super().reset(seed=seed, options=options)
+
     def step(self, action: Any) -> None:
         agent = self.agent_selection
         if action is not None and not (self.terminations[agent] or self.truncations[agent]):

@@ -107,3 +107,17 @@ def test_audit_counts_infeasible_actions_against_the_real_mask() -> None:
 def test_bad_wrapper_option_gets_one_line_naming_it(bad: dict) -> None:
     with pytest.raises(ValueError, match=next(iter(bad)).split("_")[0]):
         flatten_v0(hg_marl.env(), **bad)
+
+
+def test_audit_totals_count_copies_that_vector_builders_make() -> None:
+    import copy
+
+    from hg_marl.wrappers import AUDITS, audit_totals
+
+    AUDITS.clear()
+    original = audit_v0(hg_marl.env())
+    clone = copy.deepcopy(original)  # as SuperSuit's concat_vec_envs_v1 may do
+    clone.reset(seed=0)
+    clone.step(int(np.flatnonzero(clone.observe("robot")["action_mask"])[0]))
+    sent, infeasible = audit_totals()
+    assert sent == {"robot": 1, "human": 0} and infeasible == {"robot": 0, "human": 0}
