@@ -34,8 +34,13 @@ def examples(session: nox.Session, extra: str, selector: str, name: str) -> None
 
 @nox.session
 def cleanrl(session: nox.Session) -> None:
-    """CleanRL-style masked PPO, and gymnasium.make_vec(async) into MaskablePPO (torch, SB3)."""
+    """CleanRL-style masked PPO, gymnasium.make_vec(async) into MaskablePPO, and the core at the newest versions.
+
+    This environment resolves the newest gymnasium and pettingzoo, so it also runs the
+    core tests there (one install fewer than a separate session: the stage's budget).
+    """
     examples(session, "sb3", "cleanrl or make_vec", "cleanrl")
+    session.run("python", "-m", "pytest", "-q", "-m", "not slow and not integrations", *CORE_TESTS)
 
 
 @nox.session
@@ -60,13 +65,5 @@ def rllib(session: nox.Session) -> None:
 def core_lowest(session: nox.Session) -> None:
     """The environment and wrappers against the lowest declared gymnasium, pettingzoo and numpy."""
     session.install(*LOWEST, "-e", ".", "pytest>=8", "hypothesis>=6.100")
-    session.run("python", "-m", "pip", "list", "--format=freeze", silent=False)
-    session.run("python", "-m", "pytest", "-q", "-m", "not slow and not integrations", *CORE_TESTS)
-
-
-@nox.session
-def core_newest(session: nox.Session) -> None:
-    """The environment and wrappers against the newest gymnasium and pettingzoo."""
-    session.install("--upgrade", "gymnasium", "pettingzoo", "-e", ".", "pytest>=8", "hypothesis>=6.100")
     session.run("python", "-m", "pip", "list", "--format=freeze", silent=False)
     session.run("python", "-m", "pytest", "-q", "-m", "not slow and not integrations", *CORE_TESTS)
