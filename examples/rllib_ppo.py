@@ -48,7 +48,8 @@ def main(mode: str = "fixed", iterations: int = 1, batch: int = 256, seed: int =
     """Train ``iterations`` PPO iterations of ``batch`` env steps; return throughput and the audit."""
     if mode not in MODES:
         raise ValueError(f"mode must be one of {MODES}, got {mode!r}")
-    ray.init(num_cpus=1, include_dashboard=False, ignore_reinit_error=True, log_to_driver=False)
+    # address="local": always a private instance, never a cluster some other process started.
+    ray.init(address="local", num_cpus=1, include_dashboard=False, ignore_reinit_error=True, log_to_driver=False)
     register_env("hg_marl_table_cleaning", make_env)
     masked = RLModuleSpec(module_class=ActionMaskingTorchRLModule, model_config={"head_fcnet_hiddens": [64]})
     specs = {
