@@ -107,12 +107,9 @@ class FlatObservationWrapper(BaseWrapper):
         self.env.infos = value
 
 
-def flatten_v0(
-    env: AECEnv,
-    mask: str = "obs",
-    obs_key: str = "observations",
-    mask_key: str = "action_mask",
-    dtype: Any = np.float32,
-) -> FlatObservationWrapper:
-    """Wrap ``env`` so that observations are a flat ``Box`` with the mask beside them."""
-    return FlatObservationWrapper(env, mask=mask, obs_key=obs_key, mask_key=mask_key, dtype=dtype)
+def flatten_v0(env: AECEnv, **options: Any) -> FlatObservationWrapper:
+    """Wrap ``env`` so that observations are a flat ``Box`` with the mask beside them.
+
+    ``options``: ``mask``, ``obs_key``, ``mask_key``, ``dtype`` of :class:`FlatObservationWrapper`.
+    """
+    return FlatObservationWrapper(env, **options)
