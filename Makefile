@@ -8,7 +8,7 @@ OUT ?= results/paper2015
 PYTEST_ARGS ?=
 NOX_ARGS ?=
 
-.PHONY: setup reproduce test test-slow test-integrations lint bench clean
+.PHONY: setup reproduce test test-slow test-integrations test-browser lint bench clean
 
 $(BIN)/.installed: pyproject.toml
 	@echo "setup: creating $(VENV) and installing hg-marl with its dev and sb3 extras"
@@ -34,6 +34,14 @@ test-slow: setup
 # lowest/newest gymnasium and pettingzoo, each in its own nox environment (noxfile.py).
 test-integrations: setup
 	$(BIN)/nox $(NOX_ARGS)
+
+# The web front end in a real headless Chromium: Debian's chromium (installed with
+# apt-get when missing) driven by Playwright with the system executable.
+test-browser: setup
+	$(BIN)/python -m pip install --quiet -e ".[play,browser-test]"
+	test -x /usr/bin/chromium || (apt-get update -qq && apt-get install -y -qq chromium)
+	mkdir -p artifacts
+	HG_MARL_BROWSER_REQUIRED=1 $(BIN)/python -m pytest -m browser $(PYTEST_ARGS)
 
 lint: setup
 	$(BIN)/ruff check .
