@@ -6,15 +6,19 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= results/paper2015
 PYTEST_ARGS ?=
+NOX_ARGS ?=
 
 RAY_VENV ?= .venv-ray
 
-.PHONY: setup reproduce test test-slow test-browser test-ray lint bench clean
+.PHONY: setup reproduce test test-slow test-browser test-ray test-integrations lint bench clean
 
 $(BIN)/.installed: pyproject.toml
+	@echo "setup: creating $(VENV) and installing hg-marl with its dev and sb3 extras"
+	@echo "setup: numpy, gymnasium, pettingzoo, matplotlib, pandas, torch==2.13.0 (CPU), stable-baselines3, sb3-contrib, pytest, ruff, mypy, nox (1-3 min)"
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e ".[dev,sb3]"
+	$(BIN)/python -m pip install --quiet --progress-bar off -e ".[dev,sb3]"
+	@echo "setup: done ($(VENV))"
 	touch $@
 
 setup: $(BIN)/.installed
@@ -23,10 +27,15 @@ reproduce: setup
 	$(BIN)/hg-marl reproduce --out $(OUT)
 
 test: setup lint
-	$(BIN)/python -m pytest -m "not slow" $(PYTEST_ARGS)
+	$(BIN)/python -m pytest -m "not slow and not integrations and not browser and not ray" $(PYTEST_ARGS)
 
 test-slow: setup
-	$(BIN)/python -m pytest -m slow $(PYTEST_ARGS)
+	$(BIN)/python -m pytest -m "slow and not integrations and not browser and not ray" $(PYTEST_ARGS)
+
+# The MARL libraries (Tianshou, RLlib, SuperSuit+SB3, CleanRL-style, make_vec) and the
+# lowest/newest gymnasium and pettingzoo, each in its own nox environment (noxfile.py).
+test-integrations: setup
+	$(BIN)/nox $(NOX_ARGS)
 
 # The web front end in a real headless Chromium: Debian's chromium (installed with
 # apt-get when missing) driven by Playwright with the system executable.

@@ -24,7 +24,7 @@ A step of :class:`RobotView` is one cycle: the robot's action, then the human's.
 of :class:`HumanView` is the human's action, then the robot's action of the next cycle
 (the one whose completing ``wait`` the human's action may have enabled); in episodic mode
 the human's episode ends as soon as the robot completes the task. ``info`` carries the
-partner's action (index and name), the cycle's events as sentences, the clock, tasks
+partner's action (index and name), the cycle's events (one ``"; "``-joined string), the clock, tasks
 solved, effort and idle time. Views charge no decision time. Seeding: ``reset(seed=s)``
 seeds the table and the partner's own generator from ``s``.
 
@@ -45,7 +45,7 @@ from gymnasium import spaces
 
 from hg_marl.agents.humans.registry import resolve_human
 from hg_marl.core import Agent, Durations, Scenario, World
-from hg_marl.envs.table_cleaning import raw_env
+from hg_marl.envs.table_cleaning import EVENT_SEPARATOR, raw_env
 from hg_marl.policy import Actor
 
 OBSERVATIONS = ("facts", "flat", "dict")
@@ -60,6 +60,11 @@ def make_robot_actor(robot: str | Actor) -> Actor:
     from hg_marl.agents.robots import make_robot
 
     return make_robot(robot)
+
+
+def join_events(first: str, second: str) -> str:
+    """Two ``infos["events"]`` strings as one, in order (either may be empty)."""
+    return EVENT_SEPARATOR.join(e for e in (first, second) if e)
 
 
 def as_list(partner: str | Actor | Sequence[str | Actor]) -> list[str | Actor]:
@@ -144,14 +149,14 @@ class _View(gymnasium.Env):
         self._partners[index] = self.partner
         self.partner.reset(self.world, self.seat.other, np.random.default_rng(partner_seed))
 
-    def _partner_step(self) -> tuple[int, tuple[str, ...]]:
+    def _partner_step(self) -> tuple[int, str]:
         """Let the partner act; return its action index and the events of its action."""
         other = self.seat.other.label
         action = int(self.partner.act(self.env.turn(other)))
         self.env.step(action)
-        return action, tuple(self.env.infos[other]["events"])
+        return action, self.env.infos[other]["events"]
 
-    def _info(self, partner_action: int, events: tuple[str, ...], **extra: Any) -> dict[str, Any]:
+    def _info(self, partner_action: int, events: str, **extra: Any) -> dict[str, Any]:
         own = self.env.infos[self.seat.label]
         other = self.seat.other
         return {
@@ -226,10 +231,12 @@ class RobotView(_View):
         """One cycle: the robot's ``action``, then the human's; returns the robot's reward."""
         self.env.step(action)
         reward = float(self.env.rewards["robot"])
-        events = tuple(self.env.infos["robot"]["events"])
+        events = self.env.infos["robot"]["events"]
         human_action, human_events = self._partner_step()
         reward += float(self.env.rewards["robot"])
-        info = self._info(human_action, events + human_events, human_failed=self.env.infos["human"]["failed"])
+        info = self._info(
+            human_action, join_events(events, human_events), human_failed=self.env.infos["human"]["failed"]
+        )
         return self._obs(), reward, bool(self.env.terminations["robot"]), bool(self.env.truncations["robot"]), info
 
 
@@ -279,14 +286,14 @@ class HumanView(_View):
         """The human's ``action`` (ending the cycle), then the robot's next action."""
         effort_before = self.env.infos["human"]["effort"]
         self.env.step(action)
-        events = tuple(self.env.infos["human"]["events"])
+        events = self.env.infos["human"]["events"]
         work = self.env.infos["human"]["effort"] - effort_before
         done = bool(self.env.terminations["human"])
         truncated = bool(self.env.truncations["human"])
         robot_action, task_reward = -1, 0.0
         if not (done or truncated):
             robot_action, robot_events = self._partner_step()
-            events += robot_events
+            events = join_events(events, robot_events)
             task_reward = float(self.env.rewards["human"])
             # Episodic: the task is over once the robot completes it; the human's move left
             # in that cycle cannot matter, so the human's episode ends here.

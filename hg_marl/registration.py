@@ -1,4 +1,13 @@
-"""Registers the environment ids with PettingZoo and Gymnasium (idempotent)."""
+"""Registers the environment ids with PettingZoo and Gymnasium (idempotent).
+
+Importing ``hg_marl`` calls :func:`register_envs`. Without that import, Gymnasium finds the
+ids through its ``"module:id"`` form, which imports the module first:
+``gymnasium.make("hg_marl:hg_marl/RobotTableCleaning-v0")`` (and ``gymnasium.make_vec``).
+Gymnasium 1.x has no entry-point plugin discovery, and PettingZoo's registry (1.27+) does
+not import modules by id, so ``pettingzoo.make("aec", "hg_marl/TableCleaning-v0")`` needs
+``import hg_marl`` first (PettingZoo before 1.27 has no registry; 1.27 is the lowest
+version the project declares).
+"""
 
 from __future__ import annotations
 

@@ -36,9 +36,14 @@ Time. A cycle is the robot's turn then the human's. The agents act in parallel, 
 simulated clock advances at the end of each cycle by the longer of the two actions'
 durations, plus any decision time a runner charged with :meth:`raw_env.charge_time`.
 
-Infos (per agent, after its turn): ``clock``, ``cycle``, ``tasks_solved``, ``action``
-(name), ``failed``, ``events`` (of its last action, as sentences), and cumulative
-``effort`` (seconds spent on physical actions) and ``idle`` (seconds waiting).
+Infos (per agent, after its turn) have a fixed structure, so replay buffers (Tianshou,
+RLlib) can store them: always the same keys, each with one type and shape for the whole
+run. ``clock`` (float), ``cycle`` (int), ``tasks_solved`` (int), ``action`` (str, the
+name; ``""`` before the first move), ``failed`` (bool), ``events`` (str: the sentences of
+its last action joined by ``"; "``, ``""`` when nothing happened), and cumulative
+``effort`` (float, seconds spent on physical actions) and ``idle`` (float, seconds
+waiting). ``events_tuple=True`` makes ``events`` a tuple of sentences instead (its
+length varies, so only for readers that do not batch infos).
 
 Version history: v0 - initial release.
 """
@@ -60,6 +65,8 @@ from hg_marl.envs.render import HUMAN_MESSAGE, caption_of, render_ansi, render_r
 from hg_marl.policy import Turn
 
 _RESET_EVENT = Event("reset", "table", "", "new layout")
+EVENT_SEPARATOR = "; "
+"""Joins the sentences of ``infos[agent]["events"]`` (split on it to get them back)."""
 
 
 class InvalidActionError(ValueError):
@@ -84,6 +91,7 @@ class raw_env(AECEnv):
         time_budget: float | None = None,
         render_mode: str | None = None,
         durations: Durations | None = None,
+        events_tuple: bool = False,
     ) -> None:
         """Build the environment.
 
@@ -95,6 +103,8 @@ class raw_env(AECEnv):
             time_budget: truncate once the simulated clock reaches this (None: no limit).
             render_mode: None, ``"ansi"`` or ``"rgb_array"``.
             durations: override the scenario's action durations.
+            events_tuple: ``infos[agent]["events"]`` as a tuple of sentences instead of
+                one ``"; "``-joined string (see the module docstring).
         """
         super().__init__()
         if render_mode == "human":
@@ -131,7 +141,8 @@ class raw_env(AECEnv):
             for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)
         }
         self._is_wait = [[a.kind is Kind.WAIT for a in self.world.actions(ag)] for ag in Agent]
-        self._event_text: dict[tuple[Event, ...], tuple[str, ...]] = {}
+        self.events_tuple = bool(events_tuple)
+        self._event_text: dict[tuple[Event, ...], str | tuple[str, ...]] = {}
         self._rng = np.random.default_rng()
         self.world_state: State = self.world.initial_state(self._rng)
         """The full symbolic state (read it; the environment replaces it, never mutates it)."""
@@ -263,22 +274,23 @@ class raw_env(AECEnv):
                 self.truncations[name] = truncate and not done
         for i, name in enumerate(self.agents):
             info = self.infos[name]
-            info["clock"], info["cycle"], info["tasks_solved"] = self.clock, self.cycles, self.tasks_solved
-            info["effort"], info["idle"] = self._effort[i], self._idle[i]
+            info["clock"], info["cycle"], info["tasks_solved"] = float(self.clock), self.cycles, self.tasks_solved
+            info["effort"], info["idle"] = float(self._effort[i]), float(self._idle[i])
 
     def _info(self, agent: Agent, action: str, failed: bool, events: tuple[Event, ...]) -> dict[str, Any]:
         text = self._event_text.get(events)
         if text is None:
-            text = self._event_text[events] = tuple(str(e) for e in events)
+            sentences = tuple(str(e) for e in events)
+            text = self._event_text[events] = sentences if self.events_tuple else EVENT_SEPARATOR.join(sentences)
         return {
-            "clock": self.clock,
-            "cycle": self.cycles,
-            "tasks_solved": self.tasks_solved,
+            "clock": float(self.clock),
+            "cycle": int(self.cycles),
+            "tasks_solved": int(self.tasks_solved),
             "action": action,
-            "failed": failed,
+            "failed": bool(failed),
             "events": text,
-            "effort": self._effort[agent],
-            "idle": self._idle[agent],
+            "effort": float(self._effort[agent]),
+            "idle": float(self._idle[agent]),
         }
 
     # ---- observations ----------------------------------------------------------------

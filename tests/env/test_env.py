@@ -78,7 +78,7 @@ def test_infeasible_action_has_no_effect_and_is_reported() -> None:
     before = env.unwrapped.world_state
     env.step(names(env, "robot")["throw(tape1)"])
     assert env.unwrapped.world_state == before
-    assert env.infos["robot"]["failed"] is True and env.infos["robot"]["events"][0].startswith("robot failed")
+    assert env.infos["robot"]["failed"] is True and env.infos["robot"]["events"].startswith("robot failed")
 
 
 def test_handover_through_env() -> None:
