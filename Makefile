@@ -6,8 +6,9 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= results/paper2015
 PYTEST_ARGS ?=
+MUTATION_ARGS ?=
 
-.PHONY: setup reproduce test test-slow lint bench clean
+.PHONY: setup reproduce test test-slow test-mutation mutation-full lint bench clean
 
 $(BIN)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -25,6 +26,19 @@ test: setup lint
 
 test-slow: setup
 	$(BIN)/python -m pytest -m slow $(PYTEST_ARGS)
+
+# Mutation testing (mutation/README.md): a seeded sample of mutants per module of
+# mutation/modules.toml; prints the score per module and every survivor.
+$(BIN)/.mutation: $(BIN)/.installed
+	$(BIN)/python -m pip install --quiet -e ".[dev,sb3,mutation]"
+	touch $@
+
+test-mutation: $(BIN)/.mutation
+	$(BIN)/python mutation/run.py $(MUTATION_ARGS)
+
+# Every mutant of every module (hours on 2 cores; see mutation/README.md).
+mutation-full: $(BIN)/.mutation
+	$(BIN)/python mutation/run.py --full $(MUTATION_ARGS)
 
 lint: setup
 	$(BIN)/ruff check .

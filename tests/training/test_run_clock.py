@@ -1,0 +1,123 @@
+"""The runner's clock and columns, checked against numbers stated in the test.
+
+The scenario is ``paper2015`` with a ``[durations]`` table written here, each duration a
+distinct binary fraction, so the expected clock is rebuilt from the per-decision log and
+these numbers alone (not from the environment's or the planner's duration/cost code):
+
+    clock after cycle k = clock after cycle k-1
+                          + decision_time_k      (when charge_decision_time)
+                          + max(duration of the robot's action, duration of the human's)
+
+with a failed robot action lasting ``failed`` (the precondition check).
+"""
+
+from __future__ import annotations
+
+import tomllib
+from importlib import resources
+
+import pandas as pd
+import pytest
+
+from hg_marl.agents.humans import make_human
+from hg_marl.agents.robots import make_robot
+from hg_marl.training.runner import RunConfig, run
+
+DURATIONS = {
+    "pick": 2.5,
+    "throw": 1.75,
+    "give": 1.25,
+    "take": 0.75,
+    "place": 2.25,
+    "goto": 3.5,
+    "wait": 0.5,
+    "failed": 0.125,
+}
+
+
+@pytest.fixture(scope="module")
+def scenario(tmp_path_factory: pytest.TempPathFactory) -> str:
+    """paper2015 with the durations above."""
+    text = resources.files("hg_marl.core.scenarios").joinpath("paper2015.toml").read_text()
+    body = "\n".join(f"{k} = {v}" for k, v in DURATIONS.items())
+    path = tmp_path_factory.mktemp("scenario") / "timed.toml"
+    path.write_text(f"{text}\n[durations]\n{body}\n")
+    assert tomllib.loads(path.read_text())["durations"]["goto"] == 3.5
+    return str(path)
+
+
+def duration(name: str, failed: bool = False) -> float:
+    """Duration of an action from its readable name, e.g. ``pick(tape1)`` -> pick."""
+    return DURATIONS["failed"] if failed else DURATIONS[name.split("(")[0]]
+
+
+def expected_clock(log: pd.DataFrame, charged: bool) -> list[float]:
+    clock, out = 0.0, []
+    for row in log.itertuples():
+        robot = duration(str(row.action_name), bool(row.failed))
+        human = duration(str(row.human_action_name))
+        clock += (float(row.decision_time) if charged else 0.0) + max(robot, human)
+        out.append(clock)
+    return out
+
+
+def hybrid_run(scenario: str, charge: bool, seed: int = 2) -> pd.DataFrame:
+    robot = make_robot("hybrid", criterion="random")
+    config = RunConfig(scenario=scenario, duration=120.0, seed=seed, charge_decision_time=charge)
+    log = run(robot, make_human("cooperative"), config).log
+    return log[log["human_action"] >= 0]  # the last decision may be cut by the time budget
+
+
+@pytest.mark.parametrize("charge", [True, False])
+def test_clock_is_sum_of_longer_durations_plus_charged_decisions(scenario: str, charge: bool) -> None:
+    log = hybrid_run(scenario, charge)
+    # the sample must exercise every term: failed habit actions, both experts, real decision times
+    assert log["failed"].any() and set(log["expert"]) == {"planner", "habit"}
+    assert (log["decision_time"] > 0).all()
+    assert log["time"].tolist() == pytest.approx(expected_clock(log, charged=charge), abs=1e-9)
+
+
+def test_uncharged_run_differs_from_charged_run_by_the_decision_times(scenario: str) -> None:
+    # Same seed, same decisions (decision time is modelled, not measured): the clocks differ
+    # by exactly the running sum of the decision times.
+    charged, free = hybrid_run(scenario, True), hybrid_run(scenario, False)
+    n = min(len(charged), len(free))
+    assert charged["action"].iloc[:n].tolist() == free["action"].iloc[:n].tolist()
+    gap = (charged["time"].iloc[:n] - free["time"].iloc[:n]).tolist()
+    assert gap == pytest.approx(charged["decision_time"].iloc[:n].cumsum().tolist(), abs=1e-9)
+
+
+def test_tasks_column_counts_rewards_so_far(scenario: str) -> None:
+    result = run(make_robot("planner"), make_human("cooperative"), RunConfig(scenario=scenario, duration=150.0, seed=0))
+    log = result.log
+    counted, running = [], 0
+    for reward in log["reward"]:
+        running += int(reward == 1.0)
+        counted.append(running)
+    assert running >= 3, "the run must solve several tasks for the column to be tested"
+    assert log["tasks_solved"].tolist() == counted
+    assert result.summary["tasks_solved"] == running
+    # a reward comes only on a robot wait (the robot's completing wait on a clean table)
+    assert set(log.loc[log["reward"] == 1.0, "action_name"]) == {"wait"}
+
+
+def test_summary_fields_from_the_log(scenario: str) -> None:
+    robot, human = make_robot("hybrid", criterion="random"), make_human("cooperative")
+    result = run(robot, human, RunConfig(scenario=scenario, duration=80.0, seed=1))
+    log, s = result.log, result.summary
+    assert s["actions"] == len(log)
+    assert s["failed_actions"] == int(log["failed"].sum()) > 0
+    assert s["simulated_time"] == log["time"].iloc[-1] >= 80.0
+    assert s["planner_share"] == pytest.approx((log["expert"] == "planner").sum() / len(log))
+    assert s["duration"] == 80.0
+
+
+def test_run_stops_at_duration_not_before(scenario: str) -> None:
+    result = run(make_robot("planner"), make_human("cooperative"), RunConfig(scenario=scenario, duration=60.0, seed=0))
+    times = result.log["time"].tolist()
+    assert times[-1] >= 60.0 > times[-2]
+
+
+def test_max_decisions_caps_the_log(scenario: str) -> None:
+    config = RunConfig(scenario=scenario, duration=1e6, seed=0, max_decisions=7)
+    assert len(run(make_robot("planner"), make_human("cooperative"), config).log) == 7
