@@ -27,14 +27,17 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import shlex
 import shutil
 import subprocess
 import sys
+import tarfile
 import tempfile
 import time
 import tomllib
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
+from io import BytesIO
 from pathlib import Path
 
 import numpy as np
@@ -82,6 +85,8 @@ class Outcome:
     total: int = 0
     run: int = 0
     killed: int = 0
+    timeouts: int = 0
+    incompetent: int = 0
     equivalent: int = 0
     survivors: list[dict[str, str | int]] = field(default_factory=list)
     baseline_s: float = 0.0
@@ -193,24 +198,37 @@ def _diff_lines(diff: str) -> tuple[str, str]:
     return " / ".join(removed), " / ".join(added)
 
 
-def run_module(module: Module, sample: int | None, seed: int, equivalents: list[Equivalent], work: Path) -> Outcome:
+def tests_from(rev: str, dest: Path) -> None:
+    """Replace a scratch copy's tests by those of commit ``rev`` (to score an older suite)."""
+    archive = subprocess.run(["git", "archive", rev, "tests"], cwd=ROOT, capture_output=True, check=True).stdout
+    shutil.rmtree(dest / "tests")
+    with tarfile.open(fileobj=BytesIO(archive)) as tar:
+        tar.extractall(dest, filter="data")
+
+
+def run_module(
+    module: Module, sample: int | None, seed: int, equivalents: list[Equivalent], work: Path, rev: str | None = None
+) -> Outcome:
     """Baseline, enumerate, sample, execute and score one module."""
     from cosmic_ray.work_db import WorkDB, use_db
-    from cosmic_ray.work_item import WorkerOutcome, WorkResult
+    from cosmic_ray.work_item import TestOutcome, WorkerOutcome, WorkResult
 
     out = Outcome(module.key, module.path)
     start = time.perf_counter()
     scratch = scratch_copy(work / module.key)
+    if rev:
+        tests_from(rev, scratch)
+        module = Module(module.key, module.path, tuple(t for t in module.tests if (scratch / t).exists()), 0, 0.0)
     _check_layout(scratch, module)
     env = _env(scratch)
     t0 = time.perf_counter()
-    base = subprocess.run(_test_command(module.tests), cwd=scratch, env=env, capture_output=True, text=True)
+    command = shlex.join(_test_command(module.tests))  # cosmic-ray runs shlex.split(command)
+    base = subprocess.run(shlex.split(command), cwd=scratch, env=env, capture_output=True, text=True)
     out.baseline_s = time.perf_counter() - t0
     if base.returncode != 0:
         out.error = f"tests fail before mutation:\n{base.stdout[-2000:]}"
         return out
     timeout = max(30.0, 4.0 * out.baseline_s)
-    command = " ".join(_test_command(module.tests))
     config = scratch / "cosmic-ray.toml"
     config.write_text(
         "[cosmic-ray]\n"
@@ -237,6 +255,10 @@ def run_module(module: Module, sample: int | None, seed: int, equivalents: list[
             if result.worker_outcome == WorkerOutcome.SKIPPED:
                 continue
             out.run += 1
+            if result.output == "timeout":  # cosmic-ray counts a timed-out test run as killed
+                out.timeouts += 1
+            if result.test_outcome == TestOutcome.INCOMPETENT:  # the mutant cannot even be imported
+                out.incompetent += 1
             if result.worker_outcome != WorkerOutcome.NORMAL or result.is_killed:
                 out.killed += 1
                 continue
@@ -263,14 +285,16 @@ def run_module(module: Module, sample: int | None, seed: int, equivalents: list[
 
 def report(outcomes: list[Outcome], target: float) -> None:
     """The score table, then every survivor (justified equivalents marked)."""
-    print(f"\n{'module':<18} {'file':<32} {'mutants':>7} {'run':>4} {'killed':>6} {'equiv':>5} {'score':>6}  time")
+    head = f"{'module':<18} {'file':<32} {'mutants':>7} {'run':>4} {'killed':>6} {'t/o':>4} {'inc':>4} {'equiv':>5}"
+    print(f"\n{head} {'score':>6}  time")
     for o in outcomes:
         if o.error:
             print(f"{o.key:<18} {o.path:<32} ERROR: {o.error.splitlines()[0]}")
             continue
         flag = "" if o.score >= target else f"  (< target {target:.0%})"
         print(
-            f"{o.key:<18} {o.path:<32} {o.total:>7} {o.run:>4} {o.killed:>6} {o.equivalent:>5} "
+            f"{o.key:<18} {o.path:<32} {o.total:>7} {o.run:>4} {o.killed:>6} {o.timeouts:>4} {o.incompetent:>4} "
+            f"{o.equivalent:>5} "
             f"{o.score:>6.1%}  {o.wall_s:5.0f}s{flag}"
         )
     for o in outcomes:
@@ -292,6 +316,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--jobs", type=int, default=2, help="modules mutated at once (default 2)")
     parser.add_argument("--json", type=Path, help="also write the results here")
     parser.add_argument("--keep", action="store_true", help="keep the scratch copies (printed)")
+    parser.add_argument("--tests-from", metavar="REV", help="score the tests of commit REV (e.g. to compare)")
     args = parser.parse_args(argv)
     try:
         modules, defaults = load_modules()
@@ -329,6 +354,7 @@ def main(argv: list[str] | None = None) -> int:
                     seed,
                     equivalents,
                     work,
+                    args.tests_from,
                 )
                 for m in selected
             ]
