@@ -68,12 +68,26 @@ class Module:
 
 @dataclass(frozen=True)
 class Equivalent:
-    """A survivor judged equivalent: same behaviour, so no test can kill it."""
+    """A survivor judged equivalent: same behaviour, so no test can kill it.
+
+    ``module`` is a key of modules.toml or ``*``; ``operator``, ``removed`` and ``added``
+    (the changed line before and after, stripped) narrow the match when given.
+    """
 
     module: str
-    removed: str
-    added: str
     why: str
+    operator: str = ""
+    removed: str = ""
+    added: str = ""
+
+    def matches(self, module: str, operator: str, removed: str, added: str) -> bool:
+        """Whether a survivor is this equivalent mutant."""
+        return (
+            self.module in ("*", module)
+            and self.operator in ("", operator)
+            and self.removed in ("", removed)
+            and self.added in ("", added)
+        )
 
 
 @dataclass
@@ -136,11 +150,15 @@ def load_equivalents(path: Path = EQUIVALENT) -> list[Equivalent]:
     """The justified equivalent mutants (matched by module and changed line, not line number)."""
     data = tomllib.loads(path.read_text()) if path.exists() else {}
     out = []
+    fields = ("module", "why", "operator", "removed", "added")
     for i, entry in enumerate(data.get("equivalent", [])):
-        for name in ("module", "removed", "added", "why"):
-            if not isinstance(entry.get(name), str):
-                raise ConfigError(f"{path}: field 'equivalent[{i}].{name}': expected a string")
-        out.append(Equivalent(entry["module"], entry["removed"].strip(), entry["added"].strip(), entry["why"]))
+        for name in fields:
+            if not isinstance(entry.get(name, ""), str) or (name in ("module", "why") and not entry.get(name)):
+                raise ConfigError(f"{path}: field 'equivalent[{i}].{name}': expected a non-empty string")
+        unknown = set(entry) - set(fields)
+        if unknown:
+            raise ConfigError(f"{path}: field 'equivalent[{i}].{sorted(unknown)[0]}': unknown (known: {fields})")
+        out.append(Equivalent(**{k: str(entry.get(k, "")).strip() for k in fields}))
     return out
 
 
@@ -264,15 +282,13 @@ def run_module(
                 continue
             removed, added = _diff_lines(result.diff or "")
             mutation = item.mutations[0]
-            why = next(
-                (e.why for e in equivalents if e.module == module.key and e.removed == removed and e.added == added),
-                "",
-            )
+            op = mutation.operator_name
+            why = next((e.why for e in equivalents if e.matches(module.key, op, removed, added)), "")
             out.equivalent += bool(why)
             out.survivors.append(
                 {
                     "line": mutation.start_pos[0],
-                    "operator": mutation.operator_name,
+                    "operator": op,
                     "removed": removed,
                     "added": added,
                     "equivalent": why,
@@ -305,6 +321,21 @@ def report(outcomes: list[Outcome], target: float) -> None:
             print(f"\n{o.key}: {o.error}")
 
 
+def rescore(path: Path, equivalents: list[Equivalent], target: float) -> int:
+    """Report a saved run again with the current list of equivalent mutants."""
+    outcomes = []
+    for data in json.loads(path.read_text()):
+        data.pop("score", None)
+        o = Outcome(**data)
+        for s in o.survivors:
+            key = (o.key, str(s["operator"]), str(s["removed"]), str(s["added"]))
+            s["equivalent"] = next((e.why for e in equivalents if e.matches(*key)), "")
+        o.equivalent = sum(bool(s["equivalent"]) for s in o.survivors)
+        outcomes.append(o)
+    report(outcomes, target)
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
     """Parse options, run the modules (``--jobs`` at a time) and report."""
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
@@ -317,6 +348,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--json", type=Path, help="also write the results here")
     parser.add_argument("--keep", action="store_true", help="keep the scratch copies (printed)")
     parser.add_argument("--tests-from", metavar="REV", help="score the tests of commit REV (e.g. to compare)")
+    parser.add_argument("--rescore", type=Path, metavar="JSON", help="re-apply equivalent.toml to a --json file")
     args = parser.parse_args(argv)
     try:
         modules, defaults = load_modules()
@@ -338,6 +370,8 @@ def main(argv: list[str] | None = None) -> int:
     except (ConfigError, tomllib.TOMLDecodeError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    if args.rescore:
+        return rescore(args.rescore, equivalents, float(defaults["target"]))
     if not selected:
         print("no module selected (nothing to mutate)")
         return 0

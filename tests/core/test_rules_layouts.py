@@ -149,3 +149,62 @@ def test_layout_draws_two_distinct_spots(w: World) -> None:
     for _ in range(20):
         s = w.initial_state(rng)
         assert len(set(s.where)) == 2 and set(s.where) <= {MAT, SHELF, HMAT} and s.robot_at == LOC_A
+
+
+def test_place_names(w: World) -> None:
+    names = [w.place_name(p) for p in range(7)]
+    assert names == ["mat", "shelf", "human_mat", "red_bin", "blue_bin", "robot's hand", "human's hand"]
+
+
+def facts(w: World, state: State) -> dict[str, int]:
+    return dict(zip(w.fact_names, w.facts(state).tolist(), strict=True))
+
+
+def test_facts_robot_holding_at_a_bin_location(w: World) -> None:
+    # red1 in the robot's hand, blue1 in its bin, robot at loc_c (reaches the mat and the blue bin)
+    assert facts(w, State((RHAND, BLUE_BIN), LOC_C)) == {
+        "isReachableBy(red1,robot)": 0,  # in a hand, not on a spot
+        "isReachableBy(blue1,robot)": 0,  # in a bin
+        "isReachableBy(red_bin,robot)": 0,  # only from loc_a
+        "isReachableBy(blue_bin,robot)": 1,
+        "isReachableBy(red1,human)": 0,
+        "isReachableBy(blue1,human)": 0,
+        "isReachableBy(red_bin,human)": 0,
+        "isReachableBy(blue_bin,human)": 1,
+        "isIn(red1,red_bin)": 0,
+        "isIn(blue1,blue_bin)": 1,
+        "isReachableBy(human,robot)": 0,  # loc_c is not a handover location
+        "hasInHand(robot,red1)": 1,
+        "hasInHand(robot,blue1)": 0,
+        "hasInHand(human,red1)": 0,
+        "hasInHand(human,blue1)": 0,
+        "isOffering(robot,red1)": 0,
+        "isOffering(robot,blue1)": 0,
+        "isOffering(human,red1)": 0,
+        "isOffering(human,blue1)": 0,
+    }
+
+
+def test_facts_human_offering_at_the_handover_location(w: World) -> None:
+    # the human holds red1 out to the robot at loc_d; blue1 on the shelf (reached from loc_a only)
+    assert facts(w, State((HHAND, SHELF), LOC_D, offer_by=int(H), offer_obj=RED)) == {
+        "isReachableBy(red1,robot)": 0,
+        "isReachableBy(blue1,robot)": 0,
+        "isReachableBy(red_bin,robot)": 0,
+        "isReachableBy(blue_bin,robot)": 1,  # loc_d reaches the blue bin
+        "isReachableBy(red1,human)": 0,
+        "isReachableBy(blue1,human)": 0,
+        "isReachableBy(red_bin,human)": 0,
+        "isReachableBy(blue_bin,human)": 1,
+        "isIn(red1,red_bin)": 0,  # in a hand (a place code above the bins'), not in the bin
+        "isIn(blue1,blue_bin)": 0,
+        "isReachableBy(human,robot)": 1,
+        "hasInHand(robot,red1)": 0,
+        "hasInHand(robot,blue1)": 0,
+        "hasInHand(human,red1)": 1,
+        "hasInHand(human,blue1)": 0,
+        "isOffering(robot,red1)": 0,
+        "isOffering(robot,blue1)": 0,
+        "isOffering(human,red1)": 1,
+        "isOffering(human,blue1)": 0,
+    }
