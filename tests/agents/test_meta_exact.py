@@ -218,3 +218,30 @@ def test_learning_state_needs_some_learning() -> None:
     assert mc.decide(view([0.25] * 4, amplitude=1e-7), proposal(0)).expert is Expert.PLANNER
     d = mc.decide(view([0.25] * 4, amplitude=1e-5), never)  # d = 0.99: f = 1 + 0.5 (0.99 - 1) = 0.995
     assert d.expert is Expert.HABIT and d.stats["weight_change"] == pytest.approx(0.995)
+
+
+def test_cost_model_constants_and_validation() -> None:
+    from hg_marl.agents.meta import CostModel
+
+    model = CostModel()  # documented defaults: habit 1 ms; planner 50 ms + 0.5 ms per node
+    assert model.habit_cost(wall_time=7.0) == 0.001
+    assert model.planner_cost(0) == pytest.approx(0.05)
+    assert model.planner_cost(200, wall_time=7.0) == pytest.approx(0.15)
+    wall = CostModel(mode="wall")
+    assert wall.habit_cost(wall_time=0.3) == 0.3 and wall.planner_cost(200, wall_time=0.4) == 0.4
+    assert CostModel(habit=0.0, planner_base=0.0, planner_per_node=0.0).planner_cost(10) == 0.0
+    for name in ("habit", "planner_base", "planner_per_node"):
+        with pytest.raises(ValueError, match=f"CostModel.{name}"):
+            CostModel(**{name: -1e-9})  # type: ignore[arg-type]
+
+
+def test_controller_record_and_reasons() -> None:
+    mc = controller("planner")
+    d = mc.decide(view([0.25] * 4), proposal(2))
+    assert d.reason == "criterion"
+    assert (d.record["expert"], d.record["action"], d.record["reason"]) == ("planner", 2, "criterion")
+    failed = PlanProposal.make(2, N, 0.1, success=False)
+    d = mc.decide(view([0.7, 0.1, 0.1, 0.1]), failed)
+    assert (d.expert, d.action, d.reason, d.plan) == (Expert.HABIT, 0, "planner_failed", failed)
+    d = mc.decide(view([0.7, 0.1, 0.1, 0.1]), None)
+    assert (d.expert, d.action, d.reason, d.plan) == (Expert.HABIT, 0, "habit_only", None)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import tomllib
 from importlib import resources
+from pathlib import Path
 
 import pandas as pd
 import pytest
@@ -121,3 +122,26 @@ def test_run_stops_at_duration_not_before(scenario: str) -> None:
 def test_max_decisions_caps_the_log(scenario: str) -> None:
     config = RunConfig(scenario=scenario, duration=1e6, seed=0, max_decisions=7)
     assert len(run(make_robot("planner"), make_human("cooperative"), config).log) == 7
+
+
+def test_progress_hook_sees_each_cycles_clock_and_log_round_trips(scenario: str, tmp_path: Path) -> None:
+    seen: list[float] = []
+    config = RunConfig(scenario=scenario, duration=40.0, seed=0)
+    result = run(make_robot("planner"), make_human("cooperative"), config, on_decision=seen.append)
+    finished = result.log[result.log["human_action"] >= 0]
+    assert seen == finished["time"].tolist()
+    path = result.save(tmp_path / "log.csv")
+    back = pd.read_csv(path)
+    assert list(back.columns) == list(result.log.columns) and len(back) == len(result.log)
+    assert back["action_name"].tolist() == result.log["action_name"].tolist()
+
+
+def test_human_as_expected_only_where_a_plan_predicted_the_human(scenario: str) -> None:
+    robot = make_robot("hybrid", criterion="random")
+    log = run(robot, make_human("cooperative"), RunConfig(scenario=scenario, duration=60.0, seed=3)).log
+    log = log[log["human_action"] >= 0]
+    no_prediction = log["expected_human_action"] < 0
+    assert no_prediction.any() and (~no_prediction).any()
+    assert log.loc[no_prediction, "human_as_expected"].isna().all()
+    predicted = log.loc[~no_prediction]
+    assert (predicted["human_as_expected"] == (predicted["human_action"] == predicted["expected_human_action"])).all()
