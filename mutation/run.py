@@ -131,7 +131,7 @@ def load_modules(path: Path = CONFIG) -> tuple[dict[str, Module], dict[str, floa
         tests = entry.get("tests")
         if not isinstance(tests, list) or not tests:
             raise ConfigError(f"{where}.tests': expected a non-empty list of test files")
-        present = tuple(t for t in tests if (ROOT / t).exists())
+        present = tuple(t for t in tests if (ROOT / t.split("::")[0]).exists())  # files or pytest node ids
         if not present:
             raise ConfigError(f"{where}.tests': none of {tests} exists (renamed? update this entry)")
         for missing in sorted(set(tests) - set(present)):
@@ -236,7 +236,8 @@ def run_module(
     scratch = scratch_copy(work / module.key)
     if rev:
         tests_from(rev, scratch)
-        module = Module(module.key, module.path, tuple(t for t in module.tests if (scratch / t).exists()), 0, 0.0)
+        kept = tuple(t for t in module.tests if (scratch / t.split("::")[0]).exists())
+        module = Module(module.key, module.path, kept, 0, 0.0)
     _check_layout(scratch, module)
     env = _env(scratch)
     t0 = time.perf_counter()
