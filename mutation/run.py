@@ -349,6 +349,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--json", type=Path, help="also write the results here")
     parser.add_argument("--keep", action="store_true", help="keep the scratch copies (printed)")
     parser.add_argument("--tests-from", metavar="REV", help="score the tests of commit REV (e.g. to compare)")
+    parser.add_argument("--list", action="store_true", help="print the selected modules and their tests, run nothing")
     parser.add_argument("--rescore", type=Path, metavar="JSON", help="re-apply equivalent.toml to a --json file")
     args = parser.parse_args(argv)
     try:
@@ -373,6 +374,10 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     if args.rescore:
         return rescore(args.rescore, equivalents, float(defaults["target"]))
+    if args.list:
+        for m in selected:
+            print(f"{m.key:<18} {m.path:<32} sample {m.sample:<3} tests: {' '.join(m.tests)}")
+        return 0
     if not selected:
         print("no module selected (nothing to mutate)")
         return 0
