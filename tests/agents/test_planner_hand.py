@@ -149,3 +149,16 @@ def test_bound_is_admissible_and_not_trivial(tmp_path: Path) -> None:
         planner = Planner(world(tmp_path, text))
         bound = planner.space.bound(State((0,), 0))
         assert 4.725 <= bound <= optimal + 1e-9
+
+
+def test_handover_when_idling_costs_more_than_working(tmp_path: Path) -> None:
+    # idle weight 0.5 above the effort weight 0.1 (the bound's other branch, b < 0); the same
+    # plan stays optimal: time 11.5, effort 3, idle 8.5 -> 11.5 + 0.1*3 + 0.5*8.5 = 16.05
+    weights = CostWeights(time=1.0, human_effort=0.1, effort_balance=0.0, human_idle=0.5, human_holding=0.0)
+    planner = Planner(world(tmp_path, HANDOVER), PlannerConfig(weights=weights))
+    result = planner.plan(State((0,), 0))
+    assert result.cost == pytest.approx(16.05)
+    assert result.breakdown == pytest.approx(
+        {"time": 11.5, "human_effort": 0.3, "effort_balance": 0.0, "human_idle": 4.25, "human_holding": 0.0}
+    )
+    assert planner.space.bound(State((0,), 0)) <= 16.05 + 1e-9

@@ -208,3 +208,12 @@ def test_facts_human_offering_at_the_handover_location(w: World) -> None:
         "isOffering(human,red1)": 1,
         "isOffering(human,blue1)": 0,
     }
+
+
+def test_facts_objects_on_reachable_spots(w: World) -> None:
+    # red1 on the mat (robot at loc_b reaches it), blue1 on the human's mat
+    on = {k for k, v in facts(w, State((MAT, HMAT), LOC_B)).items() if v}
+    assert on == {"isReachableBy(red1,robot)", "isReachableBy(blue1,human)", "isReachableBy(blue_bin,human)"}
+    # from loc_a the robot reaches the red bin and the shelf, not the mat
+    on = {k for k, v in facts(w, State((MAT, SHELF), LOC_A)).items() if v}
+    assert on == {"isReachableBy(blue1,robot)", "isReachableBy(red_bin,robot)", "isReachableBy(blue_bin,human)"}
