@@ -27,6 +27,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import shlex
 import shutil
 import subprocess
@@ -70,8 +71,9 @@ class Module:
 class Equivalent:
     """A survivor judged equivalent: same behaviour, so no test can kill it.
 
-    ``module`` is a key of modules.toml or ``*``; ``operator``, ``removed`` and ``added``
-    (the changed line before and after, stripped) narrow the match when given.
+    ``module`` is a key of modules.toml or ``*``; ``operator`` (a trailing ``*`` matches
+    any suffix), ``removed`` and ``added`` (the changed line before and after, stripped)
+    and ``pattern`` (a regular expression searched in the removed line) narrow the match.
     """
 
     module: str
@@ -79,14 +81,17 @@ class Equivalent:
     operator: str = ""
     removed: str = ""
     added: str = ""
+    pattern: str = ""
 
     def matches(self, module: str, operator: str, removed: str, added: str) -> bool:
         """Whether a survivor is this equivalent mutant."""
+        op = self.operator
         return (
             self.module in ("*", module)
-            and self.operator in ("", operator)
+            and (not op or op == operator or (op.endswith("*") and operator.startswith(op[:-1])))
             and self.removed in ("", removed)
             and self.added in ("", added)
+            and (not self.pattern or re.search(self.pattern, removed) is not None)
         )
 
 
@@ -150,7 +155,7 @@ def load_equivalents(path: Path = EQUIVALENT) -> list[Equivalent]:
     """The justified equivalent mutants (matched by module and changed line, not line number)."""
     data = tomllib.loads(path.read_text()) if path.exists() else {}
     out = []
-    fields = ("module", "why", "operator", "removed", "added")
+    fields = ("module", "why", "operator", "removed", "added", "pattern")
     for i, entry in enumerate(data.get("equivalent", [])):
         for name in fields:
             if not isinstance(entry.get(name, ""), str) or (name in ("module", "why") and not entry.get(name)):

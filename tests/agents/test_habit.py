@@ -147,17 +147,3 @@ def test_save_is_atomic_on_failure(tmp_path, monkeypatch) -> None:
 def test_config_rejects_bad_values(kwargs: dict) -> None:
     with pytest.raises(ValueError, match="QLearnerConfig"):
         QLearnerConfig(**kwargs)
-
-
-class _TopDraw:
-    """A generator stand-in whose uniform draw is the largest value, 1.0 - 2**-53."""
-
-    def random(self) -> float:
-        return 1.0 - 2.0**-53
-
-
-def test_sample_stays_in_range_at_the_top_of_the_cdf() -> None:
-    # cdf [0.3, 0.6, 0.9] scaled: u * 0.9 rounds to 0.9 itself; searchsorted(right) gives 3,
-    # one past the end: the draw must clamp to the last index, 2
-    probs = np.array([0.3, 0.3, 0.3])
-    assert sample(probs, _TopDraw()) == 2  # type: ignore[arg-type]
