@@ -145,3 +145,27 @@ def test_human_as_expected_only_where_a_plan_predicted_the_human(scenario: str) 
     assert log.loc[no_prediction, "human_as_expected"].isna().all()
     predicted = log.loc[~no_prediction]
     assert (predicted["human_as_expected"] == (predicted["human_action"] == predicted["expected_human_action"])).all()
+
+
+def test_habit_robot_logs_no_planner_fields(scenario: str) -> None:
+    log = run(make_robot("habit"), make_human("cooperative"), RunConfig(scenario=scenario, duration=20.0, seed=0)).log
+    assert set(log["expert"]) == {"habit"}
+    assert (log["planner_action"] == -1).all() and (log["expected_human_action"] == -1).all()
+    assert (log["planner_nodes"] == 0).all() and log["human_as_expected"].isna().all()
+    assert (log["decision_time"] == 0.001).all()  # the habit's modelled 1 ms
+
+
+def test_empty_run_summary(scenario: str) -> None:
+    config = RunConfig(scenario=scenario, duration=10.0, seed=0, max_decisions=0)
+    result = run(make_robot("planner"), make_human("cooperative"), config)
+    assert len(result.log) == 0
+    assert result.summary == {
+        "tasks_solved": 0,
+        "actions": 0,
+        "failed_actions": 0,
+        "simulated_time": 0.0,
+        "duration": 10.0,
+        "planner_share": 0.0,
+        "final_weight_amplitude": 0.0,
+        "human_as_expected": None,
+    }
