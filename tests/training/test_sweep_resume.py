@@ -6,6 +6,7 @@ jobs kept on disk) so that it holds for any results store that keeps that promis
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pandas as pd
@@ -71,3 +72,20 @@ def test_results_keep_job_order_when_later_jobs_finished_first(
     assert again == ref
     assert [s["job"]["seed"] for s in again] == [0, 1, 2]
     assert sorted(done) == [0, 1, 2]
+
+
+def test_one_worker_runs_in_this_process_two_in_others(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    calls: list[tuple[int, int]] = []
+    real = sweep.execute
+
+    def spy(job: Job):  # type: ignore[no-untyped-def]
+        calls.append((os.getpid(), job.seed))
+        return real(job)
+
+    monkeypatch.setattr(sweep, "execute", spy)
+    run_sweep(JOBS[:2], tmp_path / "one", workers=1)
+    assert calls == [(os.getpid(), 0), (os.getpid(), 1)]  # in-process, in order
+    calls.clear()
+    out = run_sweep(JOBS[:2], tmp_path / "two", workers=2)
+    assert calls == []  # the jobs ran in worker processes (their calls are recorded there)
+    assert [s["job"]["seed"] for s in out] == [0, 1]
