@@ -169,3 +169,23 @@ def test_empty_run_summary(scenario: str) -> None:
         "final_weight_amplitude": 0.0,
         "human_as_expected": None,
     }
+
+
+class _Waiter:
+    """A minimal actor (no decision record): always the last action, wait."""
+
+    name = "waiter"
+
+    def reset(self, world, agent, rng) -> None:  # type: ignore[no-untyped-def]
+        self.n = world.n_actions(agent)
+
+    def act(self, turn) -> int:  # type: ignore[no-untyped-def]
+        return self.n - 1
+
+
+def test_actor_without_a_record_gets_the_documented_defaults(scenario: str) -> None:
+    log = run(_Waiter(), make_human("cooperative"), RunConfig(scenario=scenario, duration=10.0, seed=0)).log
+    assert set(log["expert"]) == {"waiter"} and set(log["action_name"]) == {"wait"}
+    for column in ("planner_action", "habit_action", "expected_human_action"):
+        assert (log[column] == -1).all(), column
+    assert (log["decision_time"] == 0.0).all() and (log["planner_nodes"] == 0).all()
