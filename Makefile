@@ -8,7 +8,7 @@ OUT ?= results/paper2015
 PYTEST_ARGS ?=
 MUTATION_ARGS ?=
 
-.PHONY: setup reproduce test test-slow test-mutation mutation-full lint bench clean
+.PHONY: setup reproduce test test-slow test-browser test-mutation mutation-full lint bench clean
 
 $(BIN)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -26,6 +26,14 @@ test: setup lint
 
 test-slow: setup
 	$(BIN)/python -m pytest -m slow $(PYTEST_ARGS)
+
+# The web front end in a real headless Chromium: Debian's chromium (installed with
+# apt-get when missing) driven by Playwright with the system executable.
+test-browser: setup
+	$(BIN)/python -m pip install --quiet -e ".[play,browser-test]"
+	test -x /usr/bin/chromium || (apt-get update -qq && apt-get install -y -qq chromium)
+	mkdir -p artifacts
+	HG_MARL_BROWSER_REQUIRED=1 $(BIN)/python -m pytest -m browser $(PYTEST_ARGS)
 
 # Mutation testing (mutation/README.md): a seeded sample of mutants per module of
 # mutation/modules.toml; prints the score per module and every survivor.

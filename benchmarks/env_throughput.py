@@ -1,25 +1,35 @@
-"""Turns per second of TableCleaning-v0 next to PettingZoo's tictactoe_v3, in one run.
+"""Steps per second of TableCleaning-v0 and its robot's-eye view, beside CartPole-v1, in one run.
 
-Both environments are built by their ``env()`` (so with their standard wrappers) and
-driven the same way: at each turn the agent draws uniformly among the actions its
-mask allows, from pre-drawn uniform numbers of one seeded Generator (so the driver's
-own cost is the same small constant for both). Episodes restart when they end.
-Also printed, for context: the same driver on a do-nothing AEC env behind the same
-wrapper (the ceiling any PettingZoo env can reach here) and the bare task core.
+Two families of workloads, each measured in the same process and printed beside the
+reference measured in the same run (the machine may be loaded: compare ratios):
 
-Usage: ``python benchmarks/env_throughput.py [--turns N] [--repeats R]``.
+- **AEC** (turns/s): ``hg_marl.env()`` (with its standard wrapper) on ``paper2015`` and
+  ``roboergosum``, next to a do-nothing AEC env behind the same wrapper (the ceiling any
+  PettingZoo env reaches here; target >= 80% of it) and the bare task core. At each turn
+  the agent draws uniformly among the actions its mask allows, from pre-drawn uniform
+  numbers of one seeded Generator.
+- **Robot's-eye view** (steps/s, one step = one cycle with the human's reply):
+  ``gymnasium.make("hg_marl/RobotTableCleaning-v0")`` with the cooperative and noisy
+  humans (who call the planner), random robot actions among the feasible ones, next to
+  ``CartPole-v1`` driven by the same loop. Targets: cooperative >= 5,000 steps/s on
+  ``paper2015`` and >= 2,000 on ``roboergosum``; noisy >= 1,000 on ``roboergosum``.
+
+Each workload prints a progress line when it starts and its rate when done.
+
+Usage: ``python benchmarks/env_throughput.py [--turns N] [--steps N] [--repeats R]``.
 """
 
 from __future__ import annotations
 
 import argparse
+import sys
 import time
 from collections.abc import Callable
 from typing import Any, ClassVar
 
+import gymnasium
 import numpy as np
 from pettingzoo import AECEnv
-from pettingzoo.classic import tictactoe_v3
 from pettingzoo.utils import wrappers
 
 import hg_marl
@@ -52,7 +62,7 @@ class _Null(AECEnv):
         self.agent_selection = "b" if self.agent_selection == "a" else "a"
 
 
-def drive(make: Callable[[], Any], turns: int, seed: int = 0) -> float:
+def drive_aec(make: Callable[[], Any], turns: int, seed: int = 0) -> float:
     """Turns per second of ``make()`` under the masked-uniform driver."""
     env = make()
     env.reset(seed=seed)
@@ -85,24 +95,73 @@ def drive_core(turns: int, seed: int = 0) -> float:
     return turns / (time.perf_counter() - start)
 
 
+def drive_gym(make: Callable[[], Any], steps: int, seed: int = 0) -> float:
+    """Steps per second of a Gymnasium env: random actions (among the feasible ones when the
+    env has ``action_masks``), pre-drawn from one seeded Generator; resets when an episode ends."""
+    env = make()
+    env.reset(seed=seed)
+    masks = getattr(env.unwrapped, "action_masks", None)
+    n = env.action_space.n
+    u = np.random.default_rng(seed).random(steps)
+    start = time.perf_counter()
+    for i in range(steps):
+        if masks is not None:
+            legal = np.flatnonzero(masks())
+            action = int(legal[int(u[i] * len(legal))])
+        else:
+            action = int(u[i] * n)
+        _, _, term, trunc, _ = env.step(action)
+        if term or trunc:
+            env.reset()
+    return steps / (time.perf_counter() - start)
+
+
+def robot_view(scenario: str, human: str) -> Callable[[], Any]:
+    """A maker of the robot's-eye view with ``human``."""
+    return lambda: gymnasium.make("hg_marl/RobotTableCleaning-v0", scenario=scenario, human=human)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--turns", type=int, default=100_000)
-    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--turns", type=int, default=100_000, help="AEC turns per repeat")
+    parser.add_argument("--steps", type=int, default=20_000, help="robot's-eye view steps per repeat")
+    parser.add_argument("--repeats", type=int, default=3, help="best of R repeats per workload")
     args = parser.parse_args()
-    cases: dict[str, Callable[[], float]] = {
-        "tictactoe_v3 (reference)": lambda: drive(tictactoe_v3.env, args.turns),
-        "TableCleaning-v0 paper2015": lambda: drive(lambda: hg_marl.env(max_cycles=500), args.turns),
-        "TableCleaning-v0 roboergosum": lambda: drive(lambda: hg_marl.env(scenario="roboergosum"), args.turns),
-        "null AEC env (wrapper floor)": lambda: drive(lambda: wrappers.OrderEnforcingWrapper(_Null()), args.turns),
-        "task core only (World.step)": lambda: drive_core(args.turns),
+    t, s = args.turns, args.steps
+    aec: dict[str, Callable[[], float]] = {
+        "null AEC env (ceiling)": lambda: drive_aec(lambda: wrappers.OrderEnforcingWrapper(_Null()), t),
+        "TableCleaning-v0 paper2015": lambda: drive_aec(lambda: hg_marl.env(max_cycles=500), t),
+        "TableCleaning-v0 roboergosum": lambda: drive_aec(lambda: hg_marl.env(scenario="roboergosum"), t),
+        "task core only (World.step)": lambda: drive_core(t),
     }
-    best = {name: max(fn() for _ in range(args.repeats)) for name, fn in cases.items()}
-    ref = best["tictactoe_v3 (reference)"]
-    print(f"{'environment':<32}{'turns/s':>12}{'x tictactoe':>14}")
-    for name, rate in best.items():
-        print(f"{name:<32}{rate:>12,.0f}{rate / ref:>14.2f}")
-    print("target: TableCleaning-v0 >= 10x tictactoe_v3")
+    gym: dict[str, Callable[[], float]] = {
+        "CartPole-v1 (reference)": lambda: drive_gym(lambda: gymnasium.make("CartPole-v1"), s),
+        "robot view paper2015 cooperative": lambda: drive_gym(robot_view("paper2015", "cooperative"), s),
+        "robot view roboergosum cooperative": lambda: drive_gym(robot_view("roboergosum", "cooperative"), s),
+        "robot view roboergosum noisy": lambda: drive_gym(robot_view("roboergosum", "noisy"), s),
+    }
+    targets = {
+        "TableCleaning-v0 paper2015": ">= 0.80 x ceiling",
+        "TableCleaning-v0 roboergosum": ">= 0.80 x ceiling",
+        "robot view paper2015 cooperative": ">= 5,000/s",
+        "robot view roboergosum cooperative": ">= 2,000/s",
+        "robot view roboergosum noisy": ">= 1,000/s",
+    }
+    results: dict[str, float] = {}
+    for name, fn in {**aec, **gym}.items():
+        print(f"... {name}", file=sys.stderr, flush=True)
+        start = time.perf_counter()
+        results[name] = max(fn() for _ in range(args.repeats))
+        print(f"    {results[name]:,.0f}/s ({time.perf_counter() - start:.1f} s)", file=sys.stderr, flush=True)
+    for title, group, ref in (
+        ("AEC turns/s", aec, "null AEC env (ceiling)"),
+        ("steps/s", gym, "CartPole-v1 (reference)"),
+    ):
+        print(f"{'workload':<38}{title:>14}{'x ' + ref.split(' ')[0]:>16}  target")
+        for name in group:
+            rate = results[name]
+            print(f"{name:<38}{rate:>14,.0f}{rate / results[ref]:>16.3f}  {targets.get(name, '')}")
+        print()
 
 
 if __name__ == "__main__":

@@ -4,9 +4,10 @@ Run: ``python benchmarks/planner_latency.py [--seeds 5] [--budget 20000]``. Prin
 row per workload: median and 95th-percentile cold planning time and the median CPU time
 (less sensitive to a loaded machine) of a fresh ``Planner``, the median CPU time of
 constructing it (its static tables: not part of the planning time)
-(no plan, candidate or bound cached; the ``World`` is shared, as in a run), the
+(no plan, candidate or bound cached: each case gets its own ``World``, since planners of
+one world share their search space's caches), the
 warm time (the same query again: a cache hit), nodes expanded, and how many calls
-proved the optimum within the node budget. Targets (DESIGN.md section 3 / issue 3):
+proved the optimum within the node budget. Targets:
 paper2015 initial state <= 1 ms median, roboergosum <= 10 ms, 20 objects <= 100 ms with
 the optimum proven.
 """
@@ -62,8 +63,8 @@ def workloads(seeds: int) -> list[tuple[str, list[tuple[World, State]]]]:
     generated layouts per size (human_only=0.8: most objects need the human or a handover)."""
     out = []
     for name in ("paper2015", "roboergosum"):
-        world = World(name)
-        out.append((name, [(world, world.initial_state(np.random.default_rng(s))) for s in range(seeds)]))
+        worlds = [World(name) for _ in range(seeds)]
+        out.append((name, [(w, w.initial_state(np.random.default_rng(s))) for s, w in enumerate(worlds)]))
     for n in (3, 6, 10, 20):
         for human_only in (0.3, 0.8):
             worlds = [World(f"generated:objects={n},human_only={human_only},seed={s}") for s in range(seeds)]

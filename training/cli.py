@@ -7,12 +7,18 @@ inside the commands that need them, so ``hg-marl --help`` stays fast.
 
 from __future__ import annotations
 
+import functools
 import importlib
 import logging
+from collections.abc import Callable
+from typing import Any
 
 import typer
+from typer.exceptions import Abort, TyperException
 
-COMMANDS = ("run", "plan", "oracle", "reproduce", "train", "compare")
+from hg_marl.core.errors import HgMarlError
+
+COMMANDS = ("run", "plan", "oracle", "reproduce", "train", "compare", "convert", "play", "replay", "traces")
 """Subcommand modules, in the order ``--help`` lists them."""
 
 app = typer.Typer(
@@ -29,21 +35,54 @@ def _root() -> None:
     """Human-robot table cleaning (Renaudo et al. 2015) from the command line."""
 
 
-for _name in COMMANDS:
-    importlib.import_module(f"hg_marl.training.commands.{_name}").register(app)
+def one_line_errors(callback: Callable[..., Any]) -> Callable[..., Any]:
+    """Wrap a command so bad input (HgMarlError) prints one line and exits 2, wherever it is invoked.
+
+    ``functools.wraps`` keeps the signature typer reads the options from. Any other
+    exception is a bug and keeps its traceback.
+    """
+
+    @functools.wraps(callback)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return callback(*args, **kwargs)
+        except HgMarlError as exc:
+            typer.secho(f"error: {exc}", fg=typer.colors.RED, err=True)
+            raise typer.Exit(2) from None
+
+    return wrapper
+
+
+def register_all(target: typer.Typer, names: tuple[str, ...] = COMMANDS) -> typer.Typer:
+    """Add the named subcommands to ``target``, each wrapped by :func:`one_line_errors`."""
+    for name in names:
+        importlib.import_module(f"hg_marl.training.commands.{name}").register(target)
+    for info in target.registered_commands:
+        if info.callback is not None and not getattr(info.callback, "_one_line", False):
+            info.callback = one_line_errors(info.callback)
+            info.callback._one_line = True  # type: ignore[attr-defined]
+    return target
+
+
+register_all(app)
 
 
 def main() -> None:
     """Entry point of the ``hg-marl`` script."""
     logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
-    from hg_marl.core.errors import HgMarlError
-
     try:
-        app()
+        code = app(standalone_mode=False)
+    except TyperException as exc:
+        # A malformed option (a usage error): one line, exit 2, as for any bad input.
+        typer.secho(f"error: {' '.join(exc.format_message().split())}", fg=typer.colors.RED, err=True)
+        raise SystemExit(exc.exit_code) from None
+    except Abort:
+        raise SystemExit(130) from None
     except HgMarlError as exc:
-        # Bad input: one line, exit 2. Anything else is a bug and keeps its traceback.
+        # Raised outside a command: still one line, exit 2.
         typer.secho(f"error: {exc}", fg=typer.colors.RED, err=True)
         raise SystemExit(2) from None
+    raise SystemExit(code if isinstance(code, int) else 0)
 
 
 if __name__ == "__main__":

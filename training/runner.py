@@ -22,6 +22,7 @@ import pandas as pd
 
 import hg_marl
 from hg_marl.core import Agent
+from hg_marl.core.errors import check_bool, check_finite, check_int
 from hg_marl.policy import Actor, info_of
 from hg_marl.training.io import atomic_write
 
@@ -66,6 +67,13 @@ class RunConfig:
     """Add each robot decision's ``decision_time`` to the simulated clock."""
     max_decisions: int | None = None
     """Optional safety cap on robot decisions (None: the duration alone ends the run)."""
+
+    def __post_init__(self) -> None:
+        check_finite(self.duration, "duration (--duration)", positive=True)
+        check_int(self.seed, "seed (--seed)", minimum=0)
+        check_bool(self.charge_decision_time, "charge_decision_time")
+        if self.max_decisions is not None:
+            check_int(self.max_decisions, "max_decisions", minimum=1)
 
 
 @dataclass

@@ -161,7 +161,7 @@ def tidy_action(world: World, state: State, *, give: bool) -> int:
     for o, place in enumerate(state.where):
         if place >= world.n_spots or not world.spot_reachable(state, Agent.HUMAN, place):
             continue
-        bin_ok = world.bin_reachable(state, Agent.HUMAN, world.bin_of[o])
+        bin_ok = world.table.throw_to[Agent.HUMAN][state.robot_at][o] >= 0  # some bin accepting o in reach
         if bin_ok or (place in only_human and (free_shared or can_hand_over)):
             return index_of(world, Kind.PICK, o)
     return -1

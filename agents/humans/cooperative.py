@@ -84,10 +84,10 @@ class CooperativeHuman(StationaryHuman):
             if state.offer_by == Agent.ROBOT and world.holding(state, Agent.HUMAN) < 0:
                 index = index_of(world, Kind.TAKE, state.offer_obj)
             else:
-                result = planner.plan(
+                intent = planner.intent(
                     state, to_move=Agent.HUMAN, robot_action=robot_action if robot_action >= 0 else None
                 )
-                index = result.human_action if result.success and result.human_action >= 0 else wait_index(world)
+                index = intent.human_action if intent.success and intent.human_action >= 0 else wait_index(world)
             if len(self._memo) > _MEMO_LIMIT:
                 self._memo.clear()
             self._memo[(state, robot_action)] = index

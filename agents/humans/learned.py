@@ -1,24 +1,21 @@
 """``learned``: a policy trained in the human seat, acting from its observation only.
 
-File format: a directory holding ``policy.json`` (the header) and one payload file::
+File format: a model file (:mod:`hg_marl.agents.model_file`, the same format as the
+``sb3`` robot's): a JSON header (``policy.json`` or ``model.json`` in a folder) naming
+its ``.npz`` weights. Loading never unpickles. Kinds:
 
-    policy.json  {"format": "hg_marl.policy", "version": 1, "kind": "linear_softmax",
-                  "seat": "human", "scenario": "paper2015", "fact_names": [...],
-                  "action_names": [...], "file": "weights.npz", "temperature": 1.0}
+- ``linear_softmax``: arrays ``W`` (actions x facts) and ``b`` (actions), ``temperature``
+  in the header; ``p(a) ∝ exp((W facts + b)_a / temperature)`` over the feasible actions.
+- ``table``: arrays ``facts`` (rows of the fact vector, 0/1) and ``actions`` (one action
+  index per row); an unseen observation falls back to ``wait`` (``fallback="wait"``) or
+  a uniform feasible action (``fallback="random"``).
+- ``sb3``: a Stable-Baselines3 / sb3-contrib model, rebuilt from the header and its
+  state dicts. SB3 is imported inside the loader only, so ``import hg_marl`` never
+  imports torch. An SB3 policy always acts greedily (``predict(deterministic=True)``):
+  sampling would draw from torch's global generator, not the human's own.
 
-Kinds:
-
-- ``linear_softmax``: ``weights.npz`` with ``W`` (actions x facts) and ``b`` (actions);
-  ``p(a) ∝ exp((W facts + b)_a / temperature)`` over the feasible actions (the mask).
-- ``table``: ``table.npz`` with ``facts`` (rows of the fact vector, int8) and
-  ``actions`` (one action index per row); an unseen observation falls back to ``wait``
-  (``fallback="wait"``) or a uniform feasible action (``fallback="random"``).
-- ``sb3``: ``model.zip`` saved by Stable-Baselines3 / sb3-contrib, with ``algo`` (the
-  class name, e.g. ``"MaskablePPO"``) and ``observation`` (the view's observation mode
-  it was trained with: ``"facts"``, ``"flat"`` or ``"dict"``) in the header. SB3 is
-  imported inside the loader only, so ``import hg_marl`` never imports torch. An SB3
-  policy always acts greedily (``predict(deterministic=True)``): sampling would draw from
-  torch's global generator, not the human's own, and break same-seed reproducibility.
+Shapes and values are checked on load (names, sizes, finite weights, 0/1 facts, action
+indices in range), so a bad file fails at once with its name, not mid-run.
 
 Write the numpy kinds with :func:`save_learned_policy` and SB3 models with
 :func:`save_sb3_policy`. The numpy kinds are stationary (they have ``distribution``),
@@ -27,7 +24,6 @@ so the oracle can compute the best robot against them.
 
 from __future__ import annotations
 
-import json
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -35,27 +31,13 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.humans.base import Distribution, StationaryHuman, sample
+from hg_marl.agents.model_file import ModelFile, check_world, load_model_file, save_model_file, save_sb3, world_fields
 from hg_marl.core import Agent, State, World
+from hg_marl.core.errors import HumanError, ModelFileError, check_finite
 from hg_marl.policy import Turn
 
-FORMAT = "hg_marl.policy"
-VERSION = 1
 HEADER = "policy.json"
 KINDS = ("linear_softmax", "table", "sb3")
-
-
-def _header(world: World, seat: Agent, kind: str, file: str, **extra: Any) -> dict[str, Any]:
-    return {
-        "format": FORMAT,
-        "version": VERSION,
-        "kind": kind,
-        "seat": seat.label,
-        "scenario": world.scenario.name,
-        "fact_names": list(world.fact_names),
-        "action_names": list(world.action_names[seat]),
-        "file": file,
-        **extra,
-    }
 
 
 def save_learned_policy(
@@ -93,10 +75,9 @@ def save_learned_policy(
         b = np.zeros(n_a) if bias is None else np.asarray(bias, dtype=np.float64)
         if w.shape != (n_a, n_f) or b.shape != (n_a,):
             raise ValueError(f"weights must be ({n_a}, {n_f}) and bias ({n_a},), got {w.shape} and {b.shape}")
-        if temperature <= 0:
-            raise ValueError(f"temperature must be positive, got {temperature}")
-        np.savez(out / "weights.npz", W=w, b=b)
-        header = _header(world, seat, "linear_softmax", "weights.npz", temperature=float(temperature))
+        temperature = check_finite(temperature, "temperature", positive=True, error=HumanError)
+        header: dict[str, Any] = {**world_fields(world, seat), "kind": "linear_softmax", "temperature": temperature}
+        arrays: dict[str, np.ndarray] = {"W": w, "b": b}
     else:
         assert table is not None
         keys = list(table)
@@ -104,38 +85,44 @@ def save_learned_policy(
         actions = np.array([int(table[k]) for k in keys], dtype=np.int64)
         if len(actions) and not (actions.min() >= 0 and actions.max() < n_a):
             raise ValueError(f"table actions must be indices in [0, {n_a})")
-        np.savez(out / "table.npz", facts=facts, actions=actions)
-        header = _header(world, seat, "table", "table.npz")
-    (out / HEADER).write_text(json.dumps(header, indent=1))
+        header = {**world_fields(world, seat), "kind": "table"}
+        arrays = {"facts": facts, "actions": actions}
+    save_model_file(out / HEADER, header, arrays)
     return out
 
 
 def save_sb3_policy(
     path: str | Path, model: Any, world: World | str, *, observation: str = "facts", seat: Agent = Agent.HUMAN
 ) -> Path:
-    """Write an SB3 model (anything with ``.save``) with its header, for ``make_human("learned")``."""
+    """Write an SB3 model into the folder ``path`` (``policy.json`` + ``policy.npz``), for ``make_human("learned")``."""
     world = World(world) if isinstance(world, str) else world
     out = Path(path)
-    out.mkdir(parents=True, exist_ok=True)
-    model.save(out / "model.zip")
-    header = _header(world, seat, "sb3", "model.zip", algo=type(model).__name__, observation=observation)
-    (out / HEADER).write_text(json.dumps(header, indent=1))
+    save_sb3(model, out / HEADER, world_fields(world, seat), observation=observation)
     return out
 
 
-def _load_sb3(directory: Path, header: dict[str, Any]) -> Any:
-    """Import SB3 lazily (never at module import) and load the model."""
-    algo = header.get("algo", "")
-    import stable_baselines3
-
-    cls = getattr(stable_baselines3, algo, None)
-    if cls is None:
-        import sb3_contrib
-
-        cls = getattr(sb3_contrib, algo, None)
-    if cls is None:
-        raise ValueError(f"{directory}: unknown SB3 algorithm {algo!r} in {HEADER}")
-    return cls.load(directory / header["file"], device="cpu")
+def _numpy_policy(mf: ModelFile) -> tuple[np.ndarray, np.ndarray]:
+    """Check a numpy kind's arrays against its header's names; return them."""
+    n_a, n_f = len(mf.header["action_names"]), len(mf.header["fact_names"])
+    arrays, where = mf.arrays, mf.path
+    if mf.header["kind"] == "linear_softmax":
+        w, b = arrays.get("W"), arrays.get("b")
+        if w is None or b is None or w.shape != (n_a, n_f) or b.shape != (n_a,):
+            raise ModelFileError(f"{where}: linear_softmax needs arrays W ({n_a}, {n_f}) and b ({n_a},)")
+        if not (np.isfinite(w).all() and np.isfinite(b).all()):
+            raise ModelFileError(f"{where}: W and b must be finite")
+        check_finite(mf.header.get("temperature"), f"{where}: field 'temperature'", positive=True, error=ModelFileError)
+        return w.astype(np.float64), b.astype(np.float64)
+    facts, actions = arrays.get("facts"), arrays.get("actions")
+    if facts is None or actions is None or facts.ndim != 2 or facts.shape[1] != n_f or actions.shape != facts.shape[:1]:
+        raise ModelFileError(f"{where}: table needs arrays facts (rows, {n_f}) and actions (rows,)")
+    if actions.dtype.kind not in "iu" or facts.dtype.kind not in "iub":
+        raise ModelFileError(f"{where}: table facts and actions must be integers")
+    if not np.isin(facts, (0, 1)).all():
+        raise ModelFileError(f"{where}: table facts must be 0 or 1")
+    if len(actions) and not (actions.min() >= 0 and actions.max() < n_a):
+        raise ModelFileError(f"{where}: table actions must be indices in [0, {n_a})")
+    return facts.astype(np.int8), actions.astype(np.int64)
 
 
 class LearnedHuman(StationaryHuman):
@@ -152,42 +139,29 @@ class LearnedHuman(StationaryHuman):
     def __init__(self, path: str | Path | None = None, deterministic: bool = False, fallback: str = "wait") -> None:
         super().__init__()
         if path is None:
-            raise ValueError("learned needs path=<policy directory>")
-        directory = Path(path)
-        directory = directory.parent if directory.name == HEADER else directory
-        if not (directory / HEADER).is_file():
-            raise ValueError(f"{directory}: no {HEADER} header found (write one with save_learned_policy)")
-        header = json.loads((directory / HEADER).read_text())
-        if header.get("format") != FORMAT or header.get("kind") not in KINDS:
-            raise ValueError(f"{directory / HEADER}: not a {FORMAT} header of a known kind {KINDS}")
+            raise HumanError("human 'learned' needs a policy: learned:path=FOLDER")
         if fallback not in ("wait", "random"):
-            raise ValueError(f"fallback must be 'wait' or 'random', got {fallback!r}")
-        self.header = header
+            raise HumanError(f"human 'learned': fallback must be 'wait' or 'random', got {fallback!r}")
+        self.file = load_model_file(path, what="human 'learned': path")
+        header = self.header = self.file.header
         self.kind: str = header["kind"]
         self.deterministic = bool(deterministic)
         self.fallback = fallback
         self._model: Any = None
         self._table: dict[bytes, int] = {}
         if self.kind == "linear_softmax":
-            data = np.load(directory / header["file"])
-            self._w, self._b = data["W"], data["b"]
+            self._w, self._b = _numpy_policy(self.file)
         elif self.kind == "table":
-            data = np.load(directory / header["file"])
-            self._table = {
-                row.astype(np.int8).tobytes(): int(a) for row, a in zip(data["facts"], data["actions"], strict=True)
-            }
+            facts, actions = _numpy_policy(self.file)
+            self._table = {row.tobytes(): int(a) for row, a in zip(facts, actions, strict=True)}
         else:
-            self._model = _load_sb3(directory, header)
+            from hg_marl.agents.model_file import build_sb3
+
+            self._model = build_sb3(self.file, optimizer=False)
 
     def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
         """Check the policy was saved for this world and seat, then start."""
-        if list(self.header["action_names"]) != list(world.action_names[agent]) or list(
-            self.header["fact_names"]
-        ) != list(world.fact_names):
-            raise ValueError(
-                f"learned policy for {self.header['scenario']!r} ({self.header['seat']}) does not match "
-                f"{world.scenario.name!r} ({agent.label}): different facts or actions"
-            )
+        check_world(self.file, world, agent)
         super().reset(world, agent, rng)
 
     def probabilities(self, facts: np.ndarray, mask: np.ndarray) -> np.ndarray:

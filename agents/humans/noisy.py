@@ -49,8 +49,7 @@ class NoisyHuman(StationaryHuman):
         out = {}
         for index in world.feasible_indices(state, Agent.HUMAN):
             step = world.step(state, Agent.HUMAN, index)
-            result = planner.plan(step.state, to_move=Agent.ROBOT)
-            rest = result.plan.duration if result.success and result.plan else math.inf
+            rest = planner.intent(step.state, to_move=Agent.ROBOT).duration  # inf when no plan
             out[index] = max(d_robot, step.duration) + rest
         return out
 

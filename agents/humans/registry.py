@@ -13,9 +13,11 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from hg_marl.agents.humans.base import HumanError
+from hg_marl.core.errors import HgMarlError, SpecError
+from hg_marl.core.spec import REQUIRED, bind, parse_spec
 from hg_marl.policy import Actor
 
-_REQUIRED: Any = None
+_REQUIRED: Any = REQUIRED
 
 
 @dataclass(frozen=True)
@@ -139,38 +141,13 @@ def _listing() -> str:
     return "; ".join(f"{n}({', '.join(f'{k}={p.default!r}' for k, p in s.params.items())})" for n, s in HUMANS.items())
 
 
-def _coerce(name: str, key: str, value: Any, default: Any) -> Any:
-    """Check (and convert from text) a parameter value against its default's type."""
-    if isinstance(value, str) and not isinstance(default, str) and default is not None:
-        if isinstance(default, bool):
-            if value.lower() not in ("true", "false", "1", "0"):
-                raise HumanError(f"human {name!r}: parameter {key!r} expects true/false, got {value!r}")
-            return value.lower() in ("true", "1")
-        if isinstance(default, list):
-            return [x for x in value.split("|") if x]
-        try:
-            return type(default)(value)
-        except ValueError:
-            raise HumanError(
-                f"human {name!r}: parameter {key!r} expects {type(default).__name__}, got {value!r}"
-            ) from None
-    if isinstance(default, bool) and not isinstance(value, bool):
-        raise HumanError(f"human {name!r}: parameter {key!r} expects a bool, got {value!r}")
-    if isinstance(default, float) and (isinstance(value, bool) or not isinstance(value, int | float)):
-        raise HumanError(f"human {name!r}: parameter {key!r} expects a number, got {value!r}")
-    return value
-
-
 def parse_human(text: str) -> tuple[str, dict[str, str]]:
-    """Split ``"name:k=v,k2=v2"`` into the name and raw parameters (lists use ``|``)."""
-    name, _, rest = text.partition(":")
-    params: dict[str, str] = {}
-    for item in filter(None, rest.split(",")):
-        key, sep, value = item.partition("=")
-        if not sep:
-            raise HumanError(f"human spec {text!r}: expected key=value, got {item!r}")
-        params[key.strip()] = value.strip()
-    return name.strip(), params
+    """Split ``"name:k=v,k2=v2"`` into the name and raw parameter texts (the one spec parser)."""
+    try:
+        spec = parse_spec(text, "human")
+    except SpecError as exc:
+        raise HumanError(str(exc)) from None
+    return spec.name, dict(spec.raw)
 
 
 def make_human(name: str, **params: Any) -> Actor:
@@ -181,25 +158,24 @@ def make_human(name: str, **params: Any) -> Actor:
         **params: parameters (override those in ``name``).
 
     Raises:
-        HumanError: unknown name, unknown parameter, or a value the human rejects.
+        HumanError: unknown name, unknown parameter, or a value the human rejects
+            (model-file problems stay :class:`ModelFileError`).
     """
-    base, inline = parse_human(name)
-    spec = HUMANS.get(base)
+    try:
+        spec_ = parse_spec(name, "human")
+    except SpecError as exc:
+        raise HumanError(str(exc)) from None
+    spec = HUMANS.get(spec_.name)
     if spec is None:
-        raise HumanError(f"unknown human {base!r}; available: {_listing()}")
-    merged: dict[str, Any] = {**inline, **params}
-    kwargs = {}
-    for key, value in merged.items():
-        if key not in spec.params:
-            raise HumanError(
-                f"human {base!r} has no parameter {key!r}; its parameters: "
-                f"{', '.join(f'{k}={p.default!r} ({p.doc})' for k, p in spec.params.items()) or 'none'}"
-            )
-        kwargs[key] = _coerce(base, key, value, spec.params[key].default)
+        raise HumanError(f"unknown human {spec_.name!r}; available: {_listing()}")
+    defaults = {k: p.default for k, p in spec.params.items()}
+    kwargs = bind(spec_, defaults, params, what=f"human {spec.name!r}", error=HumanError)
     try:
         return spec.factory()(**kwargs)
+    except HgMarlError:
+        raise
     except (ValueError, TypeError) as exc:
-        raise HumanError(f"human {base!r}: {exc}") from exc
+        raise HumanError(f"human {spec.name!r}: {exc}") from exc
 
 
 def resolve_human(human: str | Actor) -> Actor:

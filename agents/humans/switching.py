@@ -3,7 +3,7 @@
 ``make_human("switching", humans=["cooperative", "lazy:p_idle=0.5"], at=[600.0])`` plays
 the cooperative human until the clock reaches 600 simulated seconds, then the lazy one.
 With ``by="tasks"`` the thresholds count tasks solved instead. It is the adaptation
-experiment's partner (DESIGN.md section 6). Not stationary: the oracle refuses it, and is
+experiment's partner (docs/task.md, section 6). Not stationary: the oracle refuses it, and is
 run once per phase instead.
 """
 

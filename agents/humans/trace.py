@@ -9,6 +9,11 @@ one line per turn of the recorded seat::
     {"type": "step", "step": 0, "clock": 0.0, "tasks_solved": 0, "facts": [0, 1, ...],
      "mask": [1, 0, ...], "action": 17, "action_name": "wait"}
 
+A recording of a person adds, in the header's ``meta``, who played (``player``), when
+(``started``, ISO 8601 UTC), the front end and the robot's spec, and on each step line
+the ``response_time`` in wall seconds, and an end line closes the episode with its
+totals: ``{"type": "end", "clock": 93.4, "tasks_solved": 2, "rewards": 2.0}``.
+
 ``facts`` and ``mask`` are the seat's observation (what a learned policy or a person
 sees), ``clock`` the simulated seconds at the turn. The same format holds recordings of
 people playing the human (write them with :class:`TraceWriter`), replayed by
@@ -18,6 +23,7 @@ people playing the human (write them with :class:`TraceWriter`), replayed by
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import TracebackType
@@ -26,6 +32,7 @@ from typing import IO, Any
 import numpy as np
 
 from hg_marl.core import Agent, World
+from hg_marl.core.errors import ConfigError, ModelFileError
 from hg_marl.policy import Actor, Turn
 
 FORMAT = "hg_marl.trace"
@@ -40,6 +47,8 @@ class Episode:
     """The header line (scenario, seed, seat, names, meta)."""
     steps: list[dict[str, Any]] = field(default_factory=list)
     """The step lines, in order."""
+    end: dict[str, Any] = field(default_factory=dict)
+    """The optional end line (final ``clock``, ``tasks_solved``, ``rewards``); empty if absent."""
 
     @property
     def actions(self) -> list[int]:
@@ -47,32 +56,113 @@ class Episode:
         return [int(s["action"]) for s in self.steps]
 
 
-def read_trace(path: str | Path) -> list[Episode]:
-    """Parse a trace file into its episodes, checking the format.
+def _is_int(value: Any) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def _check_header(record: dict[str, Any], at: str, line: str) -> None:
+    if record.get("format") != FORMAT or record.get("version") != VERSION:
+        raise ModelFileError(f"{at}: not a {FORMAT} v{VERSION} header: {line.strip()[:80]}")
+    for key in ("fact_names", "action_names"):
+        names = record.get(key)
+        if not isinstance(names, list) or not names or not all(isinstance(n, str) for n in names):
+            raise ModelFileError(f"{at}: field {key!r}: expected a non-empty list of names")
+    if record.get("seat") not in ("robot", "human"):
+        raise ModelFileError(f"{at}: field 'seat': expected 'robot' or 'human', got {record.get('seat')!r}")
+
+
+def _check_step(record: dict[str, Any], header: dict[str, Any], at: str) -> None:
+    n_facts, names = len(header["fact_names"]), header["action_names"]
+    action = record.get("action")
+    if not isinstance(action, int) or isinstance(action, bool) or not 0 <= action < len(names):
+        raise ModelFileError(f"{at}: field 'action': expected an action index in [0, {len(names)}), got {action!r}")
+    if "action_name" in record and record["action_name"] != names[action]:
+        raise ModelFileError(
+            f"{at}: field 'action_name' {record['action_name']!r} is not action {action} ({names[action]!r})"
+        )
+    for key, size in (("facts", n_facts), ("mask", len(names))):
+        values = record.get(key)
+        if not isinstance(values, list) or len(values) != size or not all(_is_int(v) and v in (0, 1) for v in values):
+            raise ModelFileError(f"{at}: field {key!r}: expected {size} values, each 0 or 1")
+    if not _is_int(record.get("step")) or record["step"] < 0:
+        raise ModelFileError(f"{at}: field 'step': expected a non-negative integer, got {record.get('step')!r}")
+    clock = record.get("clock", 0.0)
+    if isinstance(clock, bool) or not isinstance(clock, int | float) or not math.isfinite(clock) or clock < 0:
+        raise ModelFileError(f"{at}: field 'clock': expected a finite number >= 0, got {clock!r}")
+
+
+MAX_TRACE_BYTES = 1 << 30
+"""A trace file may be at most 1 GiB."""
+
+
+def trace_paths(path: str | Path) -> list[Path]:
+    """A trace file, or every ``*.jsonl`` under a directory (sorted): what ``--traces DIR`` means.
 
     Raises:
-        ValueError: not a trace file, an unknown version, or a step before any header.
+        ConfigError: a missing path, or a directory without trace files.
     """
+    path = Path(path)
+    if path.is_dir():
+        files = sorted(path.rglob("*.jsonl"))
+        if not files:
+            raise ConfigError(f"{path}: no *.jsonl trace files in this directory")
+        return files
+    if not path.exists():
+        raise ConfigError(f"{path}: no such trace file or directory")
+    return [path]
+
+
+def read_trace(path: str | Path) -> list[Episode]:
+    """Parse a trace file into its episodes, checking every line's shape and values.
+
+    Raises:
+        ModelFileError (a ValueError): missing, not UTF-8, a line that is not a JSON
+            object, an unknown version, a step before any header, or a step whose action,
+            facts or mask do not fit its header (``path:line`` named).
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise ModelFileError(f"{path}: trace file not found")
+    if path.stat().st_size > MAX_TRACE_BYTES:
+        raise ModelFileError(f"{path}: larger than {MAX_TRACE_BYTES} bytes")
     episodes: list[Episode] = []
-    with Path(path).open() as fh:
-        for number, line in enumerate(fh, 1):
-            if not line.strip():
-                continue
-            record = json.loads(line)
-            kind = record.get("type")
-            if kind == "header":
-                if record.get("format") != FORMAT or record.get("version") != VERSION:
-                    raise ValueError(f"{path}:{number}: not a {FORMAT} v{VERSION} header: {line.strip()[:80]}")
-                episodes.append(Episode(record))
-            elif kind == "step":
-                if not episodes:
-                    raise ValueError(f"{path}:{number}: step before any header line")
-                episodes[-1].steps.append(record)
-            else:
-                raise ValueError(f"{path}:{number}: unknown line type {kind!r} (expected 'header' or 'step')")
+    with path.open(encoding="utf-8") as fh:
+        number = 0
+        try:
+            for number, line in enumerate(fh, 1):
+                if not line.strip():
+                    continue
+                at = f"{path}:{number}"
+                try:
+                    record = json.loads(line, parse_constant=_no_constant)
+                except (json.JSONDecodeError, RecursionError, ValueError) as exc:
+                    raise ModelFileError(f"{at}: not a JSON line ({exc})") from None
+                if not isinstance(record, dict):
+                    raise ModelFileError(f"{at}: expected a JSON object, got {type(record).__name__}")
+                kind = record.get("type")
+                if kind == "header":
+                    _check_header(record, at, line)
+                    episodes.append(Episode(record))
+                elif kind == "step":
+                    if not episodes:
+                        raise ModelFileError(f"{at}: step before any header line")
+                    _check_step(record, episodes[-1].header, at)
+                    episodes[-1].steps.append(record)
+                elif kind == "end" and episodes:
+                    episodes[-1].end = record
+                else:
+                    raise ModelFileError(
+                        f"{at}: unknown line type {kind!r} (expected 'header', 'step' or 'end' after a header)"
+                    )
+        except UnicodeDecodeError:
+            raise ModelFileError(f"{path}:{number + 1}: not UTF-8 text") from None
     if not episodes:
-        raise ValueError(f"{path}: empty trace (no header line)")
+        raise ModelFileError(f"{path}: empty trace (no header line)")
     return episodes
+
+
+def _no_constant(name: str) -> Any:
+    raise ValueError(f"{name} is not allowed")
 
 
 class TraceWriter:
@@ -123,8 +213,14 @@ class TraceWriter:
         self.episodes += 1
         self._steps = 0
 
-    def step(self, turn: Turn, action: int) -> None:
-        """Record the seat's observation at ``turn`` and the action it took."""
+    def step(self, turn: Turn, action: int, extra: dict[str, Any] | None = None) -> None:
+        """Record the seat's observation at ``turn`` and the action it took.
+
+        Args:
+            turn: the seat's turn.
+            action: the action taken.
+            extra: further fields of the step line (a person's ``response_time``).
+        """
         self._write(
             {
                 "type": "step",
@@ -135,9 +231,16 @@ class TraceWriter:
                 "mask": np.asarray(turn.mask).astype(int).tolist(),
                 "action": int(action),
                 "action_name": turn.world.action_names[turn.agent][action],
+                **(extra or {}),
             }
         )
         self._steps += 1
+
+    def end(self, clock: float, tasks_solved: int, rewards: float) -> None:
+        """Close the episode with its totals (what a replay must reproduce)."""
+        self._write(
+            {"type": "end", "clock": float(clock), "tasks_solved": int(tasks_solved), "rewards": float(rewards)}
+        )
 
     def close(self) -> None:
         """Close the file (further writes reopen it, truncating: open a new writer instead)."""

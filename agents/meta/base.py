@@ -27,7 +27,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 PLANNER_EPSILON = 0.01
-"""Probability the planner's distribution puts on each non-planned action (DESIGN.md 4)."""
+"""Probability the planner's distribution puts on each non-planned action (docs/task.md, section 4)."""
 
 
 class Expert(StrEnum):

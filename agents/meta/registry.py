@@ -12,6 +12,8 @@ from hg_marl.agents.meta.entropy_cost import EntropyAndCostCriterion
 from hg_marl.agents.meta.fixed import HabitOnly, PlannerOnly
 from hg_marl.agents.meta.learning_state import LearningStateCriterion
 from hg_marl.agents.meta.vpi import VPICriterion
+from hg_marl.core.errors import CriterionError
+from hg_marl.core.spec import construct
 
 CRITERIA: dict[str, type[Criterion]] = {
     c.name: c
@@ -42,22 +44,15 @@ def _lookup(name: str) -> type[Criterion]:
     try:
         return CRITERIA[name]
     except KeyError:
-        raise ValueError(f"unknown criterion {name!r}; available: {', '.join(CRITERIA)}") from None
+        raise CriterionError(f"unknown criterion {name!r}; available: {', '.join(CRITERIA)}") from None
 
 
 def make_criterion(name: str, **params: Any) -> Criterion:
-    """Build a criterion by name.
+    """Build a criterion from a spec, e.g. ``make_criterion("vpi:tau=0.1")`` or ``make_criterion("vpi", tau=0.1)``.
 
     Raises:
-        ValueError: unknown name (the message lists the known ones), unknown parameter
+        CriterionError: unknown name (the message lists the known ones), unknown parameter
             (lists the accepted ones) or a parameter out of range.
     """
-    cls = _lookup(name)
-    accepted = criterion_params(name)
-    unknown = sorted(set(params) - set(accepted))
-    if unknown:
-        raise ValueError(
-            f"criterion {name!r}: unknown parameter(s) {', '.join(unknown)}; "
-            f"accepted: {', '.join(accepted) or '(none)'}"
-        )
-    return cls(**params)
+    criterion: Criterion = construct(name, CRITERIA, params, kind="criterion", error=CriterionError)
+    return criterion

@@ -1,4 +1,10 @@
-"""The goal-directed expert: a cost-optimal human-aware HTN planner (DESIGN.md section 3).
+"""The goal-directed expert: a cost-optimal human-aware HTN planner for the two agents.
+
+HATP-style: the plan is a joint plan of two streams (robot, human) with cross-stream
+links, optimal for a cost model with social terms (see :mod:`.costs`), against a model
+of what the human will do (:mod:`.models`; a stochastic model is planned against with
+expectimax, which is how a partner-aware robot hands the planner its belief about the
+human: ``Planner(world, human_model=model)``).
 
 Quick use::
 
@@ -7,12 +13,11 @@ Quick use::
     result = planner.plan(state)                   # robot to move
     result.robot_action, result.plan.duration, result.breakdown
 
-Modules: ``costs`` (cost terms, weights, config), ``models`` (human models),
-``domain`` (HTN methods), ``space`` (candidates, symmetry, admissible bound),
-``halfstep`` (A* over half-steps, the one in use), ``search`` (the joint-cycle A* it
-replaced, kept as a cross-check), ``expectimax`` (stochastic humans), ``plan`` (plans and results),
-``planner`` (the facade and its cache), ``execution`` (following and monitoring a plan),
-``gantt`` (text and PNG charts).
+Modules: ``costs`` (cost terms, weights, config, the cycle cost), ``models`` (human
+models), ``domain`` (HTN methods), ``space`` (candidates, symmetry, admissible bound),
+``halfstep`` (A* over half-steps), ``expectimax`` (stochastic humans), ``plan`` (plans
+and results), ``planner`` (the facade and its cache), ``gantt`` (text and PNG charts).
+The rules themselves are the core's (``World.table``).
 """
 
 from hg_marl.agents.planner.costs import TERMS, CostWeights, PlannerConfig, Terms

@@ -151,3 +151,24 @@ def cycle_terms(d_robot: float, active_robot: bool, d_human: float, active_human
     e_r = d_robot if active_robot else 0.0
     e_h = d_human if active_human else 0.0
     return Terms(dt, e_h, max(0.0, e_h - e_r), dt - e_h, dt if holding else 0.0)
+
+
+def cycle_cost(
+    weights: tuple[float, ...], d_robot: float, active_robot: bool, d_human: float, active_human: bool, holding: bool
+) -> float:
+    """Weighted cost of one cycle: ``CostWeights.total(cycle_terms(...))`` in one pass.
+
+    The search's inner loop calls this for every edge, so it takes the weights as a plain
+    tuple (:attr:`CostWeights.vector`) and builds no :class:`Terms`; a test checks it
+    against ``total(cycle_terms(...))``.
+    """
+    w_time, w_effort, w_balance, w_idle, w_holding = weights
+    dt = d_robot if d_robot > d_human else d_human
+    e_h = d_human if active_human else 0.0
+    e_r = d_robot if active_robot else 0.0
+    cost = w_time * dt + w_effort * e_h + w_idle * (dt - e_h)
+    if e_h > e_r:
+        cost += w_balance * (e_h - e_r)
+    if holding:
+        cost += w_holding * dt
+    return cost

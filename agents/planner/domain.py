@@ -19,8 +19,12 @@ bin; the robot cannot place, so robot-to-human transfers are handovers; human-to
 ones are handovers or a place on a spot the robot reaches. Each coordinate (robot work,
 human work) of any such chain is at least that of one method below. The robot holds one
 object at a time, so a move made while holding ``o`` belongs to ``o`` alone, and so does
-the empty-handed move that must precede picking ``o`` from a spot reachable from no
-place where the robot ever releases an object (a bin or the handover location).
+the empty-handed move that must precede acquiring ``o`` (picking it from a spot, or
+taking it at the handover location) where no place the robot ever releases an object
+(:attr:`Domain.release`: a bin, or the handover location when some object can go
+robot-to-human) is in reach: only the robot's first acquisition can save it, which the
+bound allows for. An object may go into any bin that accepts it, so its bins' reach is
+the union of theirs.
 """
 
 from __future__ import annotations
@@ -110,9 +114,9 @@ def handover_h2r(d: Domain, o: int, status: int, at: int) -> Work | None:
         return None
     after = t.take + t.throw + (t.goto if not d.handover & bins else 0.0)
     if status < d.n_spots and d.spot_human[status]:
-        return Work(after, t.pick + t.give, _NONE, frozenset({Kind.PICK}), t.pick + t.give)
+        return Work(after + d.handover_empty, t.pick + t.give, _NONE, frozenset({Kind.PICK}), t.pick + t.give)
     if status == d.human_hand:
-        return Work(after, t.give, _NONE, frozenset({Kind.GIVE}), t.give)
+        return Work(after + d.handover_empty, t.give, _NONE, frozenset({Kind.GIVE}), t.give)
     if status == d.human_offer:
         return Work(after, 0.0, frozenset({Kind.TAKE}), _NONE)
     return None
@@ -170,10 +174,15 @@ class Domain:
         self.handover = sc.handover_locations
         self.spot_locs = tuple(s.reach.robot_from for s in sc.spots)
         self.spot_human = tuple(s.reach.human for s in sc.spots)
-        self.bin_locs = tuple(sc.bins[b].reach.robot_from for b in world.bin_of)
-        self.bin_human = tuple(sc.bins[b].reach.human for b in world.bin_of)
-        release = frozenset().union(*(b.reach.robot_from for b in sc.bins), self.handover)
-        self.empty_move = tuple(self.dur.goto if locs and not locs & release else 0.0 for locs in self.spot_locs)
+        # an object may go into any bin that accepts it: the union of their reach
+        self.bin_locs = tuple(frozenset().union(*(sc.bins[b].reach.robot_from for b in bins)) for bins in world.bins_of)
+        self.bin_human = tuple(any(sc.bins[b].reach.human for b in bins) for bins in world.bins_of)
+        self.release = self._release_locations()
+        """Where the robot can end an object's journey: at a bin it throws into, or at the
+        handover location when some object may go robot-to-human."""
+        self.empty_move = tuple(self.dur.goto if locs and not locs & self.release else 0.0 for locs in self.spot_locs)
+        self.handover_empty = self.dur.goto if self.handover and not self.handover & self.release else 0.0
+        """The empty-handed trip to the handover location before a take from the human."""
         self.place_then_robot = tuple(self._place_then_robot(o) for o in range(self.n_objects))
         self.methods: list[tuple[str, MethodFn]] = list(methods)
 
@@ -184,6 +193,13 @@ class Domain:
     def human_can(self, kinds: set[Kind]) -> bool:
         """Whether the human model performs every kind in ``kinds``."""
         return kinds <= self.human_model.allowed_kinds
+
+    def _release_locations(self) -> frozenset[int]:
+        """Robot locations where it can let go of an object (see :attr:`release`)."""
+        out = frozenset().union(*self.bin_locs)
+        if any(self.bin_human) and self.human_can({Kind.TAKE, Kind.THROW}):
+            out |= self.handover
+        return out
 
     def _place_then_robot(self, o: int) -> float:
         """Least robot work to dispose of ``o`` after the human placed it within robot reach."""
@@ -205,7 +221,7 @@ class Domain:
 
     def works(self, o: int, status: int, robot_at: int) -> list[tuple[str, Work]]:
         """The applicable methods of ``dispose(o)`` with what is left of each."""
-        if self.world.is_in_bin(status):
+        if status in self.world.table.done[o]:
             return [("done", Work(0.0, 0.0, _NONE, _NONE))]
         out = []
         for name, method in self.methods:

@@ -1,24 +1,74 @@
 """Seeing a plan: a two-stream text Gantt chart and a PNG.
 
 The text chart has one row per agent on a common time axis (``scale`` characters per
-second), each step drawn as ``[name---]`` and waits as dots, followed by the step list
-with times, methods and links, so it reads in a terminal and in a log file alike.
+second). Each step is drawn as ``|code--`` from its start, with a short code (``P1`` for ``pick(tape1)``:
+a letter for the kind, then the object's number or the target's), waits as dots; a
+legend spells out every code used, then the step list gives times, methods and links,
+so it reads in a terminal and in a log file alike. The PNG writes each step's name
+horizontally inside its bar, on two lines (kind, then arguments), and widens the figure
+until every label fits its bar.
 """
 
 from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import Any
 
 from hg_marl.agents.planner.plan import Plan
-from hg_marl.core import Agent, Kind, World
+from hg_marl.core import Action, Agent, Kind, World
+
+KIND_CODE = {Kind.PICK: "P", Kind.THROW: "T", Kind.GIVE: "V", Kind.TAKE: "K", Kind.PLACE: "L", Kind.GOTO: "G"}
+"""One letter per action kind in the text chart (V: give, K: take, L: place)."""
 
 
 def _is_wait(world: World, agent: Agent, action: int) -> bool:
     return world.actions(agent)[action].kind is Kind.WAIT
 
 
-def gantt_text(world: World, plan: Plan, scale: float = 2.0) -> str:
+def _short(names: tuple[str, ...]) -> list[str]:
+    """Objects' short names: first letter and trailing digits (``green3`` -> ``g3``), or the
+    whole name when that would not be unique."""
+    short = [n[0].lower() + n[len(n.rstrip("0123456789")) :] for n in names]
+    return short if len(set(short)) == len(short) else list(names)
+
+
+def step_code(world: World, action: Action) -> str:
+    """The short code of an action: kind letter, then the object's short name, the spot's
+    number (``@2``), a bin (``B``, or ``B2`` with several) or the human (``H``)."""
+    sc = world.scenario
+    objects, n, n_bins = _short(sc.objects), len(sc.objects), world.n_bins
+    code = KIND_CODE.get(action.kind, "?")
+    if action.obj >= 0:
+        code += objects[action.obj]
+    if action.kind is Kind.PLACE:
+        code += f"@{action.target + 1}"
+    elif action.kind is Kind.GOTO:
+        t = action.target
+        if t < n:
+            code += objects[t]
+        elif t < n + n_bins:
+            code += "B" if n_bins == 1 else f"B{t - n + 1}"
+        else:
+            code += "H"
+    return code
+
+
+def gantt_legend(world: World, plan: Plan) -> list[str]:
+    """Lines explaining the chart's symbols and every step code it uses."""
+    codes: dict[str, str] = {}
+    for agent in Agent:
+        for step in plan.streams[agent]:
+            if not _is_wait(world, agent, step.action):
+                codes.setdefault(step_code(world, world.actions(agent)[step.action]), step.name)
+    pairs = [f"{code}={name}" for code, name in sorted(codes.items())]
+    lines = ["legend: |code-- an action from its start (code cut when the action is too short), .. waiting;"]
+    lines += ["  kinds: P pick, T throw, V give, K take, L place, G goto; " + "  ".join(pairs[:4])]
+    lines += ["  " + "  ".join(pairs[i : i + 5]) for i in range(4, len(pairs), 5)]
+    return lines
+
+
+def gantt_text(world: World, plan: Plan, scale: float = 4.0) -> str:
     """The plan as a two-row text Gantt chart plus a step table.
 
     Args:
@@ -36,12 +86,11 @@ def gantt_text(world: World, plan: Plan, scale: float = 2.0) -> str:
                 for i in range(a, min(b, width)):
                     line[i] = "."
                 continue
-            cell = f"[{step.name}" + "-" * max(0, b - a)
-            cell = cell[: max(1, b - a - 1)] + "]" if b - a > 1 else "|"
+            cell = (f"|{step_code(world, world.actions(agent)[step.action])}" + "-" * (b - a))[: b - a]
             for i, ch in enumerate(cell):
                 if a + i <= width:
                     line[a + i] = ch
-        rows.append(f"{agent.label:>5} |{''.join(line).rstrip()}")
+        rows.append(f"{agent.label:>5}  {''.join(line).rstrip()}")
     ticks = [" "] * (width + 1)
     for sec in range(0, int(plan.duration) + 1, 5):
         label = str(sec)
@@ -49,7 +98,7 @@ def gantt_text(world: World, plan: Plan, scale: float = 2.0) -> str:
         for i, ch in enumerate(label):
             if pos + i <= width:
                 ticks[pos + i] = ch
-    out = [f"{'t(s)':>5} |{''.join(ticks).rstrip()}", *rows, ""]
+    out = [f"{'t(s)':>5}  {''.join(ticks).rstrip()}", *rows, *gantt_legend(world, plan), ""]
     out.append(f"{'cycle':>5}  {'start':>6}  {'robot':<28} {'human':<28}")
     robot = {s.cycle: s for s in plan.streams[Agent.ROBOT]}
     human = {s.cycle: s for s in plan.streams[Agent.HUMAN]}
@@ -70,6 +119,17 @@ def gantt_text(world: World, plan: Plan, scale: float = 2.0) -> str:
 
 def gantt_png(world: World, plan: Plan, path: str | Path, title: str = "") -> Path:
     """Draw the plan's two streams as a PNG (matplotlib, Agg backend) and return the path."""
+    import matplotlib.pyplot as plt
+
+    fig = gantt_figure(world, plan, title)
+    out = Path(path)
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    return out
+
+
+def gantt_figure(world: World, plan: Plan, title: str = "") -> Any:
+    """The Gantt chart as a matplotlib figure (Agg backend); each bar's label fits inside it."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -84,14 +144,24 @@ def gantt_png(world: World, plan: Plan, path: str | Path, title: str = "") -> Pa
         Kind.GOTO: "tab:gray",
         Kind.WAIT: "whitesmoke",
     }
-    fig, ax = plt.subplots(figsize=(max(6.0, plan.duration * 0.35), 2.6))
+    fontsize = 8.0
+    labels: list[tuple[float, float, int, str, Kind]] = []
+    inches_per_second = 0.3
     for agent in Agent:
-        y = 1 - int(agent)
         for step in plan.streams[agent]:
             kind = world.actions(agent)[step.action].kind
-            ax.barh(y, step.end - step.start, left=step.start, color=colours[kind], edgecolor="black", height=0.5)
-            if kind is not Kind.WAIT:
-                ax.text((step.start + step.end) / 2, y, step.name, ha="center", va="center", fontsize=6, rotation=90)
+            text = "" if kind is Kind.WAIT else step.name.replace("(", "\n", 1).rstrip(")").replace(",", ",\n")
+            labels.append((step.start, step.end, 1 - int(agent), text, kind))
+            if text:
+                # a character of an 8-pt sans font is at most ~0.62 em wide; keep a margin
+                need = max(len(line) for line in text.split("\n")) * fontsize * 0.62 / 72 + 0.08
+                inches_per_second = max(inches_per_second, need / max(step.end - step.start, 1e-3))
+    width = min(max(6.0, plan.duration * inches_per_second + 1.5), 60.0)
+    fig, ax = plt.subplots(figsize=(width, 3.2))
+    for start, end, y, text, kind in labels:
+        ax.barh(y, end - start, left=start, color=colours[kind], edgecolor="black", height=0.7)
+        if text:
+            ax.text((start + end) / 2, y, text, ha="center", va="center", fontsize=fontsize, linespacing=1.0)
     for link in plan.links:
         src = plan.streams[link.source[0]][link.source[1]]
         dst = plan.streams[link.target[0]][link.target[1]]
@@ -104,9 +174,7 @@ def gantt_png(world: World, plan: Plan, path: str | Path, title: str = "") -> Pa
     ax.set_yticks([1, 0], [Agent.ROBOT.label, Agent.HUMAN.label])
     ax.set_xlabel("simulated time (s)")
     ax.set_xlim(0, max(plan.duration, 1.0))
+    ax.set_ylim(-0.6, 1.6)
     ax.set_title(title or f"plan: {plan.duration:.1f} s")
     fig.tight_layout()
-    out = Path(path)
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return fig

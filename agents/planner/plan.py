@@ -115,7 +115,7 @@ class PlanResult:
     """Model-specific figures (e.g. the nominal plan's own cost under a stochastic model)."""
 
     def action_distribution(self, n_actions: int, agent: Agent = Agent.ROBOT) -> np.ndarray:
-        """The planner's action distribution for the MetaController (DESIGN.md section 4).
+        """The planner's action distribution for the MetaController (docs/task.md, section 4).
 
         ``1 - (N - 1) * 0.01`` on the planned action and ``0.01`` on each other one; uniform
         (maximum entropy) when there is no planned action for ``agent``.

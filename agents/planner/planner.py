@@ -17,22 +17,38 @@ differently but has the same cost. Stochastic models cache exact queries only.
 from __future__ import annotations
 
 import logging
+import math
 import time
 from collections import OrderedDict
 from dataclasses import replace
+from typing import NamedTuple
 
 from hg_marl.agents.planner.costs import PlannerConfig, Terms
-from hg_marl.agents.planner.domain import Domain
 from hg_marl.agents.planner.expectimax import expectimax
-from hg_marl.agents.planner.halfstep import astar, prepare
+from hg_marl.agents.planner.halfstep import astar
 from hg_marl.agents.planner.models import HumanModel, cooperative
 from hg_marl.agents.planner.plan import NO_ACTION, Plan, PlanResult, build_plan, failure
-from hg_marl.agents.planner.space import Space
+from hg_marl.agents.planner.space import Relabel, shared_space
 from hg_marl.core import Agent, State, World
 
 logger = logging.getLogger(__name__)
 
 _Key = tuple[State, Agent, int]
+_INTENT_LIMIT = 200_000
+
+
+class Intent(NamedTuple):
+    """What a plan says to do next, without the plan: the planner-driven humans' question.
+
+    The same answer :meth:`Planner.plan` gives (``robot_action``, ``human_action``,
+    ``plan.duration``, ``cost``) for a fraction of its price: no streams, links or terms.
+    """
+
+    success: bool
+    robot_action: int
+    human_action: int
+    duration: float
+    cost: float
 
 
 class Planner:
@@ -50,11 +66,13 @@ class Planner:
         self.world = world
         self.config = config or PlannerConfig()
         self.human_model: HumanModel = human_model if human_model is not None else cooperative()
-        self.domain = Domain(world, self.human_model)
-        self.space = Space(self.domain, self.config.weights)
-        if not self.human_model.stochastic:
-            prepare(self.space)  # the half-step search's compiled tables
+        self.space = shared_space(world, self.human_model, self.config.weights)
+        self.domain = self.space.domain
         self._cache: OrderedDict[_Key, tuple[PlanResult, int]] = OrderedDict()
+        self._intents: dict[_Key, Intent] = {}
+        self._relabel = Relabel(world)
+        # ground actions ruled out by name are not invariant under relabelling objects
+        self._has_blocked = bool(getattr(self.human_model, "blocked", None))
         self._wait = self.space.wait
 
     def plan(self, state: State, to_move: Agent = Agent.ROBOT, *, robot_action: int | None = None) -> PlanResult:
@@ -81,6 +99,60 @@ class Planner:
         result = self._plan(state, to_move, ra, start)
         self._store(key, result)
         return result
+
+    def intent(self, state: State, to_move: Agent = Agent.ROBOT, *, robot_action: int | None = None) -> Intent:
+        """The next actions, the duration and the cost of the plan :meth:`plan` would return.
+
+        Deterministic human models run the search alone (no :class:`Plan` is built), on
+        the state with its interchangeable objects in canonical order (:class:`.Relabel`;
+        the actions are mapped back), and memoise the queries; stochastic ones ask
+        :meth:`plan`. The answer is a function of the state alone.
+        """
+        ra = robot_action if (to_move is Agent.HUMAN and robot_action is not None) else NO_ACTION
+        if self._relabel.active and not self.human_model.stochastic and not self._has_blocked:
+            canonical, orig = self._relabel.canonical(state)
+            if canonical != state:
+                answer = self.intent(canonical, to_move, robot_action=robot_action)
+                back = self._relabel.action_back
+                return answer._replace(
+                    robot_action=back(0, answer.robot_action, orig), human_action=back(1, answer.human_action, orig)
+                )
+        key = (state, to_move, ra)
+        out = self._intents.get(key)
+        if out is not None:
+            return out
+        hit = self._cache.get(key)
+        if self.human_model.stochastic or hit is not None:
+            res = self.plan(state, to_move, robot_action=robot_action)
+            if res.plan is None:
+                out = Intent(False, self._wait[0], -1, math.inf, math.inf)
+            else:
+                out = Intent(True, res.robot_action, res.human_action, res.plan.duration, res.cost)
+        else:
+            part = self._robot_part(ra)
+            found = astar(self.space, state, to_move, part, self.config.node_budget)
+            cycles = found.cycles
+            if cycles is None:
+                out = Intent(False, self._wait[0], -1, math.inf, math.inf)
+            else:
+                robot_next = (
+                    cycles[0][0] if to_move is Agent.ROBOT else (cycles[1][0] if len(cycles) > 1 else self._wait[0])
+                )
+                out = Intent(True, robot_next, cycles[0][1], self._duration(cycles, part[0]), found.cost)
+        if len(self._intents) > _INTENT_LIMIT:
+            self._intents.clear()
+        self._intents[key] = out
+        return out
+
+    def _duration(self, cycles: list[tuple[int, int]], first_robot: float) -> float:
+        """Seconds of a plan's cycles: each lasts its longer action (what ``Plan.duration`` sums)."""
+        specs = self.world.table.specs
+        total = 0.0
+        for ar, ah in cycles:
+            d_r = first_robot if ar == NO_ACTION else specs[0][ar].duration
+            d_h = specs[1][ah].duration
+            total += d_r if d_r > d_h else d_h
+        return total
 
     def _robot_part(self, ra: int) -> tuple[float, int]:
         if ra == NO_ACTION:
@@ -187,3 +259,4 @@ class Planner:
     def clear_cache(self) -> None:
         """Forget memoised plans (e.g. after changing nothing but wanting cold timings)."""
         self._cache.clear()
+        self._intents.clear()

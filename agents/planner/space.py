@@ -1,12 +1,15 @@
-"""The search space over joint cycles: candidates, symmetry, the admissible bound.
+"""The search space: candidates, symmetry, the admissible bound, all compiled per planner.
 
 :class:`Space` turns the HTN domain into what the search needs, precomputed once per
-planner and memoised per state (states are hashable ``NamedTuple`` s):
+planner from the world's :class:`~hg_marl.core.table.RuleTable` (so the rules are the
+core's) and memoised per state (states are hashable ``NamedTuple`` s):
 
-- ``candidates(state, agent)``: the agent's feasible actions (``World.feasible_indices``,
-  so the rules are the core's) that are the next step of some applicable method, minus
-  symmetric duplicates (two objects of the same bin on spots of the same reach class are
-  interchangeable; two gotos to the same location are the same move), plus ``wait``;
+- ``candidates(state, agent)``: the agent's feasible actions that are the next step of
+  some applicable method, minus symmetric duplicates (two objects accepted by the same
+  bins on spots of the same reach class are interchangeable; two gotos to the same
+  location are the same move; two placements on spots of the same class are one choice),
+  plus ``wait``. Everything that depends on (agent, robot location, object, status) is
+  tabulated; only the hand, offer and free-spot checks are left for the state;
 - ``key(state)``: a canonical transposition-table key, equal for states that are the
   same up to those symmetries (they have the same cost-to-go);
 - ``bound(state)``: an admissible lower bound on the cost-to-go from a cycle boundary.
@@ -19,23 +22,81 @@ lam R + (1 - lam) E_h`` for any ``lam`` in [0, 1], ``R`` the robot's work. Each 
 remaining work is at least that of one of its methods, so
 ``cost >= a d_wait + sum_o min_m [a lam r_m + (a (1 - lam) + b) h_m + w_hold hold_m]``
 (with ``b < 0``, ``E_h <= T`` gives the same form with ``a + b``; ``hold_m`` is the
-method's least holding time). We take the best of a few ``lam``: the
-relaxation of a two-machine schedule, tabulated per object, status and robot location.
+method's least holding time). We take the best of a few ``lam``: the relaxation of a
+two-machine schedule, tabulated per object, status and robot location. The methods'
+robot work includes the empty-handed trips that must precede acquiring an object
+(see :mod:`.domain`); the robot's first acquisition may save one, so the bound gives
+one back when the robot stands, empty-handed, where it could acquire something.
 """
 
 from __future__ import annotations
 
 import math
+import weakref
+from operator import getitem
+from typing import NamedTuple
 
 from hg_marl.agents.planner.costs import CostWeights
 from hg_marl.agents.planner.domain import Domain
-from hg_marl.core import Agent, Kind, State
+from hg_marl.agents.planner.models import HumanModel
+from hg_marl.core import Agent, Kind, State, World
 
 LAMBDAS: tuple[float, ...] = (0.0, 0.25, 0.5, 0.75, 1.0)
 """Mixing weights of robot and human work tried by the bound."""
 
 _CACHE_LIMIT = 500_000
-_getitem = list.__getitem__
+
+Entry = tuple[Kind, int, object, int]
+"""A tabulated candidate: (kind, action index, symmetry signature or None, PLACE spot or -1)."""
+
+
+_SHARED: weakref.WeakKeyDictionary[World, dict[tuple[object, CostWeights], Space]] = weakref.WeakKeyDictionary()
+
+
+def shared_space(world: World, human_model: HumanModel, weights: CostWeights) -> Space:
+    """The one :class:`Space` of a world, human model and cost model, shared by every planner.
+
+    Its caches (candidates, bounds, allowed replies) are pure functions of the state, so
+    the robot's planner and the planner-driven humans on the same layout share them
+    without changing any answer. A model that is not hashable gets a space of its own.
+    """
+    try:
+        key = (human_model, weights)
+        hash(key)
+    except TypeError:
+        return Space(Domain(world, human_model), weights)
+    per_world = _SHARED.setdefault(world, {})
+    space = per_world.get(key)
+    if space is None:
+        space = per_world[key] = Space(Domain(world, human_model), weights)
+    return space
+
+
+class RobotEdge(NamedTuple):
+    """A robot candidate from a cycle-boundary state, with what the search needs of its result."""
+
+    action: int
+    state: State
+    duration: float
+    key: object
+    """Canonical key of the mid-cycle state."""
+    h: float
+    """Bound on the cost-to-go after it (the cycle's robot duration counted)."""
+
+
+class HumanEdge(NamedTuple):
+    """A human reply from a mid-cycle state, with what the search needs of its result."""
+
+    action: int
+    state: State
+    duration: float
+    take: bool
+    active: bool
+    holding: bool
+    """Whether the human holds an object after it."""
+    key: object
+    h: float
+    """Bound on the cost-to-go from the next cycle boundary."""
 
 
 class Space:
@@ -44,44 +105,64 @@ class Space:
     def __init__(self, domain: Domain, weights: CostWeights) -> None:
         self.domain = domain
         self.world = world = domain.world
+        self.table = table = world.table
         self.weights = weights
-        self.wait = (world.n_actions(Agent.ROBOT) - 1, world.n_actions(Agent.HUMAN) - 1)
-        self._acts = (world.actions(Agent.ROBOT), world.actions(Agent.HUMAN))
+        self.wait = table.wait
         sc = world.scenario
         classes: dict[tuple[frozenset[int], bool], int] = {}
         self.spot_class = tuple(classes.setdefault((s.reach.robot_from, s.reach.human), len(classes)) for s in sc.spots)
         n_cls = len(classes)
-        # canonical code of each place: spot class, or a distinct code for bins and hands
-        self.place_code = (*self.spot_class, *range(n_cls, n_cls + world.n_bins + 2))
-        self.n_bins = world.n_bins
-        self.bin_of = world.bin_of
-        self.symmetric = len(set(self.spot_class)) < len(self.spot_class) or len(set(self.bin_of)) < len(self.bin_of)
+        # canonical code of each place: spot class; every bin is "disposed of" (objects only
+        # enter bins that accept them); the hands are distinct
+        self.place_code = (*self.spot_class, *(n_cls,) * world.n_bins, n_cls + 1, n_cls + 2)
+        n_codes = n_cls + 3
+        accept: dict[tuple[int, ...], int] = {}
+        self.object_class = tuple(accept.setdefault(bins, len(accept)) for bins in world.bins_of)
+        """Objects accepted by the same bins are interchangeable."""
+        self.symmetric = len(set(self.spot_class)) < len(self.spot_class) or len(set(self.object_class)) < len(
+            self.object_class
+        )
+        self._codes = [[code * len(accept) + c for code in self.place_code] for c in self.object_class]
+        del n_codes
         a = weights.time + weights.human_idle
         b = weights.human_effort - weights.human_idle
         c = a if b >= 0 else a + b
         self.base = a * world.durations.wait
+        """Cost of the final cycle (the robot's completing ``wait``) at least."""
         self.coefs = tuple((c * lam, c * (1.0 - lam) + max(b, 0.0)) for lam in LAMBDAS)
+        """Per ``LAMBDAS[k]``: the weight of robot work and of human work in the bound."""
         self.n_locs = len(sc.robot_locations)
-        self._codes = [[self.place_code[p] * self.n_bins + b for p in range(len(self.place_code))] for b in self.bin_of]
-        self._table = self._tabulate()
-        self._next = self._tabulate_next()
-        self._index = tuple(
-            {(a.kind, a.obj, a.target if a.kind is Kind.PLACE else -1): i for i, a in enumerate(acts)}
-            for acts in self._acts
+        self.tables = self._tabulate()
+        """``tables[k][robot_at][o][status]``: least weighted work of ``o`` for ``LAMBDAS[k]``."""
+        self.offer_tables = self._offer_tables()
+        """``tables`` for states where the robot is offering: the offered object may also go
+        back to the robot's hand (the human lets the offer lapse)."""
+        self.empty_move_coef = tuple(cr * world.durations.goto for cr, _ in self.coefs)
+        """What one saved empty-handed move is worth in the bound, per ``LAMBDAS[k]``."""
+        self.saves_at = tuple(
+            (
+                at in domain.handover and domain.handover_empty > 0.0,
+                tuple(domain.empty_move[s] > 0.0 and at in locs for s, locs in enumerate(domain.spot_locs)),
+            )
+            for at in range(self.n_locs)
         )
-        self.robot_gives = frozenset(i for i, a in enumerate(self._acts[0]) if a.kind is Kind.GIVE)
+        self._next = self._tabulate_next()
+        acts = table.actions
+        self.robot_gives = frozenset(i for i, a in enumerate(acts[0]) if a.kind is Kind.GIVE)
         """Robot give indices (an unanswered give is not robot activity, see ``robot_active``)."""
-        self.human_takes = frozenset(i for i, a in enumerate(self._acts[1]) if a.kind is Kind.TAKE)
-        self._gotos = tuple(i for i, a in enumerate(self._acts[0]) if a.kind is Kind.GOTO)
+        self.human_takes = frozenset(i for i, a in enumerate(acts[1]) if a.kind is Kind.TAKE)
         # spots worth placing on: the robot can pick from them (other human moves are not steps of any method)
-        self._place_spots = tuple(sp for sp, locs in enumerate(domain.spot_locs) if locs and domain.spot_human[sp])
-        self._empty_move_coef = tuple(cr * world.durations.goto for cr, _ in self.coefs)
+        self.place_spots = tuple(sp for sp, locs in enumerate(domain.spot_locs) if locs and domain.spot_human[sp])
+        self._entries = self._tabulate_candidates()
         self._cand: tuple[dict[State, tuple[int, ...]], dict[State, tuple[int, ...]]] = ({}, {})
         self._bound: dict[object, float] = {}
+        self._sums: dict[object, tuple[float, ...] | None] = {}
+        self._robot_edges: dict[State, tuple[RobotEdge, ...]] = {}
+        self._human_edges: dict[State, tuple[HumanEdge, ...]] = {}
+        self._allowed: dict[State, tuple[int, ...]] = {}
 
     # ---- bound -------------------------------------------------------------------
     def _tabulate(self) -> list[list[list[list[float]]]]:
-        """``table[k][robot_at][o][status]``: least weighted work of ``o`` for ``LAMBDAS[k]``."""
         d = self.domain
         hold = self.weights.human_holding
         works = [
@@ -101,26 +182,37 @@ class Space:
             for cr, ch in self.coefs
         ]
 
+    def _offer_tables(self) -> list[list[list[list[float]]]]:
+        d = self.domain
+        out = []
+        for table in self.tables:
+            per_k = []
+            for per_at in table:
+                rows = []
+                for row in per_at:
+                    row = list(row)
+                    row[d.robot_offer] = min(row[d.robot_offer], row[d.robot_hand])
+                    rows.append(row)
+                per_k.append(rows)
+            out.append(per_k)
+        return out
+
     def _tabulate_next(self) -> tuple[list[list[list[tuple[Kind, ...]]]], ...]:
         """``next[agent][robot_at][o][status]``: kinds that are a next step of an applicable method."""
         d = self.domain
         out: tuple[list[list[list[tuple[Kind, ...]]]], ...] = ([], [])
-        for at in range(self.n_locs):
-            per_agent: tuple[list[list[tuple[Kind, ...]]], ...] = ([], [])
-            for o in range(d.n_objects):
-                rows: tuple[list[tuple[Kind, ...]], ...] = ([], [])
-                for st in range(d.n_status):
-                    robot: set[Kind] = set()
-                    human: set[Kind] = set()
-                    for _, w in d.works(o, st, at):
-                        robot |= w.robot_next
-                        human |= w.human_next
-                    rows[0].append(tuple(sorted(robot)))
-                    rows[1].append(tuple(sorted(human)))
-                per_agent[0].append(rows[0])
-                per_agent[1].append(rows[1])
-            out[0].append(per_agent[0])
-            out[1].append(per_agent[1])
+        for agent in Agent:
+            for at in range(self.n_locs):
+                per_o = []
+                for o in range(d.n_objects):
+                    rows = []
+                    for st in range(d.n_status):
+                        kinds: set[Kind] = set()
+                        for _, w in d.works(o, st, at):
+                            kinds |= w.robot_next if agent is Agent.ROBOT else w.human_next
+                        rows.append(tuple(sorted(kinds)))
+                    per_o.append(rows)
+                out[agent].append(per_o)
         return out
 
     def statuses(self, state: State) -> list[int]:
@@ -131,6 +223,98 @@ class Space:
             out[state.offer_obj] = d.human_offer if state.offer_by == Agent.HUMAN else d.robot_offer
         return out
 
+    def cached_sums(self, state: State, key: object) -> tuple[float, ...] | None:
+        """:meth:`sums` memoised by canonical key (symmetric states have the same sums)."""
+        out = self._sums.get(key, 0)
+        if out == 0:
+            if len(self._sums) > _CACHE_LIMIT:
+                self._sums.clear()
+            out = self._sums[key] = self.sums(state)
+        return out  # type: ignore[return-value]
+
+    def robot_edges(self, state: State) -> tuple[RobotEdge, ...]:
+        """The robot's candidates at ``state`` applied (dead ends left out), memoised.
+
+        A pure function of the state, so successive searches (the humans plan at every
+        turn, from neighbouring states) reuse each other's expansions.
+        """
+        out = self._robot_edges.get(state)
+        if out is None:
+            apply, key_of, base = self.table.successor_feasible, self.key, self.base
+            cr = [c for c, _ in self.coefs]
+            edges = []
+            for ar in self.candidates(state, Agent.ROBOT):
+                s1, d_r = apply(state, Agent.ROBOT, ar)
+                key = key_of(s1)
+                sm = self.cached_sums(s1, key)
+                if sm is not None:
+                    h = base + max(v + c * d_r for v, c in zip(sm, cr, strict=True))
+                    edges.append(RobotEdge(ar, s1, d_r, key, h))
+            out = tuple(edges)
+            if len(self._robot_edges) > _CACHE_LIMIT:
+                self._robot_edges.clear()
+            self._robot_edges[state] = out
+        return out
+
+    def human_edges(self, state: State) -> tuple[HumanEdge, ...]:
+        """The replies the human model allows at mid-cycle ``state`` applied (dead ends left out), memoised."""
+        out = self._human_edges.get(state)
+        if out is None:
+            apply, key_of, base = self.table.successor_feasible, self.key, self.base
+            hand_h = self.table.hand[Agent.HUMAN]
+            wait_h = self.wait[Agent.HUMAN]
+            edges = []
+            for ah in self.allowed(state):
+                s2, d_h = apply(state, Agent.HUMAN, ah)
+                key = key_of(s2)
+                sm = self.cached_sums(s2, key)
+                if sm is not None:
+                    edges.append(
+                        HumanEdge(
+                            ah, s2, d_h, ah in self.human_takes, ah != wait_h, hand_h in s2.where, key, base + max(sm)
+                        )
+                    )
+            out = tuple(edges)
+            if len(self._human_edges) > _CACHE_LIMIT:
+                self._human_edges.clear()
+            self._human_edges[state] = out
+        return out
+
+    def allowed(self, state: State) -> tuple[int, ...]:
+        """The human replies a deterministic model allows at ``state`` (its candidates, filtered)."""
+        out = self._allowed.get(state)
+        if out is None:
+            out = ()
+            for _, choice in self.domain.human_model.choices(self.world, state, self.candidates(state, Agent.HUMAN)):
+                out += tuple(choice)
+            if len(self._allowed) > _CACHE_LIMIT:
+                self._allowed.clear()
+            self._allowed[state] = out
+        return out
+
+    def sums(self, state: State) -> tuple[float, ...] | None:
+        """Per ``LAMBDAS[k]``, the weighted remaining work of ``state`` (None: a dead end).
+
+        Valid at a cycle boundary and, with the robot's offer allowed to lapse
+        (:attr:`offer_tables`), in the middle of a cycle.
+        """
+        d = self.domain
+        at = state.robot_at
+        where = state.where
+        statuses = list(where)
+        if state.offer_obj >= 0:
+            statuses[state.offer_obj] = d.human_offer if state.offer_by == 1 else d.robot_offer
+        tabs = self.tables if state.offer_by != 0 else self.offer_tables
+        vals = [sum(map(getitem, tab[at], statuses)) for tab in tabs]
+        if math.inf in vals:
+            return None
+        if d.robot_hand not in where:
+            handover, spots = self.saves_at[at]
+            n_spots = d.n_spots
+            if handover or any(p < n_spots and spots[p] for p in where):
+                return tuple(v - e for v, e in zip(vals, self.empty_move_coef, strict=True))
+        return tuple(vals)
+
     def bound(self, state: State, key: object = None) -> float:
         """Admissible lower bound on the cost-to-go of a cycle-boundary state (inf: dead end)."""
         if key is None:
@@ -138,20 +322,8 @@ class Space:
         value = self._bound.get(key)
         if value is not None:
             return value
-        d = self.domain
-        at = state.robot_at
-        statuses = self.statuses(state)
-        exception = d.robot_hand not in state.where and any(
-            s < d.n_spots and d.empty_move[s] and at in d.spot_locs[s] for s in state.where
-        )
-        best = 0.0
-        for k, table in enumerate(self._table):
-            total = sum(map(_getitem, table[at], statuses))
-            if exception:
-                total -= self._empty_move_coef[k]
-            if total > best:
-                best = total
-        value = self.base + best if not math.isinf(best) else math.inf
+        sm = self.cached_sums(state, key)
+        value = math.inf if sm is None else self.base + max(0.0, *sm)
         if len(self._bound) > _CACHE_LIMIT:
             self._bound.clear()
         self._bound[key] = value
@@ -162,10 +334,45 @@ class Space:
         """Canonical transposition key: equal for states equal up to object/spot symmetry."""
         if not self.symmetric:
             return state
-        return (tuple(sorted(map(_getitem, self._codes, state.where))), state.robot_at, state.offer_by)
+        return (tuple(sorted(map(getitem, self._codes, state.where))), state.robot_at, state.offer_by)
 
     # ---- candidates --------------------------------------------------------------
-    def candidates(self, state: State, agent: Agent) -> tuple[int, ...]:
+    def _tabulate_candidates(self) -> tuple[list[list[list[tuple[Entry, ...]]]], ...]:
+        """``entries[agent][robot_at][o][status]``: candidate actions whose reach holds there."""
+        world, d, table = self.world, self.domain, self.table
+        n_spots = world.n_spots
+        out: tuple[list[list[list[tuple[Entry, ...]]]], ...] = ([], [])
+        for agent in Agent:
+            for at in range(self.n_locs):
+                per_o = []
+                for o in range(world.n_objects):
+                    per_st = []
+                    for st in range(d.n_status):
+                        entries: list[Entry] = []
+                        for kind in self._next[agent][at][o][st]:
+                            if kind is Kind.PLACE:
+                                for spot in self.place_spots:
+                                    i = table.action_index(agent, kind, o, spot)
+                                    entries.append((kind, i, (kind, self.spot_class[spot]), spot))
+                                continue
+                            i = table.action_index(agent, kind, o)
+                            if kind is Kind.PICK:
+                                if st < n_spots and table.reach[agent][at][st]:
+                                    entries.append((kind, i, (kind, self.spot_class[st], self.object_class[o]), -1))
+                            elif kind is Kind.THROW:
+                                if table.throw_to[agent][at][o] >= 0:
+                                    entries.append((kind, i, None, -1))
+                            elif kind is Kind.GIVE:
+                                if table.give_ok[at]:
+                                    entries.append((kind, i, None, -1))
+                            elif kind is Kind.TAKE:
+                                entries.append((kind, i, None, -1))
+                        per_st.append(tuple(entries))
+                    per_o.append(per_st)
+                out[agent].append(per_o)
+        return out
+
+    def candidates(self, state: State, agent: int) -> tuple[int, ...]:
         """Relevant, symmetry-reduced feasible actions of ``agent`` in ``state`` (``wait`` last)."""
         cache = self._cand[agent]
         out = cache.get(state)
@@ -176,42 +383,90 @@ class Space:
             cache[state] = out
         return out
 
-    def _candidates(self, state: State, agent: Agent) -> tuple[int, ...]:
-        world = self.world
-        nxt = self._next[agent][state.robot_at]
-        index = self._index[agent]
-        acts = self._acts[agent]
-        cleared = state
-        if state.offer_by == agent.other:
-            cleared = state._replace(offer_by=-1, offer_obj=-1)
-        seen: set[tuple[int, ...]] = set()
+    def _candidates(self, state: State, agent: int) -> tuple[int, ...]:
+        where, at, by, obj = state
+        table = self.table
+        hand = table.hand[agent]
+        statuses = list(where)
+        if obj >= 0:
+            d = self.domain
+            statuses[obj] = d.human_offer if by == 1 else d.robot_offer
+        empty = hand not in where
+        partner_offer = by >= 0 and by != agent
+        rows = self._entries[agent][at]
+        seen: set[object] = set()
         out: list[int] = []
-        for o, status in enumerate(self.statuses(state)):
-            for kind in nxt[o][status]:
-                if kind is Kind.PLACE:
-                    for spot in self._place_spots:
-                        i = index[(kind, o, spot)]
-                        sig: tuple[int, ...] = (kind, self.spot_class[spot])
-                        if sig not in seen and world.feasible(cleared, agent, acts[i]):
-                            seen.add(sig)
-                            out.append(i)
-                    continue
-                i = index[(kind, o, -1)]
-                # picks of interchangeable objects (same bin, same spot class) are one choice
-                sig = (kind, self.spot_class[status], self.bin_of[o]) if kind is Kind.PICK else (kind, o)
-                if sig in seen:
-                    continue
-                s = state if (kind is Kind.TAKE and state.offer_obj == o) else cleared
-                if world.feasible(s, agent, acts[i]):
+        for o, st in enumerate(statuses):
+            for kind, i, sig, spot in rows[o][st]:
+                if kind is Kind.PICK:
+                    if not empty or sig in seen:
+                        continue
                     seen.add(sig)
-                    out.append(i)
-        if agent is Agent.ROBOT:
+                elif kind is Kind.TAKE:
+                    if not (partner_offer and obj == o and empty):
+                        continue
+                elif kind is Kind.PLACE:
+                    if where[o] != hand or sig in seen or spot in where:
+                        continue
+                    seen.add(sig)
+                elif where[o] != hand:  # THROW, GIVE
+                    continue
+                out.append(i)
+        if agent == 0:
+            n = table.n_objects
+            goto = table.action_index(0, Kind.GOTO, target=0)
             dests: set[int] = set()
-            for i in self._gotos:
-                dest = world.goto_destination(cleared, acts[i].target)
+            per_place = table.goto_obj[at]
+            for t, p in enumerate(where):
+                dest = per_place[p]
                 if dest >= 0 and dest not in dests:
                     dests.add(dest)
-                    out.append(i)
+                    out.append(goto + t)
+            for k, dest in enumerate(table.goto_static[at]):
+                if dest >= 0 and dest not in dests:
+                    dests.add(dest)
+                    out.append(goto + n + k)
         out.sort()
         out.append(self.wait[agent])
         return tuple(out)
+
+
+class Relabel:
+    """Interchangeable objects (accepted by the same bins) put in a canonical order.
+
+    Two states that differ only by which of two interchangeable objects is where have
+    the same optimal plans up to that relabelling, so a planner may answer for the
+    canonical state and map the actions back: on ``roboergosum`` the 5,040 layouts are
+    140 canonical ones. The canonical state sorts each class's objects by place code.
+    """
+
+    def __init__(self, world: World) -> None:
+        self.table = world.table
+        groups: dict[tuple[int, ...], list[int]] = {}
+        for o, bins in enumerate(world.bins_of):
+            groups.setdefault(bins, []).append(o)
+        self.classes = tuple(tuple(g) for g in groups.values() if len(g) > 1)
+        self.active = bool(self.classes)
+        """False when no two objects are interchangeable (states are already canonical)."""
+
+    def canonical(self, state: State) -> tuple[State, tuple[int, ...]]:
+        """The canonical state and, per object of it, the object of ``state`` it stands for."""
+        where = state.where
+        orig = list(range(len(where)))
+        for members in self.classes:
+            for slot, o in zip(members, sorted(members, key=where.__getitem__), strict=True):
+                orig[slot] = o
+        new_where = tuple(where[o] for o in orig)
+        offer_obj = orig.index(state.offer_obj) if state.offer_obj >= 0 else -1
+        return State(new_where, state.robot_at, state.offer_by, offer_obj), tuple(orig)
+
+    def action_back(self, agent: int, index: int, orig: tuple[int, ...]) -> int:
+        """The action of the original labelling that ``index`` (canonical labelling) stands for."""
+        if index < 0:
+            return index
+        kind, obj, target, _ = self.table.specs[agent][index]
+        if obj >= 0:
+            obj = orig[obj]
+        elif kind is Kind.GOTO and target < len(orig):
+            target = orig[target]
+        return self.table.action_index(agent, kind, obj, target)

@@ -110,6 +110,8 @@ class LearningRobot(Robot):
                 q_config = QLearnerConfig(**q_config)
             except TypeError as exc:
                 raise ValueError(f"bad q_config {q_config!r}: {exc}") from None
+        elif q_config is not None and not isinstance(q_config, QLearnerConfig):
+            raise ValueError(f"bad q_config {q_config!r}: expected a JSON object of habit settings")
         self.q_config = q_config or QLearnerConfig()
         self._given_learner = learner
         self.learner = learner

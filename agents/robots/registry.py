@@ -11,6 +11,8 @@ from hg_marl.agents.robots.hybrid import HybridRobot
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.agents.robots.sb3 import SB3Robot
 from hg_marl.agents.robots.uniform import RandomRobot
+from hg_marl.core.errors import RobotError
+from hg_marl.core.spec import construct
 
 ROBOTS: dict[str, type[Robot]] = {c.name: c for c in (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot)}
 """Robot classes by name (a registry of classes: the only module-level table)."""
@@ -30,21 +32,18 @@ def _lookup(name: str) -> type[Robot]:
     try:
         return ROBOTS[name]
     except KeyError:
-        raise ValueError(f"unknown robot {name!r}; available: {', '.join(ROBOTS)}") from None
+        raise RobotError(f"unknown robot {name!r}; available: {', '.join(ROBOTS)}") from None
 
 
 def make_robot(name: str, **params: Any) -> Robot:
-    """Build a robot agent by name, e.g. ``make_robot("hybrid", criterion="vpi")``.
+    """Build a robot from a spec: ``make_robot("hybrid:criterion=vpi")`` = ``make_robot("hybrid", criterion="vpi")``.
+
+    Parameters in the spec are read by the one spec parser (:mod:`hg_marl.core.spec`),
+    typed by the constructor's defaults; keyword arguments win over them.
 
     Raises:
-        ValueError: unknown name (the message lists the known ones), unknown parameter
-            (lists the accepted ones), or a bad criterion or criterion parameter.
+        RobotError: unknown name (the message lists the known ones), unknown parameter
+            (lists the accepted ones) or a bad value; CriterionError for the criterion's own.
     """
-    cls = _lookup(name)
-    accepted = robot_params(name)
-    unknown = sorted(set(params) - set(accepted))
-    if unknown:
-        raise ValueError(
-            f"robot {name!r}: unknown parameter(s) {', '.join(unknown)}; accepted: {', '.join(accepted) or '(none)'}"
-        )
-    return cls(**params)
+    robot: Robot = construct(name, ROBOTS, params, kind="robot", error=RobotError)
+    return robot

@@ -1,12 +1,12 @@
 """``sb3``: a robot that plays a Stable-Baselines3 / sb3-contrib model trained in the robot seat.
 
-A trained model is a ``.zip`` (SB3's own format) with a JSON *sidecar* of the same stem
-next to it (``model.zip`` + ``model.json``, see :func:`write_sidecar`). The sidecar says
-what the model cannot: the algorithm class to load it with, the view's observation mode
-it was trained on (``"facts"``, ``"flat"`` or ``"dict"``, see
-:mod:`hg_marl.agents.views`), the scenario, the seat, and the fact and action names, so
-the robot rebuilds exactly the observation the network saw and refuses a world whose
-facts or actions differ.
+A trained model is a model file (:mod:`hg_marl.agents.model_file`): a JSON header
+(``model.json``) and its ``.npz`` weights. The header says what the weights cannot: the
+algorithm and policy class to rebuild, the view's observation mode it was trained on
+(``"facts"``, ``"flat"`` or ``"dict"``, see :mod:`hg_marl.agents.views`), the scenario,
+the seat, and the fact and action names, so the robot rebuilds exactly the observation
+the network saw and refuses a world whose facts or actions differ. Loading never
+unpickles; SB3's own ``.zip`` is refused (``hg-marl convert --trust F`` converts one).
 
 Action masks. A maskable model (``MaskablePPO``) is always given the turn's mask, as in
 training. Plain models (PPO, A2C, DQN) act as they were trained: they never saw the mask
@@ -29,7 +29,6 @@ robots registry) never imports torch.
 
 from __future__ import annotations
 
-import json
 import time
 from pathlib import Path
 from typing import Any
@@ -37,108 +36,11 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.meta.cost import CostModel
+from hg_marl.agents.model_file import OBSERVATIONS, ModelFile, build_sb3, check_world, load_model_file
 from hg_marl.agents.robots.base import Robot
 from hg_marl.core import Agent, World
+from hg_marl.core.errors import RobotError
 from hg_marl.policy import Turn
-
-SIDECAR_FORMAT = "hg_marl.sb3"
-SIDECAR_VERSION = 1
-OBSERVATIONS = ("facts", "flat", "dict")
-
-
-def model_paths(path: str | Path) -> tuple[Path, Path]:
-    """The ``(model.zip, sidecar.json)`` pair for a zip, its stem, its sidecar or a directory.
-
-    A directory means ``DIR/model.zip``; ``best_model`` (without suffix) means
-    ``best_model.zip``, as SB3's ``load`` accepts.
-    """
-    p = Path(path)
-    if p.is_dir():
-        p = p / "model.zip"
-    if p.suffix in (".zip", ".json"):
-        p = p.with_suffix("")
-    return p.with_suffix(".zip"), p.with_suffix(".json")
-
-
-def write_sidecar(
-    path: str | Path,
-    *,
-    algo: str,
-    world: World,
-    scenario: str,
-    observation: str,
-    seat: Agent = Agent.ROBOT,
-    extra: dict[str, Any] | None = None,
-) -> Path:
-    """Write the sidecar next to the model ``path`` (atomically: a temp file, then a rename).
-
-    Args:
-        path: the model's zip (or its stem).
-        algo: the SB3 class name (``"PPO"``, ``"MaskablePPO"``, ...).
-        world: the world trained in (its fact and action names go in the sidecar).
-        scenario: the scenario *spec* trained on (e.g. ``"generated:objects=2,seed=1"``), so
-            the model can be evaluated on the same one.
-        observation: the view's observation mode.
-        seat: the seat trained in.
-        extra: anything else worth keeping (the training configuration).
-
-    Returns:
-        The sidecar's path.
-    """
-    if observation not in OBSERVATIONS:
-        raise ValueError(f"observation must be one of {OBSERVATIONS}, got {observation!r}")
-    _, side = model_paths(path)
-    data = {
-        "format": SIDECAR_FORMAT,
-        "version": SIDECAR_VERSION,
-        "algo": algo,
-        "scenario": scenario,
-        "scenario_name": world.scenario.name,
-        "observation": observation,
-        "seat": seat.label,
-        "fact_names": list(world.fact_names),
-        "action_names": list(world.action_names[seat]),
-        **(extra or {}),
-    }
-    side.parent.mkdir(parents=True, exist_ok=True)
-    tmp = side.with_name(f".{side.name}.tmp")
-    tmp.write_text(json.dumps(data, indent=1, sort_keys=True, default=str) + "\n")
-    tmp.replace(side)
-    return side
-
-
-def read_sidecar(path: str | Path) -> dict[str, Any]:
-    """Read and check the sidecar of the model at ``path``.
-
-    Raises:
-        FileNotFoundError: no model zip or no sidecar.
-        ValueError: not an hg_marl sidecar.
-    """
-    model, side = model_paths(path)
-    if not model.is_file():
-        raise FileNotFoundError(f"no SB3 model at {model}")
-    if not side.is_file():
-        raise FileNotFoundError(
-            f"{model}: no sidecar {side.name} (scenario/observation/algo); models trained by `hg-marl train` have one"
-        )
-    data: dict[str, Any] = json.loads(side.read_text())
-    if data.get("format") != SIDECAR_FORMAT or data.get("observation") not in OBSERVATIONS or not data.get("algo"):
-        raise ValueError(f"{side}: not an {SIDECAR_FORMAT} sidecar with algo and observation")
-    return data
-
-
-def algo_class(algo: str) -> Any:
-    """The SB3 or sb3-contrib class called ``algo`` (imports SB3)."""
-    import stable_baselines3
-
-    cls = getattr(stable_baselines3, algo, None)
-    if cls is None:
-        import sb3_contrib
-
-        cls = getattr(sb3_contrib, algo, None)
-    if cls is None:
-        raise ValueError(f"unknown SB3 algorithm class {algo!r}")
-    return cls
 
 
 def is_maskable(model: Any) -> bool:
@@ -160,7 +62,7 @@ class SB3Robot(Robot):
     """Plays a trained SB3 model in the robot seat (see the module docstring).
 
     Args:
-        path: the model zip (or its stem, or a directory holding ``model.zip``) with its sidecar.
+        path: the model header (``model.json``), its weights, its stem, or its folder.
         deterministic: take the policy's most probable action (False: sample with the
             robot's generator).
         cost: decision cost model (default: the habit's 1 ms constant).
@@ -181,32 +83,24 @@ class SB3Robot(Robot):
     ) -> None:
         super().__init__(cost)
         if (path is None) == (model is None):
-            raise ValueError("sb3 robot needs path=<model.zip> (or an in-memory model=, not both)")
+            raise RobotError("robot 'sb3' needs a trained model: --model FILE")
         self.deterministic = bool(deterministic)
-        self.sidecar: dict[str, Any] = {}
+        self.file: ModelFile | None = None
         if path is not None:
-            self.sidecar = read_sidecar(path)
-            if self.sidecar.get("seat", "robot") != "robot":
-                raise ValueError(f"{path}: trained in the {self.sidecar['seat']} seat, not the robot's")
-            model = algo_class(self.sidecar["algo"]).load(model_paths(path)[0], device="cpu")
-            observation = self.sidecar["observation"]
+            self.file = load_model_file(path, what="--model", seat="robot")
+            model = build_sb3(self.file, optimizer=False)
+            observation = self.file.header["observation"]
         if observation not in OBSERVATIONS:
-            raise ValueError(f"observation must be one of {OBSERVATIONS}, got {observation!r}")
+            raise RobotError(f"observation must be one of {', '.join(OBSERVATIONS)}, got {observation!r}")
         self.model = model
-        self.observation: str = observation
+        self.observation: str = str(observation)
         self.maskable = is_maskable(model)
 
     def _reset(self, world: World) -> None:
         if self.agent is not Agent.ROBOT:
-            raise ValueError("SB3Robot plays the robot seat only")
-        if self.sidecar and (
-            self.sidecar["fact_names"] != list(world.fact_names)
-            or self.sidecar["action_names"] != list(world.action_names[Agent.ROBOT])
-        ):
-            raise ValueError(
-                f"SB3 model trained on {self.sidecar['scenario']!r} does not match scenario "
-                f"{world.scenario.name!r}: different facts or actions"
-            )
+            raise RobotError("the sb3 robot plays the robot seat only")
+        if self.file is not None:
+            check_world(self.file, world, Agent.ROBOT)
 
     def _sample(self, obs: Any, mask: np.ndarray) -> int:
         """Draw from the policy's distribution with the robot's own generator."""

@@ -6,7 +6,11 @@ from collections.abc import Mapping
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
+from hg_marl.core.errors import ConfigError, check_finite
 from hg_marl.core.types import Kind
+
+MAX_DURATION = 86_400.0
+"""Longest action duration accepted (one simulated day)."""
 
 
 @dataclass(frozen=True)
@@ -34,6 +38,10 @@ class Durations:
     failed: float = 0.2
     """An action whose preconditions do not hold: only the precondition check."""
 
+    def __post_init__(self) -> None:
+        for f in fields(self):
+            check_finite(getattr(self, f.name), f"durations.{f.name}", positive=True, maximum=MAX_DURATION)
+
     def of(self, kind: Kind, ok: bool = True) -> float:
         """Duration of an action of ``kind`` (``failed`` when ``ok`` is False)."""
         if not ok:
@@ -42,15 +50,17 @@ class Durations:
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any], source: str = "<config>") -> Durations:
-        """Build from a mapping such as a TOML table, naming any bad field."""
+        """Build from a mapping such as a TOML table, naming any bad field (NaN and infinity are refused).
+
+        Raises:
+            ConfigError: an unknown action type or a value that is not a finite positive number.
+        """
         known = {f.name for f in fields(cls)}
-        out = cls()
+        values: dict[str, float] = {}
         for key, value in data.items():
             if key not in known:
-                raise ValueError(
+                raise ConfigError(
                     f"{source}: field 'durations.{key}': unknown action type (known: {', '.join(sorted(known))})"
                 )
-            if isinstance(value, bool) or not isinstance(value, int | float) or value <= 0:
-                raise ValueError(f"{source}: field 'durations.{key}': expected a positive number, got {value!r}")
-            out = replace(out, **{key: float(value)})
-        return out
+            values[key] = check_finite(value, f"{source}: field 'durations.{key}'", positive=True, maximum=MAX_DURATION)
+        return replace(cls(), **values)

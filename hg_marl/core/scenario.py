@@ -10,12 +10,23 @@ reached from and whether the human reaches it. The robot reaches what its curren
 location reaches; handovers need the robot at one of ``handover_locations``.
 
 Built-in names: ``paper2015`` (default), ``roboergosum``, and ``generated`` (seeded
-random geometry, parameters after a colon: ``"generated:objects=6,spots=9,seed=3"``).
+random geometry, parameters after a colon: ``"generated:objects=6,spots=9,seed=3"``,
+read by the one spec parser of :mod:`hg_marl.core.spec`).
+
+Strictness. Files must be UTF-8; unknown keys, duplicate names and non-finite or
+non-positive durations are refused, with ``path:line`` found by searching the file's
+text for the field. Sizes are bounded (:data:`LIMITS`, raised by environment variables)
+and checked before anything is built. A layout where no agent can bring some object to
+a bin loads with a :class:`ScenarioWarning` (``strict=True`` refuses it).
 """
 
 from __future__ import annotations
 
+import math
+import os
+import re
 import tomllib
+import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from importlib import resources
@@ -25,7 +36,8 @@ from typing import Any
 import numpy as np
 
 from hg_marl.core.durations import Durations
-from hg_marl.core.errors import ScenarioError
+from hg_marl.core.errors import HgMarlError, ScenarioError, SpecError, check_int, check_probability, where
+from hg_marl.core.spec import bind, parse_spec, signature_defaults
 
 
 @dataclass(frozen=True)
@@ -119,65 +131,158 @@ BUILTIN = ("paper2015", "roboergosum")
 DEFAULT_SCENARIO = "paper2015"
 
 
+def _limit(name: str, default: int) -> int:
+    """A size limit, raised by the environment variable ``HG_MARL_MAX_<NAME>``."""
+    raw = os.environ.get(f"HG_MARL_MAX_{name.upper()}")
+    if raw is None:
+        return default
+    try:
+        return max(1, int(raw))
+    except ValueError:
+        raise ScenarioError(f"HG_MARL_MAX_{name.upper()}={raw!r}: expected an integer") from None
+
+
+LIMITS = {"objects": 40, "spots": 120, "bins": 16, "locations": 32, "actions": 4000}
+"""Documented size limits of a scenario (checked before anything is allocated); each is
+raised by the environment variable ``HG_MARL_MAX_OBJECTS``, ``..._SPOTS``, ``..._BINS``,
+``..._LOCATIONS``, ``..._ACTIONS``. ``actions`` bounds the human's largest action set,
+about ``objects x (spots + 5)`` (``place(o, spot)`` dominates)."""
+
+
+def check_sizes(source: str, objects: int, spots: int, bins: int, locations: int) -> None:
+    """Refuse a scenario over a size limit, with the limit and how to raise it."""
+    sizes = {
+        "objects": objects,
+        "spots": spots,
+        "bins": bins,
+        "locations": locations,
+        "actions": objects * (spots + 5) + bins + locations + 2,
+    }
+    for name, value in sizes.items():
+        limit = _limit(name, LIMITS[name])
+        if value > limit:
+            raise ScenarioError(
+                f"scenario {source}: {value} {name} is over the limit {limit} "
+                f"(set HG_MARL_MAX_{name.upper()} to raise it)"
+            )
+
+
 def available_scenarios() -> tuple[str, ...]:
     """Names accepted by :func:`load_scenario` besides file paths."""
     return (*BUILTIN, "generated")
 
 
-def load_scenario(spec: str | Path | Scenario) -> Scenario:
+def load_scenario(spec: str | Path | Scenario, *, strict: bool = False) -> Scenario:
     """Return a scenario from a built-in name, ``generated:k=v,...``, or a TOML path.
 
+    Args:
+        spec: the scenario.
+        strict: refuse (instead of warn about) a layout some object of which no agent can
+            bring to a bin.
+
     Raises:
-        ScenarioError: unknown name, unreadable file, or a malformed field.
+        ScenarioError: unknown name, unreadable file, a malformed field (``path:line``
+            where the file says it), a size over its limit, or (strict) an unsolvable layout.
     """
     if isinstance(spec, Scenario):
         return spec
     text = str(spec)
     if text in BUILTIN:
-        raw = resources.files("hg_marl.core.scenarios").joinpath(f"{text}.toml").read_text()
-        return parse_scenario(tomllib.loads(raw), source=text)
+        raw = resources.files("hg_marl.core.scenarios").joinpath(f"{text}.toml").read_text(encoding="utf-8")
+        return parse_scenario(tomllib.loads(raw), source=text, text=raw, strict=strict)
     if text == "generated" or text.startswith("generated:"):
-        params: dict[str, Any] = _parse_params(text.partition(":")[2])
         try:
-            return generate_scenario(**params)
-        except TypeError as exc:
-            raise ScenarioError(
-                f"generated scenario {text!r}: {exc} (parameters: objects, spots, locations, bins, human_only, seed)"
-            ) from exc
+            parsed = parse_spec(text, "generated scenario")
+        except SpecError as exc:
+            raise ScenarioError(str(exc)) from None
+        params = bind(
+            parsed,
+            signature_defaults(generate_scenario),
+            what=f"generated scenario {text!r}",
+            error=ScenarioError,
+        )
+        return generate_scenario(**params)
     path = Path(text)
     if path.suffix != ".toml" or not path.is_file():
         raise ScenarioError(
             f"unknown scenario {text!r}: expected one of {', '.join(available_scenarios())} "
             "or the path of an existing .toml file"
         )
+    if path.stat().st_size > MAX_FILE_BYTES:
+        raise ScenarioError(f"scenario file {path}: larger than {MAX_FILE_BYTES} bytes")
     try:
-        data = tomllib.loads(path.read_text())
+        raw = path.read_bytes().decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ScenarioError(
+            f"scenario file {path}: not UTF-8 text (byte {exc.start}); TOML files must be UTF-8, re-save it as UTF-8"
+        ) from None
+    try:
+        data = tomllib.loads(raw)
     except tomllib.TOMLDecodeError as exc:
-        raise ScenarioError(f"scenario file {path}: not valid TOML: {exc}") from exc
-    return parse_scenario(data, source=str(path))
+        found = re.search(r"\(at line (\d+), column (\d+)\)", str(exc))
+        message = re.sub(r"\s*\(at line \d+, column \d+\)", "", str(exc))
+        where_ = f"{path}:{found.group(1)}" if found else str(path)
+        raise ScenarioError(f"scenario file {where_}: not valid TOML: {message}") from None
+    except RecursionError:
+        raise ScenarioError(f"scenario file {path}: nested too deeply") from None
+    return parse_scenario(data, source=str(path), text=raw, strict=strict)
 
 
-def _parse_params(text: str) -> dict[str, int | float]:
-    params: dict[str, int | float] = {}
-    for item in filter(None, text.split(",")):
-        key, sep, value = item.partition("=")
-        if not sep:
-            raise ScenarioError(f"generated scenario parameter {item!r}: expected key=value")
-        try:
-            params[key.strip()] = int(value) if value.strip().lstrip("-").isdigit() else float(value)
-        except ValueError as exc:
-            raise ScenarioError(f"generated scenario parameter {key!r}: not a number") from exc
-    return params
+MAX_FILE_BYTES = 1 << 20
+"""A scenario file may be at most 1 MiB."""
+
+
+def _line_of(text: str, field: str) -> int | None:
+    """The line of ``field`` (``spots[2].robot_reach[0]``) in a TOML text, when it can be found."""
+    parts = re.findall(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?", field)
+    if not parts:
+        return None
+    lines = text.splitlines()
+    first, index = parts[0]
+    start, end = 0, len(lines)
+    if index:
+        headers = [i for i, line in enumerate(lines) if re.match(rf"\s*\[\[\s*{first}\s*\]\]", line)]
+        if int(index) >= len(headers):
+            return _key_line(lines, first, 0, len(lines))
+        start = headers[int(index)]
+        end = next((i for i in range(start + 1, len(lines)) if re.match(r"\s*\[", lines[i])), len(lines))
+        if len(parts) == 1:
+            return start + 1
+        return _key_line(lines, parts[1][0], start + 1, end) or start + 1
+    table = next((i for i, line in enumerate(lines) if re.match(rf"\s*\[\s*{first}\s*\]", line)), None)
+    if table is not None and len(parts) > 1:
+        end = next((i for i in range(table + 1, len(lines)) if re.match(r"\s*\[", lines[i])), len(lines))
+        return _key_line(lines, parts[1][0], table + 1, end) or table + 1
+    if table is not None:
+        return table + 1
+    top_end = next((i for i, line in enumerate(lines) if re.match(r"\s*\[", line)), len(lines))
+    return _key_line(lines, first, 0, top_end)
+
+
+def _key_line(lines: list[str], key: str, start: int, end: int) -> int | None:
+    for i in range(start, end):
+        if re.match(rf"\s*{re.escape(key)}\s*=", lines[i]):
+            return i + 1
+    return None
 
 
 class _Reader:
     """Typed access to raw TOML data that names the field in every error."""
 
-    def __init__(self, source: str) -> None:
+    def __init__(self, source: str, text: str | None = None) -> None:
         self.source = source
+        self.text = text
 
     def fail(self, path: str, message: str) -> ScenarioError:
-        return ScenarioError(f"scenario {self.source}: field {path!r}: {message}")
+        line = _line_of(self.text, path) if self.text is not None else None
+        return ScenarioError(f"scenario {where(self.source, line)}: field {path!r}: {message}")
+
+    def keys(self, data: Mapping[str, Any], allowed: Sequence[str], path: str) -> None:
+        """Refuse keys the format does not know (a typo would otherwise be silently ignored)."""
+        for key in data:
+            if key not in allowed:
+                field_ = f"{path}.{key}" if path else key
+                raise self.fail(field_, f"unknown key (known: {', '.join(allowed)})")
 
     def get(self, data: Mapping[str, Any], key: str, kind: type, path: str, default: Any = ...) -> Any:
         if key not in data:
@@ -198,7 +303,9 @@ class _Reader:
         out = []
         for i, value in enumerate(values):
             if value not in known:
-                raise self.fail(f"{path}[{i}]", f"unknown name {value!r} (known: {', '.join(known)})")
+                raise self.fail(f"{path}[{i}]", f"unknown name {value!r} (known: {', '.join(map(str, known))})")
+            if known.index(value) in out:
+                raise self.fail(f"{path}[{i}]", f"{value!r} listed twice")
             out.append(known.index(value))
         return tuple(out)
 
@@ -220,13 +327,62 @@ def _unique(reader: _Reader, names: Sequence[str], path: str) -> None:
         seen.add(name)
 
 
-def parse_scenario(data: Mapping[str, Any], source: str = "<dict>") -> Scenario:
-    """Validate raw scenario data (as read from TOML) into a :class:`Scenario`."""
-    r = _Reader(source)
+_TOP_KEYS = (
+    "name",
+    "description",
+    "robot_locations",
+    "handover_locations",
+    "robot_start",
+    "objects",
+    "bins",
+    "spots",
+    "layout",
+    "durations",
+)
+_ITEM_KEYS = {
+    "objects": ("name", "colour"),
+    "bins": ("name", "colour", "robot_reach", "human_reach"),
+    "spots": ("name", "robot_reach", "human_reach"),
+    "layout": ("count", "spots"),
+}
+
+
+def parse_scenario(
+    data: Mapping[str, Any], source: str = "<dict>", *, text: str | None = None, strict: bool = False
+) -> Scenario:
+    """Validate raw scenario data (as read from TOML) into a :class:`Scenario`.
+
+    Args:
+        data: the parsed TOML.
+        source: the file (or name) for messages.
+        text: the file's text, to give ``path:line`` in messages.
+        strict: refuse an unsolvable layout instead of warning.
+    """
+    r = _Reader(source, text)
+    r.keys(data, _TOP_KEYS, "")
+    for key, allowed in _ITEM_KEYS.items():
+        items = data.get(key)
+        if isinstance(items, list):
+            for i, item in enumerate(items):
+                if isinstance(item, dict):
+                    r.keys(item, allowed, f"{key}[{i}]")
     name = r.get(data, "name", str, "name")
     locs = tuple(r.get(data, "robot_locations", list, "robot_locations"))
     if not locs or not all(isinstance(x, str) for x in locs):
         raise r.fail("robot_locations", "expected a non-empty list of names")
+    for i, loc in enumerate(locs):
+        if loc in locs[:i]:
+            raise r.fail(f"robot_locations[{i}]", f"duplicate name {loc!r}")
+    for key in ("objects", "spots", "bins"):
+        if isinstance(data.get(key), list) and not data.get(key):
+            raise r.fail(key, "must not be empty")
+    check_sizes(
+        source,
+        len(data["objects"]) if isinstance(data.get("objects"), list) else 0,
+        len(data["spots"]) if isinstance(data.get("spots"), list) else 0,
+        len(data["bins"]) if isinstance(data.get("bins"), list) else 0,
+        len(locs),
+    )
 
     def reach(item: Mapping[str, Any], path: str) -> Reach:
         return Reach(
@@ -283,11 +439,14 @@ def parse_scenario(data: Mapping[str, Any], source: str = "<dict>") -> Scenario:
     start = r.names(data, "robot_start", "robot_start", locs, [locs[0]])
     if not start:
         raise r.fail("robot_start", "must name at least one robot location")
+    raw_durations = r.get(data, "durations", dict, "durations", {})
     try:
-        durations = Durations.from_mapping(r.get(data, "durations", dict, "durations", {}), f"scenario {source}")
-    except ValueError as exc:
-        raise ScenarioError(str(exc)) from exc
-    return Scenario(
+        durations = Durations.from_mapping(raw_durations, "scenario")
+    except HgMarlError as exc:
+        bad = next((k for k in raw_durations if f"durations.{k}'" in str(exc)), None)
+        line = _line_of(text, f"durations.{bad}") if text is not None and bad else None
+        raise ScenarioError(str(exc).replace("scenario:", f"scenario {where(source, line)}:", 1)) from None
+    scenario = Scenario(
         name=name,
         objects=objects,
         object_colours=colours,
@@ -300,6 +459,56 @@ def parse_scenario(data: Mapping[str, Any], source: str = "<dict>") -> Scenario:
         durations=durations,
         description=r.get(data, "description", str, "description", ""),
     )
+    problems = solvability_problems(scenario)
+    if problems:
+        more = f" (and {len(problems) - 1} more)" if len(problems) > 1 else ""
+        message = f"scenario {source}: {problems[0]}{more}"
+        if strict:
+            raise ScenarioError(message)
+        if message not in _WARNED:
+            _WARNED.add(message)
+            warnings.warn(message, ScenarioWarning, stacklevel=2)
+    return scenario
+
+
+def layout_count(scenario: Scenario) -> int:
+    """How many (object subset, ordered spots) deals the initial layouts enumerate, times start locations.
+
+    The exact model (the oracle) enumerates them all; computed without allocating, so a
+    caller can refuse a scenario whose enumeration would not fit.
+    """
+    count, left = len(scenario.robot_start), scenario.n_objects
+    for group in scenario.layout:
+        count *= math.comb(left, group.count) * math.perm(len(group.spots), group.count)
+        left -= group.count
+    return count
+
+
+class ScenarioWarning(UserWarning):
+    """A scenario that loads but where some initial layout cannot be cleaned."""
+
+
+_WARNED: set[str] = set()
+
+
+def solvability_problems(scenario: Scenario) -> list[str]:
+    """Why some initial layout cannot be cleaned by the two agents, if it cannot.
+
+    An object can be cleaned when someone reaches its spot and someone reaches a bin
+    that accepts its colour (handovers carry it between the agents). Every spot a
+    layout group may draw counts, since any of them can hold an object at reset.
+    """
+    problems = []
+    layout_spots = {s for g in scenario.layout for s in g.spots}
+    for s in sorted(layout_spots):
+        spot = scenario.spots[s]
+        if not spot.reach.robot_from and not spot.reach.human:
+            problems.append(f"no agent reaches spot {spot.name!r}, where the layout may put an object")
+    for o, colour in enumerate(scenario.object_colours):
+        bins = [b for b in scenario.bins if b.colour in ("", colour)]
+        if not any(b.reach.robot_from or b.reach.human for b in bins):
+            problems.append(f"no agent reaches a bin for object {scenario.objects[o]!r}")
+    return problems
 
 
 def generate_scenario(
@@ -321,14 +530,19 @@ def generate_scenario(
             object needs a human-to-robot handover or the human to throw it.
         seed: the generator's seed; same arguments, same scenario.
     """
-    n_spots = objects + 2 if spots is None else int(spots)
+    objects = check_int(objects, "generated scenario: objects", error=ScenarioError)
+    spots = None if spots is None else check_int(spots, "generated scenario: spots", error=ScenarioError)
+    locations = check_int(locations, "generated scenario: locations", error=ScenarioError)
+    bins = check_int(bins, "generated scenario: bins", error=ScenarioError)
+    seed = check_int(seed, "generated scenario: seed", minimum=0, error=ScenarioError)
+    human_only = check_probability(human_only, "generated scenario: human_only", error=ScenarioError)
+    n_spots = objects + 2 if spots is None else spots
+    check_sizes("generated", objects, n_spots, bins, locations)
     if objects < 1 or n_spots < objects or locations < 1 or bins < 1:
         raise ScenarioError(
             f"generated scenario: need objects >= 1, spots >= objects, locations >= 1, bins >= 1; "
             f"got objects={objects}, spots={n_spots}, locations={locations}, bins={bins}"
         )
-    if not 0.0 <= human_only <= 1.0:
-        raise ScenarioError(f"generated scenario: human_only={human_only} is not a probability")
     rng = np.random.default_rng(seed)
     locs = tuple(f"loc{i}" for i in range(locations))
 

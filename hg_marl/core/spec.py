@@ -27,6 +27,16 @@ REQUIRED: Any = None
 """Default marking a parameter with no default (e.g. a file path)."""
 
 
+class _PythonOnly:
+    """Marks a parameter that takes a Python object (a learner, a cost model): not settable in a spec."""
+
+    def __repr__(self) -> str:
+        return "<python object>"
+
+
+PYTHON_ONLY: Any = _PythonOnly()
+
+
 @dataclass(frozen=True)
 class Spec:
     """A parsed spec: the registry name and the raw text of each parameter."""
@@ -65,7 +75,7 @@ def _split_top_level(text: str) -> list[str]:
     return parts
 
 
-def parse_spec(text: str, what: str = "spec") -> Spec:
+def parse_spec(text: str | Spec, what: str = "spec") -> Spec:
     """Split ``"name:k=v,k2=v2"`` into a :class:`Spec` (values stay text until :func:`bind`).
 
     Args:
@@ -75,6 +85,8 @@ def parse_spec(text: str, what: str = "spec") -> Spec:
     Raises:
         SpecError: an empty name, a parameter without ``=``, or a repeated key.
     """
+    if isinstance(text, Spec):
+        return text
     if not isinstance(text, str):
         raise SpecError(f"{what}: expected a text like 'name:key=value', got {text!r}")
     name, _, rest = text.partition(":")
@@ -139,8 +151,14 @@ def convert(value: Any, default: Any, what: str, *, from_text: bool) -> Any:
         SpecError: a value of the wrong type, or a NaN/infinite number.
     """
     text = value if from_text else None
+    if isinstance(default, _PythonOnly):
+        if from_text:
+            raise SpecError(f"{what}: takes a Python object, not a value in a spec")
+        return value
     if from_text:
         value = _literal(value)
+        if isinstance(value, str) and value.lstrip()[:1] in ("{", "["):
+            raise SpecError(f"{what}: not valid JSON: {text}")
     if isinstance(default, bool):
         if from_text and isinstance(value, str) and value.lower() in ("true", "false"):
             value = value.lower() == "true"
@@ -194,6 +212,40 @@ def _check_finite_tree(value: Any, what: str) -> None:
             _check_finite_tree(v, what)
 
 
+def signature_defaults(factory: Any) -> dict[str, Any]:
+    """A class's or function's keyword parameters and defaults (:data:`REQUIRED` when none)."""
+    import inspect
+
+    out: dict[str, Any] = {}
+    for name, param in inspect.signature(factory).parameters.items():
+        if param.kind in (param.VAR_POSITIONAL, param.VAR_KEYWORD) or name == "self":
+            continue
+        default = REQUIRED if param.default is param.empty else param.default
+        if default is None:
+            default = _placeholder(str(param.annotation))
+        out[name] = default
+    return out
+
+
+def _placeholder(annotation: str) -> Any:
+    """A default of the right type for a parameter whose default is None, read from its annotation.
+
+    ``dict[...] | None`` takes a JSON object, ``str | Path | None`` a text, numbers a
+    number; anything else (a class of the project) only a Python object.
+    """
+    kinds = {part.strip().split("[")[0] for part in annotation.replace("Optional[", "").split("|")}
+    kinds.discard("None")
+    if "dict" in kinds:
+        return {}
+    if kinds & {"str", "Path"}:
+        return ""
+    if "float" in kinds:
+        return 0.0
+    if "int" in kinds:
+        return 0
+    return PYTHON_ONLY
+
+
 def bind(
     spec: Spec,
     defaults: Mapping[str, Any],
@@ -224,8 +276,41 @@ def bind(
         if key not in defaults:
             accepted = ", ".join(f"{k}={v!r}" for k, v in defaults.items()) or "none"
             raise error(f"{what} has no parameter {key!r}; its parameters: {accepted}")
+        if not from_text and (value is None or not isinstance(value, str | int | float | list | tuple | dict)):
+            out[key] = value  # a Python object (a learner, a cost model): the constructor checks it
+            continue
         try:
             out[key] = convert(value, defaults[key], f"{what}: parameter {key!r}", from_text=from_text)
         except SpecError as exc:
             raise error(str(exc)) from None
     return out
+
+
+def construct(
+    text: str | Spec,
+    classes: Mapping[str, Any],
+    params: Mapping[str, Any],
+    *,
+    kind: str,
+    error: type[HgMarlError],
+) -> Any:
+    """Build ``classes[name](**bound parameters)`` from a spec plus keyword overrides.
+
+    The one way registries of classes (robots, criteria) turn ``"hybrid:criterion=vpi"``
+    into an object: parameters are typed by the constructor's defaults (:func:`bind`),
+    and a ValueError/TypeError of the constructor becomes ``error`` naming the thing.
+    """
+    try:
+        spec = parse_spec(text, kind)
+    except SpecError as exc:
+        raise error(str(exc)) from None
+    cls = classes.get(spec.name)
+    if cls is None:
+        raise error(f"unknown {kind} {spec.name!r}; available: {', '.join(classes)}")
+    kwargs = bind(spec, signature_defaults(cls), params, what=f"{kind} {spec.name!r}", error=error)
+    try:
+        return cls(**kwargs)
+    except HgMarlError:
+        raise
+    except (TypeError, ValueError) as exc:
+        raise error(f"{kind} {spec.name!r}: {exc}") from None

@@ -1,26 +1,12 @@
-"""The task's rules: action sets, feasibility, transitions, facts and masks.
+"""The task's world: a scenario bound to its rule table, with names, facts and masks.
 
-:class:`World` binds a scenario to its ground actions and answers every question the
-environment, the planner, the humans and the oracle ask about the task, so none of
-them can drift from the rules. Transitions are deterministic and pure
-(``step(state, agent, index) -> Outcome``); the only random choice, the layout drawn
-at reset, takes the caller's ``numpy.random.Generator``.
-
-Rules (DESIGN.md section 2):
-
-- ``pick(o)``: hand empty, ``o`` on a spot the agent reaches.
-- ``throw(o)``: holding ``o``, and the bin for ``o``'s colour reachable.
-- ``give(o)``: holding ``o``, robot at a handover location; the agent is then offering.
-- ``take(o)``: the partner offered ``o`` on its last turn, hand empty. Any other reply
-  lets the offer lapse and the giver keeps ``o``.
-- ``place(o, s)`` (human): holding ``o``, ``s`` free and within the human's reach.
-- ``goto(x)`` (robot): ``x`` (an object on a spot, a bin, the human) is out of reach
-  now and reachable from some location; the robot moves to the first such location in
-  scenario order.
-- ``wait``: always feasible; the robot waiting on a clean table completes the task
-  (reward 1).
-
-An infeasible action is legal input: no effect, ``ok=False``, duration ``failed``.
+:class:`World` binds a scenario to its compiled :class:`~hg_marl.core.table.RuleTable`
+(the one place where the rules are written; ``docs/task.md`` states them) and answers
+every question the environment, the planner, the humans and the oracle ask about the
+task. Transitions are deterministic and pure (``step(state, agent, index) -> Outcome``);
+the only random choice, the layout drawn at reset, takes the caller's
+``numpy.random.Generator``. An infeasible action is legal input: no effect, ``ok=False``,
+duration ``failed``.
 """
 
 from __future__ import annotations
@@ -31,7 +17,8 @@ import numpy as np
 
 from hg_marl.core.durations import Durations
 from hg_marl.core.scenario import Scenario, load_scenario
-from hg_marl.core.types import WAIT, Action, Agent, Event, Kind, Outcome, State
+from hg_marl.core.table import RuleTable
+from hg_marl.core.types import AGENT_NAMES, Action, Agent, Event, Kind, Outcome, State
 
 _CACHE_LIMIT = 2_000_000
 
@@ -48,35 +35,24 @@ class World:
         self.scenario = load_scenario(scenario)
         self.durations = durations or self.scenario.durations
         sc = self.scenario
-        self.n_objects = len(sc.objects)
-        self.n_spots = len(sc.spots)
-        self.n_bins = len(sc.bins)
-        self.hand = (self.n_spots + self.n_bins, self.n_spots + self.n_bins + 1)
+        self.table = table = RuleTable(sc, self.durations)
+        """The compiled rules (feasibility and transitions by action index)."""
+        self.n_objects = table.n_objects
+        self.n_spots = table.n_spots
+        self.n_bins = table.n_bins
+        self.hand = table.hand
         """Place codes of the robot's and the human's hands, indexed by Agent."""
-        self.bin_of = sc.bin_of
-        self._spot_robot = tuple(s.reach.robot_from for s in sc.spots)
-        self._spot_human = tuple(s.reach.human for s in sc.spots)
-        self._bin_robot = tuple(b.reach.robot_from for b in sc.bins)
-        self._bin_human = tuple(b.reach.human for b in sc.bins)
-        self._actions = (self._robot_actions(), self._human_actions())
-        self._index = tuple({a: i for i, a in enumerate(acts)} for acts in self._actions)
+        self.bins_of = table.bins_of
+        """Per object, every bin that accepts it (a throw lands in the first one the thrower reaches)."""
+        self.bin_of = tuple(bins[0] for bins in table.bins_of)
+        """Per object, the first bin that accepts it (names and facts; any of ``bins_of`` will do)."""
+        self._actions = table.actions
+        self._index = table.index
         self._step_cache: dict[tuple[State, int, int], Outcome] = {}
         self._facts_cache: dict[State, np.ndarray] = {}
         self._mask_cache: tuple[dict[State, np.ndarray], dict[State, np.ndarray]] = ({}, {})
 
     # ---- action sets -------------------------------------------------------------
-    def _robot_actions(self) -> tuple[Action, ...]:
-        n = self.n_objects
-        acts = [Action(k, o) for k in (Kind.PICK, Kind.THROW, Kind.GIVE, Kind.TAKE) for o in range(n)]
-        acts += [Action(Kind.GOTO, -1, t) for t in range(n + self.n_bins + 1)]
-        return (*acts, WAIT)
-
-    def _human_actions(self) -> tuple[Action, ...]:
-        n = self.n_objects
-        acts = [Action(k, o) for k in (Kind.PICK, Kind.THROW, Kind.GIVE, Kind.TAKE) for o in range(n)]
-        acts += [Action(Kind.PLACE, o, s) for o in range(n) for s in range(self.n_spots)]
-        return (*acts, WAIT)
-
     def actions(self, agent: Agent) -> tuple[Action, ...]:
         """The agent's ground actions; position = the Discrete action index."""
         return self._actions[agent]
@@ -131,121 +107,84 @@ class World:
 
     def spot_reachable(self, state: State, agent: Agent, spot: int) -> bool:
         """Whether ``agent`` reaches ``spot`` in ``state``."""
-        if agent is Agent.ROBOT:
-            return state.robot_at in self._spot_robot[spot]
-        return self._spot_human[spot]
+        return self.table.reach[agent][state.robot_at][spot]
 
     def bin_reachable(self, state: State, agent: Agent, b: int) -> bool:
         """Whether ``agent`` reaches bin ``b`` in ``state``."""
         if agent is Agent.ROBOT:
-            return state.robot_at in self._bin_robot[b]
-        return self._bin_human[b]
+            return state.robot_at in self.table.bin_robot[b]
+        return self.table.bin_human[b]
 
     def holding(self, state: State, agent: Agent) -> int:
         """Index of the object ``agent`` holds, or -1."""
         hand = self.hand[agent]
-        for o, p in enumerate(state.where):
-            if p == hand:
-                return o
-        return -1
+        return state.where.index(hand) if hand in state.where else -1
 
     def is_clean(self, state: State) -> bool:
-        """Every object is in its bin."""
-        m = self.n_spots
-        return all(p == m + self.bin_of[o] for o, p in enumerate(state.where))
+        """Every object is in a bin that accepts it."""
+        return self.table.is_clean(state.where)
 
     def goto_destination(self, state: State, target: int) -> int:
         """Where ``goto(target)`` takes the robot from ``state``, or -1 if infeasible."""
-        n, b = self.n_objects, self.n_bins
-        if target < n:
-            spot = state.where[target]
-            if spot >= self.n_spots:
-                return -1
-            reach = self._spot_robot[spot]
-        elif target < n + b:
-            reach = self._bin_robot[target - n]
-        else:
-            reach = self.scenario.handover_locations
-        if state.robot_at in reach or not reach:
-            return -1
-        return min(reach)
+        return self.table.goto_destination(state, target)
 
     # ---- rules -------------------------------------------------------------------
     def feasible(self, state: State, agent: Agent, action: Action) -> bool:
         """Whether ``action``'s preconditions hold for ``agent`` in ``state``."""
-        kind, o = action.kind, action.obj
-        if kind is Kind.WAIT:
-            return True
-        if kind is Kind.GOTO:
-            return agent is Agent.ROBOT and self.goto_destination(state, action.target) >= 0
-        hand = self.hand[agent]
-        where = state.where
-        if kind is Kind.PICK:
-            p = where[o]
-            return p < self.n_spots and hand not in where and self.spot_reachable(state, agent, p)
-        if kind is Kind.TAKE:
-            return state.offer_by == agent.other and state.offer_obj == o and hand not in where
-        if where[o] != hand:
-            return False
-        if kind is Kind.THROW:
-            return self.bin_reachable(state, agent, self.bin_of[o])
-        if kind is Kind.GIVE:
-            return state.robot_at in self.scenario.handover_locations
-        # PLACE
-        s = action.target
-        return agent is Agent.HUMAN and self._spot_human[s] and s not in where
+        index = self._index[agent].get(action)
+        return index is not None and self.table.feasible(state, agent, index)
 
     def apply(self, state: State, agent: Agent, action: Action) -> Outcome:
         """The transition for one agent's action (uncached; see :meth:`step`)."""
-        name = agent.label
+        return self._outcome(state, agent, self._index[agent][action])
+
+    def _outcome(self, state: State, agent: Agent, index: int) -> Outcome:
+        """The table's transition with its reward and events (for the environment and logs).
+
+        A reply other than ``take`` of the offered object lets the partner's offer lapse
+        first; a failed ``take`` of it is a reply too, so the offer lapses after it.
+        """
+        table = self.table
+        nxt, ok, duration = table.successor(state, agent, index)
+        kind, o, target, _ = table.specs[agent][index]
+        name = AGENT_NAMES[agent]
         objects = self.scenario.objects
         events: list[Event] = []
-        if state.offer_by == agent.other and not (action.kind is Kind.TAKE and action.obj == state.offer_obj):
+        offered = state.offer_by == 1 - agent
+        take_reply = kind is Kind.TAKE and o == state.offer_obj
+        if offered and not take_reply:
             events.append(Event("let_lapse", name, objects[state.offer_obj]))
-            state = state._replace(offer_by=-1, offer_obj=-1)
-        if not self.feasible(state, agent, action):
-            events.append(Event("failed", name, self.action_name(agent, self.index(agent, action))))
-            if state.offer_by == agent.other:  # a failed take is a reply too: the offer lapses
+        if not ok:
+            events.append(Event("failed", name, self.action_names[agent][index]))
+            if offered and take_reply:
                 events.append(Event("let_lapse", name, objects[state.offer_obj]))
-                state = state._replace(offer_by=-1, offer_obj=-1)
-            return Outcome(state, False, self.durations.failed, 0.0, tuple(events))
-        kind, o = action.kind, action.obj
-        where = list(state.where)
+            return Outcome(nxt, False, duration, 0.0, tuple(events))
         reward = 0.0
         if kind is Kind.PICK:
-            events.append(Event("picked", name, objects[o], self.place_name(where[o])))
-            where[o] = self.hand[agent]
+            events.append(Event("picked", name, objects[o], self.place_name(state.where[o])))
         elif kind is Kind.THROW:
-            where[o] = self.n_spots + self.bin_of[o]
-            events.append(Event("threw", name, objects[o], self.place_name(where[o])))
+            events.append(Event("threw", name, objects[o], self.place_name(nxt.where[o])))
         elif kind is Kind.GIVE:
             events.append(Event("offered", name, objects[o]))
-            state = state._replace(offer_by=int(agent), offer_obj=o)
         elif kind is Kind.TAKE:
-            where[o] = self.hand[agent]
             events.append(Event("took", name, objects[o]))
-            state = state._replace(offer_by=-1, offer_obj=-1)
         elif kind is Kind.PLACE:
-            where[o] = action.target
-            events.append(Event("placed", name, objects[o], self.place_name(action.target)))
+            events.append(Event("placed", name, objects[o], self.place_name(target)))
         elif kind is Kind.GOTO:
-            dest = self.goto_destination(state, action.target)
-            state = state._replace(robot_at=dest)
-            events.append(Event("moved", name, "", self.scenario.robot_locations[dest]))
-        elif agent is Agent.ROBOT and self.is_clean(state):
+            events.append(Event("moved", name, "", self.scenario.robot_locations[nxt.robot_at]))
+        elif agent is Agent.ROBOT and table.is_clean(state.where):
             reward = 1.0
             events.append(Event("completed", name, "", "task"))
-        new = state._replace(where=tuple(where))
-        return Outcome(new, True, self.durations.of(kind), reward, tuple(events))
+        return Outcome(nxt, True, duration, reward, tuple(events))
 
     def step(self, state: State, agent: Agent, index: int) -> Outcome:
-        """Memoised :meth:`apply` by action index (the environment's hot path)."""
+        """Memoised transition by action index (the environment's hot path)."""
         key = (state, agent, index)
         out = self._step_cache.get(key)
         if out is None:
             if len(self._step_cache) > _CACHE_LIMIT:
                 self._step_cache.clear()
-            out = self._step_cache[key] = self.apply(state, agent, self._actions[agent][index])
+            out = self._step_cache[key] = self._outcome(state, agent, index)
         return out
 
     # ---- observations ------------------------------------------------------------
@@ -257,7 +196,7 @@ class World:
         return (
             *(f"isReachableBy({x},robot)" for x in things),
             *(f"isReachableBy({x},human)" for x in things),
-            *(f"isIn({o},{sc.bins[self.bin_of[i]].name})" for i, o in enumerate(sc.objects)),
+            *(f"isIn({o},{'|'.join(sc.bins[k].name for k in self.bins_of[i])})" for i, o in enumerate(sc.objects)),
             "isReachableBy(human,robot)",
             *(f"hasInHand(robot,{o})" for o in sc.objects),
             *(f"hasInHand(human,{o})" for o in sc.objects),
@@ -270,21 +209,40 @@ class World:
         """Length of the fact vector."""
         return len(self.fact_names)
 
+    @cached_property
+    def _fact_lookup(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+        """Every fact but the offers as a look-up: ``table[robot_at][fact, place of its object]``.
+
+        Each fact of the paper's vector depends on one object's place and the robot's
+        location (a bin's or the human's reachability on the location only, any object
+        standing in), so one fancy index computes the vector.
+        """
+        t, n, b, m = self.table, self.n_objects, self.n_bins, self.n_spots
+        n_locs, places = t.n_locations, range(t.n_places)
+        rows: list[tuple[int, list[list[bool]]]] = []  # (object, value per location and place)
+        for agent in (Agent.ROBOT, Agent.HUMAN):
+            for o in range(n):
+                rows.append((o, [[p < m and t.reach[agent][at][p] for p in places] for at in range(n_locs)]))
+            for k in range(b):
+                reached = [at in t.bin_robot[k] if agent is Agent.ROBOT else t.bin_human[k] for at in range(n_locs)]
+                rows.append((0, [[reached[at]] * t.n_places for at in range(n_locs)]))
+        rows += [(o, [[p in t.done[o] for p in places]] * n_locs) for o in range(n)]
+        rows.append((0, [[at in t.handover] * t.n_places for at in range(n_locs)]))
+        for hand in self.hand:
+            rows += [(o, [[p == hand for p in places]] * n_locs) for o in range(n)]
+        lookup = np.array([[values[at] for _, values in rows] for at in range(n_locs)], dtype=np.int8)
+        objects = np.array([o for o, _ in rows], dtype=np.intp)
+        return lookup, np.arange(len(rows)), objects, len(rows)
+
     def compute_facts(self, state: State) -> np.ndarray:
         """The paper's boolean fact vector for ``state`` (a fresh int8 array)."""
-        n, b, m = self.n_objects, self.n_bins, self.n_spots
-        where = state.where
-        out: list[bool] = []
-        for agent in (Agent.ROBOT, Agent.HUMAN):
-            out += [p < m and self.spot_reachable(state, agent, p) for p in where]
-            out += [self.bin_reachable(state, agent, k) for k in range(b)]
-        out += [p == m + self.bin_of[o] for o, p in enumerate(where)]
-        out.append(state.robot_at in self.scenario.handover_locations)
-        out += [p == self.hand[Agent.ROBOT] for p in where]
-        out += [p == self.hand[Agent.HUMAN] for p in where]
-        for giver in (Agent.ROBOT, Agent.HUMAN):
-            out += [state.offer_by == giver and state.offer_obj == o for o in range(n)]
-        return np.array(out, dtype=np.int8)
+        lookup, rows, objects, n_fixed = self._fact_lookup
+        fixed = lookup[state.robot_at][rows, np.array(state.where, dtype=np.intp)[objects]]
+        out = np.zeros(n_fixed + 2 * self.n_objects, dtype=np.int8)
+        out[:n_fixed] = fixed
+        if state.offer_by >= 0:
+            out[n_fixed + state.offer_by * self.n_objects + state.offer_obj] = 1
+        return out
 
     def facts(self, state: State) -> np.ndarray:
         """Memoised, read-only :meth:`compute_facts`."""
@@ -298,40 +256,8 @@ class World:
         return arr
 
     def feasible_indices(self, state: State, agent: Agent) -> list[int]:
-        """Indices of the actions whose preconditions hold (a lapsing offer considered).
-
-        Enumerates what the agent's hand and reach allow instead of testing every
-        action, so it costs O(objects + spots), not O(actions); a property test checks
-        it against :meth:`feasible` action by action.
-        """
-        idx = self._index[agent]
-        where = state.where
-        held = self.holding(state, agent)
-        out: list[int] = []
-        if held < 0:
-            for o, p in enumerate(where):
-                if p < self.n_spots and self.spot_reachable(state, agent, p):
-                    out.append(idx[Action(Kind.PICK, o)])
-            if state.offer_by == agent.other:
-                out.append(idx[Action(Kind.TAKE, state.offer_obj)])
-        else:
-            if self.bin_reachable(state, agent, self.bin_of[held]):
-                out.append(idx[Action(Kind.THROW, held)])
-            if state.robot_at in self.scenario.handover_locations:
-                out.append(idx[Action(Kind.GIVE, held)])
-            if agent is Agent.HUMAN:
-                occupied = set(where)
-                out += [
-                    idx[Action(Kind.PLACE, held, s)]
-                    for s in range(self.n_spots)
-                    if self._spot_human[s] and s not in occupied
-                ]
-        if agent is Agent.ROBOT:
-            n_targets = self.n_objects + self.n_bins + 1
-            out += [idx[Action(Kind.GOTO, -1, t)] for t in range(n_targets) if self.goto_destination(state, t) >= 0]
-        out.append(idx[WAIT])
-        out.sort()
-        return out
+        """Sorted indices of the actions whose preconditions hold (see ``RuleTable.feasible_indices``)."""
+        return self.table.feasible_indices(state, agent)
 
     def mask(self, state: State, agent: Agent) -> np.ndarray:
         """Memoised, read-only int8 action mask: 1 where the action is feasible."""

@@ -1,29 +1,140 @@
-"""Pictures of the table: a text one (``ansi``) and an image (``rgb_array``).
+"""Pictures of the table: text (``ansi``), an image (``rgb_array``) and the shared layout.
 
-Drawn with numpy only (no window, no font, no pygame), so rendering never opens a
-window and costs little. In the image the human's side is at the top, the robot's
-locations along the bottom; spot colours tell who reaches them (blue: the robot only,
-red: the human only, purple: both, grey: nobody); bins are dark; the robot is the
-large square standing at its location, the human the large disc; an object is a small
-square in its colour (orange when uncoloured) on its spot, in its bin or beside the
-hand that holds it; a pending offer is drawn between the two agents.
+:func:`layout` places everything once (the human's side at the top, the table with its
+spots and bins in the middle, the robot's locations along the bottom, a caption band),
+so the image here and the web page's SVG (``hg_marl.training.play.svg``) draw the same
+table. In the image, spot colours tell who reaches them (blue: the robot only, red: the
+human only, purple: both, grey: nobody); bins are dark; the robot is the square at its
+location, the human the disc; an object is a small square in its colour (orange when
+uncoloured) on its spot, in its bin or beside the hand that holds it; a pending offer
+is drawn between the two agents. Labels (object, spot, bin and location names, agent
+roles, the last actions and the clock) are written with Pillow, imported only when an
+image is drawn, so ``import hg_marl`` stays light. Rendering never opens a window.
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
 from hg_marl.core import Agent, State, World
 from hg_marl.core.scenario import Bin, Spot
 
-_CELL = 48
-_PALETTE = {
+CELL = 96
+"""Width of one spot or bin column, in pixels."""
+
+PALETTE = {
     "": (240, 150, 30),
     "green": (40, 170, 60),
     "blue": (40, 90, 220),
     "red": (210, 40, 40),
     "yellow": (230, 210, 40),
 }
+"""Object colours by the scenario's colour name (grey for unknown names)."""
+
+HUMAN_MESSAGE = (
+    "render_mode='human' would open a window, which TableCleaning-v0 never does; "
+    "watch a run with `hg-marl run ... --video out.gif` or `hg-marl replay TRACE --video out.gif`, "
+    "play the human with `hg-marl play`, or use render_mode='rgb_array'"
+)
+"""The one-line answer to ``render_mode="human"``."""
+
+
+@dataclass(frozen=True)
+class Box:
+    """An axis-aligned rectangle in pixels."""
+
+    x: int
+    y: int
+    w: int
+    h: int
+
+    @property
+    def centre(self) -> tuple[int, int]:
+        """Its centre point."""
+        return self.x + self.w // 2, self.y + self.h // 2
+
+
+@dataclass(frozen=True)
+class Layout:
+    """Where everything of a scenario is drawn (pixels, origin top-left)."""
+
+    width: int
+    height: int
+    table: Box
+    """The table top."""
+    spots: tuple[Box, ...]
+    """One box per spot, in scenario order."""
+    bins: tuple[Box, ...]
+    """One box per bin."""
+    locations: tuple[tuple[int, int], ...]
+    """The robot's locations (where its square stands)."""
+    human: tuple[int, int]
+    """The human's position (disc centre)."""
+    caption_y: int
+    """Top of the caption band."""
+
+    def places(self) -> tuple[Box, ...]:
+        """Spot boxes then bin boxes: indexed like ``State.where`` codes below the hands."""
+        return self.spots + self.bins
+
+    def objects(self, world: World, state: State) -> list[tuple[int, int]]:
+        """The centre of each object's square (stacked when several share a place)."""
+        robot = self.locations[state.robot_at]
+        hands = {
+            world.hand[Agent.ROBOT]: (robot[0] + 34, robot[1] - 24),
+            world.hand[Agent.HUMAN]: (self.human[0] + 40, self.human[1]),
+        }
+        places = self.places()
+        seen: dict[int, int] = {}
+        out = []
+        for p in state.where:
+            k = seen.get(p, 0)
+            seen[p] = k + 1
+            if p in hands:
+                x, y = hands[p]
+                out.append((x + 18 * k, y))
+            else:
+                box = places[p] if p < len(places) else Box(0, 0, 0, 0)
+                out.append((box.x + 16 + (k % 3) * 22, box.y + box.h - 16 - (k // 3) * 22))
+        return out
+
+    def offer(self, state: State) -> tuple[int, int]:
+        """Where a pending offer is drawn: between the robot and the human."""
+        robot = self.locations[state.robot_at]
+        return (robot[0] + self.human[0]) // 2 + 40, self.table.y + self.table.h + 14
+
+
+@lru_cache(maxsize=32)
+def layout(world: World) -> Layout:
+    """The layout of ``world``'s scenario (cached: it depends on the scenario only)."""
+    sc = world.scenario
+    columns = max(world.n_spots + world.n_bins, len(sc.robot_locations))
+    width = columns * CELL + CELL
+    table = Box(CELL // 4, 88, width - CELL // 2, 150)
+    spots = tuple(Box(CELL // 2 + i * CELL + 4, 118, CELL - 8, 96) for i in range(world.n_spots))
+    bins = tuple(Box(CELL // 2 + (world.n_spots + b) * CELL + 4, 110, CELL - 8, 112) for b in range(world.n_bins))
+    n = max(len(sc.robot_locations), 1)
+    step = (width - CELL // 2) / n
+    locations = tuple((int(CELL // 4 + step * (i + 0.5)), 280) for i in range(len(sc.robot_locations)))
+    return Layout(width, 384, table, spots, bins, locations, (width // 2, 44), 340)
+
+
+def reach_tint(item: Spot | Bin) -> tuple[int, int, int]:
+    """A spot's colour by who reaches it (see the module docstring)."""
+    robot, human = bool(item.reach.robot_from), item.reach.human
+    if robot and human:
+        return (150, 100, 200)
+    if robot:
+        return (120, 150, 230)
+    return (230, 130, 130) if human else (160, 160, 160)
+
+
+def object_colour(world: World, o: int) -> tuple[int, int, int]:
+    """An object's drawing colour."""
+    return PALETTE.get(world.scenario.object_colours[o], (120, 120, 120))
 
 
 def render_ansi(world: World, state: State, clock: float, cycle: int, tasks: int) -> str:
@@ -49,60 +160,45 @@ def render_ansi(world: World, state: State, clock: float, cycle: int, tasks: int
     return "\n".join(lines)
 
 
-def _box(img: np.ndarray, x: int, y: int, w: int, h: int, colour: tuple[int, int, int]) -> None:
-    img[max(y, 0) : y + h, max(x, 0) : x + w] = colour
+def render_rgb(world: World, state: State, caption: str = "") -> np.ndarray:
+    """An ``(H, W, 3)`` uint8 labelled image of the table, with ``caption`` at the bottom."""
+    from PIL import Image, ImageDraw
 
-
-def _disc(img: np.ndarray, cx: int, cy: int, r: int, colour: tuple[int, int, int]) -> None:
-    yy, xx = np.ogrid[: img.shape[0], : img.shape[1]]
-    img[(yy - cy) ** 2 + (xx - cx) ** 2 <= r * r] = colour
-
-
-def render_rgb(world: World, state: State) -> np.ndarray:
-    """An ``(H, W, 3)`` uint8 image of the table."""
     sc = world.scenario
-    columns = max(world.n_spots + world.n_bins, len(sc.robot_locations)) + 1
-    width, height = columns * _CELL, 5 * _CELL
-    img = np.full((height, width, 3), 250, dtype=np.uint8)
-    _box(img, _CELL // 4, _CELL, width - _CELL // 2, 2 * _CELL, (200, 170, 120))  # the table
-    colour = [_PALETTE.get(c, (120, 120, 120)) for c in sc.object_colours]
-    slots: list[tuple[int, int]] = []
-    for i, spot in enumerate(sc.spots):
-        robot, human = bool(spot.reach.robot_from), spot.reach.human
-        tint = (
-            (150, 100, 200)
-            if robot and human
-            else (120, 150, 230)
-            if robot
-            else (230, 130, 130)
-            if human
-            else (160, 160, 160)
-        )
-        x = _CELL // 2 + i * _CELL
-        _box(img, x + 4, int(1.5 * _CELL), _CELL - 8, _CELL - 8, tint)
-        slots.append((x + _CELL // 2, 2 * _CELL - 4))
-    for b in range(world.n_bins):
-        x = _CELL // 2 + (world.n_spots + b) * _CELL
-        _box(img, x + 4, int(1.4 * _CELL), _CELL - 8, _CELL, (60, 60, 60))
-        slots.append((x + _CELL // 2, 2 * _CELL))
-    loc_x = [
-        _CELL // 2 + i * (width - _CELL) // max(len(sc.robot_locations), 1) + _CELL // 2
-        for i in range(len(sc.robot_locations))
-    ]
-    for x in loc_x:
-        _disc(img, x, 4 * _CELL, 5, (90, 90, 90))
-    robot_x, human_x = loc_x[state.robot_at], width // 2
-    _box(img, robot_x - 16, int(3.6 * _CELL), 32, 32, (70, 110, 160))
-    _disc(img, human_x, _CELL // 2, 18, (230, 180, 150))
-    hands = {
-        world.hand[Agent.ROBOT]: (robot_x + 22, int(3.6 * _CELL)),
-        world.hand[Agent.HUMAN]: (human_x + 22, _CELL // 2 - 8),
-    }
-    for o, p in enumerate(state.where):
-        cx, cy = hands.get(p, slots[p] if p < len(slots) else (0, 0))
-        if world.is_in_bin(p):
-            cx += (o % 3 - 1) * 10
-        _box(img, cx - 7, cy - 7, 14, 14, colour[o])
+    lay = layout(world)
+    img = Image.new("RGB", (lay.width, lay.height), (250, 250, 250))
+    draw = ImageDraw.Draw(img)
+    t = lay.table
+    draw.rectangle((t.x, t.y, t.x + t.w, t.y + t.h), fill=(200, 170, 120))
+    for spot, box in zip(sc.spots, lay.spots, strict=True):
+        draw.rectangle((box.x, box.y, box.x + box.w, box.y + box.h), fill=reach_tint(spot))
+        draw.text((box.x + 3, box.y + 3), spot.name, fill=(20, 20, 20))
+    for b, box in zip(sc.bins, lay.bins, strict=True):
+        draw.rectangle((box.x, box.y, box.x + box.w, box.y + box.h), fill=(60, 60, 60))
+        draw.text((box.x + 3, box.y + 3), b.name, fill=(240, 240, 240))
+    for name, (x, y) in zip(sc.robot_locations, lay.locations, strict=True):
+        draw.ellipse((x - 5, y + 30, x + 5, y + 40), fill=(90, 90, 90))
+        draw.text((x - 3 * len(name), y + 42), name, fill=(60, 60, 60))
+    rx, ry = lay.locations[state.robot_at]
+    draw.rectangle((rx - 22, ry - 22, rx + 22, ry + 22), fill=(70, 110, 160))
+    draw.text((rx - 15, ry - 6), "robot", fill=(255, 255, 255))
+    hx, hy = lay.human
+    draw.ellipse((hx - 26, hy - 26, hx + 26, hy + 26), fill=(230, 180, 150))
+    draw.text((hx - 15, hy - 6), "human", fill=(20, 20, 20))
+    for o, (x, y) in enumerate(lay.objects(world, state)):
+        draw.rectangle((x - 9, y - 9, x + 9, y + 9), fill=object_colour(world, o), outline=(0, 0, 0))
+        draw.text((x - 9, y + 10), sc.objects[o], fill=(0, 0, 0), stroke_width=2, stroke_fill=(255, 255, 255))
     if state.offer_by >= 0:
-        _box(img, (robot_x + human_x) // 2 - 5, int(2.6 * _CELL), 10, 10, colour[state.offer_obj])
-    return img
+        x, y = lay.offer(state)
+        draw.rectangle((x - 7, y - 7, x + 7, y + 7), fill=object_colour(world, state.offer_obj), outline=(0, 0, 0))
+        by = Agent(state.offer_by).label
+        draw.text((x + 12, y - 6), f"{by} offers {sc.objects[state.offer_obj]}", fill=(0, 0, 0))
+    if caption:
+        draw.text((8, lay.caption_y + 8), caption, fill=(0, 0, 0))
+    return np.asarray(img, dtype=np.uint8).copy()
+
+
+def caption_of(world: World, clock: float, tasks: int, last_actions: tuple[int, int]) -> str:
+    """The image caption: the clock, tasks solved and each agent's last action."""
+    names = [world.action_names[a][i] if i >= 0 else "-" for a, i in zip(Agent, last_actions, strict=True)]
+    return f"t={clock:.1f}s  tasks={tasks}   robot: {names[0]}   human: {names[1]}"

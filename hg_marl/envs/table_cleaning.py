@@ -21,7 +21,8 @@ Termination                   episodic (default): at the end of the cycle in whi
                               experiments): the table is re-drawn and play goes on.
 Truncation                    after ``max_cycles`` cycles or when the clock reaches
                               ``time_budget`` simulated seconds.
-Render modes                  ``ansi`` (text), ``rgb_array`` (numpy image); no window, ever.
+Render modes                  ``ansi`` (text), ``rgb_array`` (labelled numpy image); no window,
+                              ever (``human`` is refused with a pointer to ``--video``).
 ============================  =================================================================
 
 Rules. An action whose preconditions fail is legal input: it has no effect, costs the
@@ -45,6 +46,7 @@ Version history: v0 - initial release.
 from __future__ import annotations
 
 import operator
+from collections.abc import Mapping
 from typing import Any, ClassVar
 
 import numpy as np
@@ -53,7 +55,8 @@ from pettingzoo import AECEnv
 from pettingzoo.utils import wrappers
 
 from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Kind, Scenario, State, World
-from hg_marl.envs.render import render_ansi, render_rgb
+from hg_marl.core.errors import ConfigError, check_bool, check_finite, check_int
+from hg_marl.envs.render import HUMAN_MESSAGE, caption_of, render_ansi, render_rgb
 from hg_marl.policy import Turn
 
 _RESET_EVENT = Event("reset", "table", "", "new layout")
@@ -94,14 +97,21 @@ class raw_env(AECEnv):
             durations: override the scenario's action durations.
         """
         super().__init__()
+        if render_mode == "human":
+            raise ValueError(HUMAN_MESSAGE)
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
             raise ValueError(
                 f"render_mode {render_mode!r} is not supported; use one of {self.metadata['render_modes']} or None"
             )
-        if max_cycles is not None and max_cycles < 1:
-            raise ValueError(f"max_cycles must be a positive integer or None, got {max_cycles}")
-        if time_budget is not None and time_budget <= 0:
-            raise ValueError(f"time_budget must be positive seconds or None, got {time_budget}")
+        check_bool(continuing, "continuing")
+        if max_cycles is not None:
+            max_cycles = check_int(max_cycles, "max_cycles", minimum=1)
+        if time_budget is not None:
+            time_budget = check_finite(time_budget, "time_budget (simulated seconds)", positive=True)
+        if isinstance(durations, Mapping):
+            durations = Durations.from_mapping(durations, "durations")
+        elif durations is not None and not isinstance(durations, Durations):
+            raise ConfigError(f"durations: expected a Durations or a mapping like {{'pick': 2.0}}, got {durations!r}")
         self.world = World(scenario, durations)
         self.continuing = continuing
         self.max_cycles = max_cycles
@@ -175,9 +185,7 @@ class raw_env(AECEnv):
 
     def charge_time(self, seconds: float) -> None:
         """Add decision time (e.g. planning) to the current cycle's duration."""
-        if seconds < 0:
-            raise ValueError(f"charged time must be non-negative, got {seconds}")
-        self._charged += seconds
+        self._charged += check_finite(seconds, "charge_time(seconds)", minimum=0.0)
 
     def _check_action(self, agent: Agent, action: Any) -> int:
         n = self._n_actions[agent]
@@ -277,6 +285,8 @@ class raw_env(AECEnv):
     def observe(self, agent: str) -> dict[str, np.ndarray]:
         """Facts and this agent's action mask (shared read-only arrays)."""
         state = self.world_state
+        if agent not in AGENT_NAMES:
+            raise ConfigError(f"observe: unknown agent {agent!r}; the agents are {', '.join(AGENT_NAMES)}")
         return {
             "observation": self.world.facts(state),
             "action_mask": self.world.mask(state, Agent.ROBOT if agent == "robot" else Agent.HUMAN),
@@ -314,7 +324,8 @@ class raw_env(AECEnv):
             return None
         if self.render_mode == "ansi":
             return render_ansi(self.world, self.world_state, self.clock, self.cycles, self.tasks_solved)
-        return render_rgb(self.world, self.world_state)
+        last = (self._last_actions[0], self._last_actions[1])
+        return render_rgb(self.world, self.world_state, caption_of(self.world, self.clock, self.tasks_solved, last))
 
     def close(self) -> None:
         """Nothing to release: no window is ever opened."""

@@ -78,8 +78,12 @@ def test_unknown_name_and_bad_params_are_clear() -> None:
         make_human("lazy", speed=2)
     with pytest.raises(HumanError, match="probability"):
         make_human("lazy", p_idle=1.5)
-    with pytest.raises(HumanError, match="expects float"):
+    with pytest.raises(HumanError, match="p_idle': expected a finite number, got 'often'"):
         make_human("lazy:p_idle=often")
+    with pytest.raises(HumanError, match="p_idle': expected a finite number"):
+        make_human("lazy:p_idle=NaN")
+    with pytest.raises(HumanError, match="feasible_only': expected true or false, got 'no'"):
+        make_human("random:feasible_only=no")
     assert make_human("lazy:p_idle=0.25").p_idle == 0.25  # type: ignore[attr-defined]
 
 
@@ -251,9 +255,9 @@ def test_learned_table_round_trip(tmp_path: Path) -> None:
 
 def test_learned_rejects_another_scenario(tmp_path: Path) -> None:
     save_learned_policy(tmp_path / "p", PAPER, weights=np.zeros((PAPER.n_actions(Agent.HUMAN), PAPER.n_facts)))
-    with pytest.raises(ValueError, match="does not match"):
+    with pytest.raises(ValueError, match="differ from 'roboergosum'"):
         make_human("learned", path=str(tmp_path / "p")).reset(ROBO, Agent.HUMAN, np.random.default_rng(0))
-    with pytest.raises(HumanError, match=r"no policy\.json"):
+    with pytest.raises(ValueError, match=r"no model\.json or policy\.json"):
         make_human("learned", path=str(tmp_path))
 
 

@@ -15,9 +15,9 @@ from hg_marl.agents.planner import (
     PlannerConfig,
     make_human_model,
 )
-from hg_marl.agents.planner.execution import PlanMonitor, expected_human_action, next_robot_action
 from hg_marl.core import Agent, Kind, World
 from hg_marl.core.scenario import parse_scenario
+from tests.agents.plan_execution import PlanMonitor, expected_human_action, next_robot_action
 
 
 def tiny(spot_robot: list[str], spot_human: bool, bin_human: bool = False, shared: bool = False) -> World:

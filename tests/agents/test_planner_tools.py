@@ -49,10 +49,44 @@ def test_gantt_text_and_png(tmp_path) -> None:  # type: ignore[no-untyped-def]
     plan = Planner(world).plan(world.initial_state(np.random.default_rng(0))).plan
     assert plan is not None
     text = gantt_text(world, plan)
-    assert "robot |" in text and "human |" in text and "completes at" in text
+    assert "robot  |" in text and "human  " in text and "completes at" in text
     assert "link handover" in text
     out = gantt_png(world, plan, tmp_path / "plan.png")
     assert out.stat().st_size > 1000
+
+
+def test_gantt_text_legend_spells_out_every_code() -> None:
+    world = World("paper2015")
+    plan = Planner(world).plan(world.initial_state(np.random.default_rng(0))).plan
+    assert plan is not None
+    text = gantt_text(world, plan)
+    legend = dict(pair.split("=") for line in text.splitlines() if "=" in line for pair in line.split() if "=" in pair)
+    # seed 0 (hand-checked): the robot bins tape1 and tape3 alone, the human hands tape2 over
+    assert legend["Pt1"] == "pick(tape1)" and legend["Vt2"] == "give(tape2)" and legend["Kt2"] == "take(tape2)"
+    assert legend["GB"] == "goto(trashbin)" and legend["GH"] == "goto(human)"
+    rows = [line for line in text.splitlines() if line.startswith(("robot ", "human "))]
+    drawn = {code.rstrip("-. ") for row in rows for code in row[7:].split("|")[1:]}
+    assert drawn == set(legend), "every drawn step's code is complete and explained"
+
+
+def test_gantt_png_labels_are_horizontal_and_fit_their_bars() -> None:
+    from hg_marl.agents.planner.gantt import gantt_figure
+
+    world = World("roboergosum")
+    plan = Planner(world).plan(world.initial_state(np.random.default_rng(3))).plan
+    assert plan is not None
+    fig = gantt_figure(world, plan)
+    renderer = fig.canvas.get_renderer()
+    ax = fig.axes[0]
+    bars = [p.get_window_extent(renderer) for p in ax.patches]
+    labels = [t for t in ax.texts if t.get_text()]
+    assert len(labels) == sum(1 for stream in plan.streams for s in stream if s.name != "wait")
+    for label in labels:
+        assert label.get_rotation() == 0
+        box = label.get_window_extent(renderer)
+        assert any(b.x0 <= box.x0 and box.x1 <= b.x1 and b.y0 <= box.y0 and box.y1 <= b.y1 for b in bars), (
+            label.get_text()
+        )
 
 
 def test_plan_command(tmp_path) -> None:  # type: ignore[no-untyped-def]
@@ -67,7 +101,7 @@ def test_plan_command(tmp_path) -> None:  # type: ignore[no-untyped-def]
     png = tmp_path / "p.png"
     result = runner.invoke(app, ["plan", "--scenario", "paper2015", "--seed", "2", "--png", str(png)])
     assert result.exit_code == 0, result.output
-    assert "robot |" in result.output and "human_effort" in result.output and "planning time" in result.output
+    assert "robot  |" in result.output and "human_effort" in result.output and "planning time" in result.output
     assert png.exists()
     result = runner.invoke(app, ["plan", "--scenario", "roboergosum", "--budget", "2"])
     assert result.exit_code == 1 and "budget" in result.output

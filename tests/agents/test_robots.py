@@ -13,6 +13,7 @@ from hg_marl.agents.habit import QLearner
 from hg_marl.agents.planner import Planner
 from hg_marl.agents.robots import HybridRobot, Robot, available_robots, make_robot
 from hg_marl.core import WAIT, Agent, State, World
+from hg_marl.core.errors import CriterionError, RobotError
 from hg_marl.policy import Actor, Turn
 
 KEYS = {
@@ -215,12 +216,28 @@ def test_registry_lists_and_rejects() -> None:
     assert set(available_robots()) == {"planner", "habit", "hybrid", "random", "sb3"}
     with pytest.raises(ValueError, match=r"unknown robot 'oracle'; available: planner, habit, hybrid, random"):
         make_robot("oracle")
-    with pytest.raises(ValueError, match=r"unknown parameter\(s\) beta; accepted: .*q_config"):
+    with pytest.raises(RobotError, match=r"robot 'habit' has no parameter 'beta'; its parameters: q_config"):
         make_robot("habit", beta=3)
-    with pytest.raises(ValueError, match=r"unknown criterion 'nope'"):
+    with pytest.raises(CriterionError, match=r"unknown criterion 'nope'"):
         make_robot("hybrid", criterion="nope")
-    with pytest.raises(ValueError, match=r"unknown parameter\(s\) kappa"):
+    with pytest.raises(CriterionError, match=r"criterion 'vpi' has no parameter 'kappa'"):
         make_robot("hybrid", criterion="vpi", criterion_params={"kappa": 1.0})
+
+
+def test_specs_read_alike_and_values_are_typed() -> None:
+    """``make_robot("hybrid:criterion=vpi")`` is ``make_robot("hybrid", criterion="vpi")``, values checked by type."""
+    robot = make_robot("hybrid:criterion=vpi,learn=false")
+    assert type(robot.meta.criterion).__name__ == "VPICriterion" and robot.learn is False
+    with pytest.raises(RobotError, match="parameter 'learn': expected true or false, got 'no'"):
+        make_robot("hybrid:learn=no")
+    with pytest.raises(RobotError, match="parameter 'q_config': not valid JSON"):
+        make_robot("hybrid:q_config={bad json}")
+    with pytest.raises(CriterionError, match="parameter 'tau': expected a finite number"):
+        make_robot("hybrid", criterion="vpi:tau=nan")
+    with pytest.raises(RobotError, match="parameter 'cost': takes a Python object"):
+        make_robot("planner:cost=3")  # found by the fuzz suite: it failed later inside the robot
+    with pytest.raises(RobotError, match="parameter 'q_config': expected a JSON object"):
+        make_robot("habit:q_config=[1]")  # found by the fuzz suite
 
 
 def test_q_config_as_plain_dict() -> None:

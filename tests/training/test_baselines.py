@@ -21,9 +21,11 @@ from typer.testing import CliRunner
 
 from hg_marl.agents.humans import TraceRecorder, make_human
 from hg_marl.agents.humans.learned import LearnedHuman
+from hg_marl.agents.model_file import load_model_file
 from hg_marl.agents.robots import make_robot
-from hg_marl.agents.robots.sb3 import SB3Robot, read_sidecar
+from hg_marl.agents.robots.sb3 import SB3Robot
 from hg_marl.agents.views import RobotView
+from hg_marl.core.errors import ConfigError, ModelFileError
 from hg_marl.training.baselines.bc import behaviour_clone, load_traces
 from hg_marl.training.baselines.envs import EnvSpec, split_population
 from hg_marl.training.baselines.evaluation import actor_rate, runner_rate, steps_to_reach
@@ -109,10 +111,12 @@ def test_short_training_beats_random_robot(trained) -> None:
 def test_outputs_written(trained) -> None:
     config, result = trained
     out = config.out
-    side = read_sidecar(result.path)
+    side = load_model_file(result.path).header
     assert side["algo"] == "MaskablePPO" and side["observation"] == "facts" and side["scenario"] == SCENARIO
-    assert (out / "checkpoints" / "ckpt_2048_steps.zip").is_file()
+    assert side["counters"]["num_timesteps"] == result.num_timesteps
+    assert (out / "checkpoints" / "ckpt_2048_steps.npz").is_file()
     assert (out / "checkpoints" / "ckpt_2048_steps.json").is_file()
+    assert not list(out.rglob("*.zip")) and not list(out.rglob("*.pkl"))  # nothing pickled is written
     assert (out / "eval" / "evaluations.npz").is_file() and (out / "eval" / "best_model.json").is_file()
     assert any((out / "tb").rglob("events.out.tfevents*"))
 
@@ -152,15 +156,15 @@ def test_sb3_robot_respects_mask(trained) -> None:
 
 def test_sb3_robot_rejects_other_world(trained) -> None:
     _, result = trained
-    with pytest.raises(ValueError, match="does not match"):
+    with pytest.raises(ModelFileError, match="differ from 'roboergosum'"):
         run(SB3Robot(path=result.path), make_human("cooperative"), RunConfig("roboergosum", duration=10.0))
-    with pytest.raises(FileNotFoundError):
+    with pytest.raises(ModelFileError, match=r"nope\.zip: no such file"):
         SB3Robot(path=result.path.parent / "nope.zip")
 
 
 def test_resume_continues_step_count(trained, tmp_path: Path) -> None:
     config, _ = trained
-    ckpt = config.out / "checkpoints" / "ckpt_2048_steps.zip"
+    ckpt = config.out / "checkpoints" / "ckpt_2048_steps.json"
     resumed = train(
         TrainConfig(
             algo="maskable_ppo",
@@ -175,7 +179,7 @@ def test_resume_continues_step_count(trained, tmp_path: Path) -> None:
         )
     )
     assert resumed.num_timesteps >= 3072 and 0 < resumed.session_steps <= 1024 + 512
-    with pytest.raises(ValueError, match="trained with MaskablePPO"):
+    with pytest.raises(ConfigError, match="trained with --algo maskable_ppo"):
         train(TrainConfig(algo="ppo", env=config.env, steps=3072, out=tmp_path / "x", resume=ckpt, eval_freq=0))
 
 
@@ -194,7 +198,7 @@ def test_dqn_resume_keeps_replay_buffer(tmp_path: Path) -> None:
         )
     )
     ckpt = first.checkpoints[0]
-    assert ckpt.with_name(f"{ckpt.stem}_replay_buffer.pkl").is_file()
+    assert ckpt.with_name(f"{ckpt.stem}_replay_buffer.npz").is_file()
     again = train(
         TrainConfig(
             algo="dqn",
@@ -282,7 +286,7 @@ def test_behaviour_cloning_errors(tmp_path: Path) -> None:
 
 # ---- command line -------------------------------------------------------------------------
 def _app() -> typer.Typer:
-    from hg_marl.training.commands import compare, train
+    from hg_marl.training.cli import register_all
 
     app = typer.Typer()
 
@@ -290,8 +294,7 @@ def _app() -> typer.Typer:
     def _root() -> None:
         """Test app."""
 
-    train.register(app)
-    compare.register(app)
+    register_all(app, ("train", "compare"))
     return app
 
 
@@ -318,7 +321,7 @@ def test_cli_train_bc_and_errors(tmp_path: Path) -> None:
         ],
     )
     assert res.exit_code == 0, res.output
-    assert read_sidecar(tmp_path / "m" / "model.zip")["train"]["partners"] == ["cooperative", "lazy"]
+    assert load_model_file(tmp_path / "m").header["train"]["partners"] == ["cooperative", "lazy"]
     res = runner.invoke(_app(), ["train", "--algo", "sac", "--out", str(tmp_path / "x")])
     assert res.exit_code == 2 and "unknown algorithm" in res.output
     res = runner.invoke(_app(), ["train", "--hp", "bogus=1", "--out", str(tmp_path / "x")])

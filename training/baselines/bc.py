@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from hg_marl.agents.humans.learned import save_learned_policy
-from hg_marl.agents.humans.trace import read_trace
+from hg_marl.agents.humans.trace import read_trace, trace_paths
 from hg_marl.core import Agent, World
 
 log = logging.getLogger(__name__)
@@ -64,7 +64,7 @@ def load_traces(paths: Sequence[str | Path]) -> Dataset:
     masks: list[list[int]] = []
     actions: list[int] = []
     first: dict[str, object] | None = None
-    for path in paths:
+    for path in [file for given in paths for file in trace_paths(given)]:
         for episode in read_trace(path):
             h = episode.header
             key = {k: h.get(k) for k in ("scenario", "seat", "fact_names", "action_names")}
@@ -127,7 +127,8 @@ def behaviour_clone(
     """Fit a policy to recorded play and write it as a ``learned`` policy directory.
 
     Args:
-        traces: trace files (JSON lines, see :mod:`hg_marl.agents.humans.trace`).
+        traces: trace files (JSON lines, see :mod:`hg_marl.agents.humans.trace`) or
+            directories of them (every ``*.jsonl`` below, e.g. what ``hg-marl play`` recorded).
         out: the directory to write.
         kind: ``table`` or ``linear_softmax`` (see the module docstring).
         scenario: the scenario spec to build the World from (default: the traces' scenario

@@ -1,20 +1,30 @@
-"""SB3 callbacks: a tqdm progress bar, checkpoints with sidecars, and runner-protocol evaluation.
+"""SB3 callbacks: a tqdm progress bar, checkpoints, a clean stop on signals, runner-protocol evaluation.
 
-SB3's ``CheckpointCallback`` saves bare zips; ours also writes the sidecar (so every
-checkpoint loads as an ``sb3`` robot) and, for off-policy algorithms, the replay buffer
-(so ``--resume`` continues DQN with its memory). Frequencies are in environment steps
+SB3's ``CheckpointCallback`` saves pickle-based zips mid-rollout; ours write the safe
+model file (:mod:`hg_marl.agents.model_file`: every checkpoint loads as an ``sb3`` robot
+and nothing in it can run code) with the optimizer state, the step counters and, for
+off-policy algorithms, the replay buffer (so ``--resume`` continues DQN with its
+memory). They fire at the start of a rollout, when every counted step has been trained
+on, so a checkpoint never drops collected steps. Frequencies are in environment steps
 (``num_timesteps``), not in callback calls, so they mean the same whatever ``n_envs``.
+Writes are atomic: weights and buffer first, the header (which names and hashes them)
+last, so a crash leaves the previous checkpoint whole.
 """
 
 from __future__ import annotations
 
 import logging
+import signal
+import threading
 from abc import abstractmethod
-from collections.abc import Callable
+from collections.abc import Callable, Iterator, Mapping
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
 from stable_baselines3.common.callbacks import BaseCallback
+
+from hg_marl.agents.model_file import save_replay_buffer, save_sb3
 
 log = logging.getLogger(__name__)
 
@@ -33,10 +43,13 @@ class _Every(BaseCallback):
         self._next = (self.num_timesteps // self.freq + 1) * self.freq
 
     def _on_step(self) -> bool:
+        self._fire_if_due()
+        return True
+
+    def _fire_if_due(self) -> None:
         if self.num_timesteps >= self._next:
             self._next = (self.num_timesteps // self.freq + 1) * self.freq
             self._fire()
-        return True
 
     @abstractmethod
     def _fire(self) -> None:
@@ -65,41 +78,97 @@ class ProgressBar(BaseCallback):
 
 
 class Checkpoints(_Every):
-    """Every ``freq`` steps: ``DIR/ckpt_<steps>_steps.zip`` + sidecar (+ replay buffer).
+    """Every ``freq`` steps, at a rollout's start: ``DIR/ckpt_<steps>_steps.json`` + ``.npz`` (+ replay buffer).
 
     Args:
         freq: steps between checkpoints.
         directory: where to write them.
-        write_sidecar: called with the zip's path to write its sidecar.
+        save: called with the model and a header path; writes the checkpoint.
     """
 
-    def __init__(self, freq: int, directory: Path, write_sidecar: Callable[[Path], Any]) -> None:
+    def __init__(self, freq: int, directory: Path, save: Callable[[Any, Path], Path]) -> None:
         super().__init__(freq)
         self.directory = Path(directory)
-        self.write_sidecar = write_sidecar
+        self.save = save
         self.saved: list[Path] = []
 
+    def _on_rollout_start(self) -> None:
+        self._fire_if_due()  # not mid-rollout: every counted step has been trained on
+
+    def _on_step(self) -> bool:
+        return True
+
     def _fire(self) -> None:
-        path = save_checkpoint(self.model, self.directory / f"ckpt_{self.num_timesteps}_steps.zip", self.write_sidecar)
-        self.saved.append(path)
-        log.info("checkpoint %s", path)
+        self.saved.append(self.save(self.model, self.path(self.num_timesteps)))
+        log.info("checkpoint %s", self.saved[-1])
+
+    def path(self, steps: int) -> Path:
+        """The header path of the checkpoint at ``steps``."""
+        return self.directory / f"ckpt_{steps}_steps.json"
 
 
-def save_checkpoint(model: Any, path: Path, write_sidecar: Callable[[Path], Any]) -> Path:
-    """Save ``model`` at ``path`` (zip), its sidecar, and its replay buffer if it has one."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(f".{path.stem}.tmp.zip")
-    model.save(tmp)
-    tmp.replace(path)
-    write_sidecar(path)
+class StopOnSignal(BaseCallback):
+    """Stops training cleanly at the next step after SIGINT (Ctrl-C) or SIGTERM.
+
+    The handlers are installed by :meth:`catching` around ``learn``; a second signal
+    falls back to the default behaviour. After a stop, ``model.num_timesteps`` is wound
+    back to the last rollout start for on-policy algorithms (their partial rollout is
+    discarded), so the saved step count is the number of steps trained on.
+    """
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.stopped = False
+        self._requested = False
+        self._rollout_start = 0
+
+    def _on_rollout_start(self) -> None:
+        self._rollout_start = self.num_timesteps
+
+    def _on_step(self) -> bool:
+        if self._requested:
+            self.stopped = True
+            if getattr(self.model, "replay_buffer", None) is None:
+                self.model.num_timesteps = self._rollout_start
+            else:
+                # Off-policy: this step was counted before its transition was stored.
+                self.model.num_timesteps -= self.model.n_envs
+            return False
+        return True
+
+    def request(self, signum: int = 0, frame: Any = None) -> None:
+        """Ask for a stop (the signal handler); a second request restores the default handlers."""
+        if self._requested:
+            raise KeyboardInterrupt
+        self._requested = True
+        log.warning("stopping: saving a final checkpoint (signal again to abort)")
+
+    @contextmanager
+    def catching(self) -> Iterator[None]:
+        """Route SIGINT and SIGTERM to :meth:`request` while inside (main thread only)."""
+        if threading.current_thread() is not threading.main_thread():
+            yield
+            return
+        previous = {sig: signal.signal(sig, self.request) for sig in (signal.SIGINT, signal.SIGTERM)}
+        try:
+            yield
+        finally:
+            for sig, handler in previous.items():
+                signal.signal(sig, handler)
+
+
+def save_checkpoint(model: Any, path: Path, fields: Mapping[str, Any], observation: str) -> Path:
+    """Save ``model`` as a model file at ``path`` (header ``.json``), with its replay buffer if it has one."""
+    path = Path(path).with_suffix(".json")
+    extra: dict[str, Any] = {}
     if getattr(model, "replay_buffer", None) is not None:
-        model.save_replay_buffer(replay_buffer_path(path))
-    return path
+        extra["replay_buffer"] = save_replay_buffer(model.replay_buffer, replay_buffer_path(path))
+    return save_sb3(model, path, {**fields, **extra}, observation=observation)
 
 
-def replay_buffer_path(model_zip: Path) -> Path:
-    """Where the replay buffer of a checkpoint is kept."""
-    return model_zip.with_name(f"{model_zip.stem}_replay_buffer.pkl")
+def replay_buffer_path(header: Path) -> Path:
+    """Where the replay buffer of a checkpoint is kept (plain arrays, never a pickle)."""
+    return header.with_name(f"{header.stem}_replay_buffer.npz")
 
 
 class RateCurve(_Every):

@@ -22,16 +22,16 @@ from typing import Any
 
 import yaml
 
+from hg_marl.core.errors import ConfigError, ModelFileError
+
 ALGOS: Mapping[str, str] = {"ppo": "PPO", "a2c": "A2C", "dqn": "DQN", "maskable_ppo": "MaskablePPO"}
 """Command-line algorithm names and their SB3 / sb3-contrib class names."""
 
 OWN_KEYS = ("policy", "n_envs", "n_timesteps")
 """YAML keys that are not constructor arguments."""
 
-_ACTIVATIONS = {"tanh": "Tanh", "relu": "ReLU", "elu": "ELU", "leaky_relu": "LeakyReLU", "gelu": "GELU"}
 
-
-class HyperparamError(ValueError):
+class HyperparamError(ConfigError):
     """An unknown algorithm, an unknown key, or a malformed override."""
 
 
@@ -92,7 +92,7 @@ def parse_override(item: str) -> tuple[list[str], Any]:
 
 def accepted_keys(algo: str) -> tuple[str, ...]:
     """Constructor arguments the algorithm's class accepts (imports SB3)."""
-    from hg_marl.agents.robots.sb3 import algo_class
+    from hg_marl.agents.model_file import algo_class
 
     params = inspect.signature(algo_class(ALGOS[check_algo(algo)]).__init__).parameters
     return tuple(p for p in params if p not in ("self", "policy", "env", "seed", "device", "_init_setup_model"))
@@ -152,10 +152,10 @@ def model_kwargs(hp: Hyperparams) -> dict[str, Any]:
     kwargs = {k: (dict(v) if isinstance(v, dict) else v) for k, v in hp.kwargs.items()}
     policy_kwargs = kwargs.get("policy_kwargs")
     if isinstance(policy_kwargs, dict) and isinstance(policy_kwargs.get("activation_fn"), str):
-        import torch
+        from hg_marl.agents.model_file import activation
 
-        name = policy_kwargs["activation_fn"]
-        if name not in _ACTIVATIONS:
-            raise HyperparamError(f"unknown activation_fn {name!r}; use one of {', '.join(_ACTIVATIONS)}")
-        policy_kwargs["activation_fn"] = getattr(torch.nn, _ACTIVATIONS[name])
+        try:
+            policy_kwargs["activation_fn"] = activation(policy_kwargs["activation_fn"])
+        except ModelFileError as exc:
+            raise HyperparamError(str(exc)) from None
     return kwargs

@@ -5,18 +5,30 @@ vectorised views, build (or resume) the model, attach the callbacks, learn, save
 
 Output directory layout (``TrainConfig.out``)::
 
-    model.zip, model.json      the final model and its sidecar (loads as ``make_robot("sb3", path=OUT)``)
-    policy.json                human seat only: the header that makes OUT a ``make_human("learned", path=OUT)``
-    checkpoints/ckpt_<N>_steps.zip (+ .json, + _replay_buffer.pkl for DQN)
-    eval/evaluations.npz, eval/best_model.zip (+ .json)   periodic evaluation on the training view
+    model.json, model.npz      the final model (loads as ``make_robot("sb3", path=OUT)``, or in
+                               the human seat as ``make_human("learned", path=OUT)``)
+    checkpoints/ckpt_<N>_steps.json (+ .npz, + _replay_buffer.npz for DQN)
+    eval/evaluations.npz, eval/best_model.json (+ .npz)   periodic evaluation on the training view
     tb/                        TensorBoard logs
 
+Every model file is the safe format of :mod:`hg_marl.agents.model_file` (nothing in it
+can run code when loaded).
+
 Steps. ``steps`` is the run's *total* budget in environment steps (one step = one
-cycle of the view). Resuming from a checkpoint continues its step count up to that
-total, so re-running the same command with ``resume=<last checkpoint>`` finishes an
-interrupted run. Resumed runs are seeded (``seed + steps done``) and reproducible, but
-not bit-identical to an uninterrupted run (the environments restart on fresh tables).
-A resumed model keeps the hyperparameters stored in its checkpoint.
+cycle of the view). Resuming from a checkpoint restores its step count, optimizer state
+and counters and continues up to that total, so re-running the same command with
+``resume=<last checkpoint>`` finishes an interrupted run. Resumed runs are seeded
+(``seed + steps done``) and reproducible, but not bit-identical to an uninterrupted run
+(the environments restart on fresh tables). A resumed model keeps the hyperparameters
+stored in its checkpoint.
+
+Checkpoints. By default every tenth of the budget, rounded up to whole rollouts
+(``n_steps x n_envs`` for PPO/A2C, ``train_freq x n_envs`` for DQN), written at a
+rollout's start. Ctrl-C or SIGTERM stops at the next step and writes a final checkpoint
+(a second signal aborts).
+
+Imports. SB3 and torch are imported inside :func:`train` only, so the command line can
+read :class:`TrainConfig`'s defaults without them.
 
 Threads. Small MLPs gain nothing from intra-op parallelism, and several trainings may
 share a 2-core machine, so ``torch_threads`` (default 1) is applied with
@@ -32,13 +44,30 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from hg_marl.agents.robots.sb3 import algo_class, model_paths, read_sidecar, write_sidecar
+from hg_marl.agents.model_file import (
+    ModelFile,
+    algo_class,
+    build_sb3,
+    load_model_file,
+    load_replay_buffer,
+    world_fields,
+)
 from hg_marl.core import Agent, World
-from hg_marl.training.baselines.callbacks import Checkpoints, ProgressBar, replay_buffer_path, save_checkpoint
+from hg_marl.core.errors import ConfigError, ModelFileError, check_int
 from hg_marl.training.baselines.envs import DEFAULT_MAX_CYCLES, EnvSpec, make_vec_env
-from hg_marl.training.baselines.hyperparams import Hyperparams, check_algo, load_hyperparams, model_kwargs
+from hg_marl.training.baselines.hyperparams import (
+    OWN_KEYS,
+    Hyperparams,
+    accepted_keys,
+    check_algo,
+    load_hyperparams,
+    model_kwargs,
+)
 
 log = logging.getLogger(__name__)
+
+MAX_STEPS = 10**9
+"""Largest ``--steps`` accepted."""
 
 EVAL_SEED_OFFSET = 10_000
 """The evaluation environments are seeded ``seed + EVAL_SEED_OFFSET``: never the training tables' seeds."""
@@ -66,10 +95,10 @@ class TrainConfig:
     """Steps between evaluations on the training view (0: none)."""
     eval_episodes: int = 10
     """Episodes per evaluation."""
-    checkpoint_freq: int = 25_000
-    """Steps between checkpoints (0: none)."""
+    checkpoint_freq: int | None = None
+    """Steps between checkpoints (None: a tenth of the budget, in whole rollouts; 0: none)."""
     resume: Path | None = None
-    """A checkpoint (zip) to continue from."""
+    """A checkpoint (its ``.json`` header) to continue from."""
     tensorboard: bool = True
     """Write TensorBoard logs under ``out/tb``."""
     progress_bar: bool = False
@@ -81,10 +110,13 @@ class TrainConfig:
 
     def __post_init__(self) -> None:
         check_algo(self.algo)
-        if self.steps is not None and self.steps < 1:
-            raise ValueError(f"steps must be positive, got {self.steps}")
-        if self.eval_freq < 0 or self.checkpoint_freq < 0:
-            raise ValueError("eval_freq and checkpoint_freq must be >= 0")
+        if self.steps is not None:
+            check_int(self.steps, "--steps", minimum=1, maximum=MAX_STEPS)
+        check_int(self.eval_freq, "--eval-freq", minimum=0)
+        check_int(self.eval_episodes, "--eval-episodes", minimum=1)
+        check_int(self.seed, "--seed", minimum=0)
+        if self.checkpoint_freq is not None:
+            check_int(self.checkpoint_freq, "--checkpoint-freq", minimum=0)
 
 
 @dataclass
@@ -105,6 +137,8 @@ class TrainResult:
     """Wall time of this call's ``learn``."""
     checkpoints: list[Path] = field(default_factory=list)
     """Checkpoints written in this call."""
+    interrupted: bool = False
+    """Stopped by Ctrl-C or SIGTERM (the last checkpoint resumes it)."""
 
     @property
     def steps_per_second(self) -> float:
@@ -112,45 +146,61 @@ class TrainResult:
         return self.session_steps / self.seconds if self.seconds > 0 else float("nan")
 
 
-def sidecar_writer(config: TrainConfig, hp: Hyperparams, world: World) -> Any:
-    """A function writing this run's sidecar next to a given zip."""
+def header_fields(config: TrainConfig, hp: Hyperparams, world: World) -> dict[str, Any]:
+    """What a model file of this run records besides the weights: world, seat, training configuration."""
     seat = Agent.ROBOT if config.env.seat == "robot" else Agent.HUMAN
-    extra = {"train": {**asdict(config.env), "seed": config.seed, "hyperparams": hp.as_dict()}}
-
-    def write(path: Path) -> Path:
-        return write_sidecar(
-            path,
-            algo=hp.class_name,
-            world=world,
-            scenario=config.env.scenario,
-            observation=config.env.observation,
-            seat=seat,
-            extra=extra,
-        )
-
-    return write
+    train_info = {**asdict(config.env), "seed": config.seed, "hyperparams": hp.as_dict()}
+    return {**world_fields(world, seat, scenario=config.env.scenario), "train": train_info}
 
 
-def _load(config: TrainConfig, hp: Hyperparams, env: Any) -> Any:
-    """Resume: load the checkpoint (and its replay buffer), check it is the same algorithm."""
-    assert config.resume is not None
-    zip_path, side = model_paths(config.resume)
-    if side.is_file():
-        saved = read_sidecar(zip_path)["algo"]
-        if saved != hp.class_name:
-            raise ValueError(f"{zip_path} was trained with {saved}, not {hp.class_name} (--algo {config.algo})")
-    if not zip_path.is_file():
-        raise FileNotFoundError(f"no checkpoint at {zip_path}")
+def rollout_steps(hp: Hyperparams) -> int:
+    """Environment steps per rollout: ``n_steps`` (on-policy) or ``train_freq`` (DQN), times ``n_envs``."""
+    per_env = hp.kwargs.get("n_steps", hp.kwargs.get("train_freq", 2048 if hp.algo != "dqn" else 4))
+    if isinstance(per_env, list | tuple):  # DQN's (frequency, unit)
+        per_env = per_env[0]
+    return max(1, int(per_env)) * hp.n_envs
+
+
+def checkpoint_every(config: TrainConfig, hp: Hyperparams, total: int) -> int:
+    """The checkpoint frequency: as given, or a tenth of the budget; rounded up to whole rollouts."""
+    rollout = rollout_steps(hp)
+    freq = config.checkpoint_freq if config.checkpoint_freq is not None else max(1, total // 10)
+    if freq == 0:
+        return 0
+    return -(-freq // rollout) * rollout
+
+
+def _resume_hyperparams(mf: ModelFile, config: TrainConfig) -> Hyperparams:
+    """The hyperparameters stored in a checkpoint, checked against the algorithm's constructor."""
+    train_info = mf.header.get("train")
+    stored = train_info.get("hyperparams") if isinstance(train_info, dict) else None
+    if not isinstance(stored, dict):
+        raise ModelFileError(f"{mf.path}: no 'train.hyperparams' (not a checkpoint written by hg-marl train)")
+    saved_algo = stored.get("algo")
+    if saved_algo != config.algo:
+        raise ConfigError(f"--resume {mf.path} was trained with --algo {saved_algo}, not --algo {config.algo}")
+    kwargs = {k: v for k, v in stored.items() if k not in (*OWN_KEYS, "algo")}
+    unknown = sorted(set(kwargs) - set(accepted_keys(config.algo)))
+    if unknown:
+        raise ModelFileError(f"{mf.path}: field 'train.hyperparams': unknown key(s) {', '.join(unknown)}")
+    n_envs, n_timesteps = stored.get("n_envs", 1), stored.get("n_timesteps", 1)
+    check_int(n_envs, f"{mf.path}: field 'train.hyperparams.n_envs'", minimum=1, maximum=256, error=ModelFileError)
+    check_int(n_timesteps, f"{mf.path}: field 'train.hyperparams.n_timesteps'", minimum=1, error=ModelFileError)
+    return Hyperparams(config.algo, str(stored.get("policy", "MlpPolicy")), int(n_envs), int(n_timesteps), kwargs)
+
+
+def _load(config: TrainConfig, mf: ModelFile, hp: Hyperparams, env: Any) -> Any:
+    """Resume: rebuild the model from the checkpoint (weights, optimizer, counters, replay buffer)."""
     tb = str(config.out / "tb") if config.tensorboard else None
-    model = algo_class(hp.class_name).load(zip_path, env=env, device="cpu", tensorboard_log=tb)
-    buffer = replay_buffer_path(zip_path)
-    if getattr(model, "replay_buffer", None) is not None and buffer.is_file():
-        model.load_replay_buffer(buffer)
+    kwargs = {k: v for k, v in model_kwargs(hp).items() if k != "policy_kwargs"}
+    model = build_sb3(mf, env, tensorboard_log=tb, verbose=config.verbose, **kwargs)
+    if getattr(model, "replay_buffer", None) is not None and "replay_buffer" in mf.header:
+        load_replay_buffer(model.replay_buffer, mf.path, mf.header["replay_buffer"])
     model.set_random_seed(config.seed + int(model.num_timesteps))
     return model
 
 
-def _eval_callback(config: TrainConfig, hp: Hyperparams, write: Any) -> Any:
+def _eval_callback(config: TrainConfig, hp: Hyperparams, save: Any) -> Any:
     """SB3's periodic evaluation on a separate, differently seeded view (masks respected)."""
     from stable_baselines3.common.callbacks import BaseCallback, EvalCallback
 
@@ -162,20 +212,20 @@ def _eval_callback(config: TrainConfig, hp: Hyperparams, write: Any) -> Any:
     eval_env = make_vec_env(config.env, 1, config.seed + EVAL_SEED_OFFSET)
     directory = config.out / "eval"
 
-    class SidecarOnBest(BaseCallback):
-        """Writes the sidecar of ``best_model.zip`` whenever EvalCallback saves one."""
+    class SaveBest(BaseCallback):
+        """Writes ``best_model.json`` (+ ``.npz``) whenever EvalCallback finds a new best (never SB3's zip)."""
 
         def _on_step(self) -> bool:
-            write(directory / "best_model.zip")
+            save(self.model, directory / "best_model.json")
             return True
 
     return cls(
         eval_env,
-        callback_on_new_best=SidecarOnBest(),
+        callback_on_new_best=SaveBest(),
         n_eval_episodes=config.eval_episodes,
         eval_freq=max(1, config.eval_freq // hp.n_envs),
         log_path=str(directory),
-        best_model_save_path=str(directory),
+        best_model_save_path=None,
         deterministic=True,
         verbose=config.verbose,
     )
@@ -190,21 +240,31 @@ def train(config: TrainConfig, callbacks: Sequence[Any] = ()) -> TrainResult:
 
     Raises:
         HyperparamError: unknown algorithm or hyperparameter.
-        ValueError: a bad partner, scenario, or a checkpoint of another algorithm.
+        HgMarlError: a bad partner, scenario, or checkpoint (another algorithm, unsafe or corrupt file).
     """
     import torch
     from stable_baselines3.common.callbacks import CallbackList
 
+    from hg_marl.training.baselines.callbacks import Checkpoints, ProgressBar, StopOnSignal, save_checkpoint
+
     torch.set_num_threads(config.torch_threads)
-    hp = load_hyperparams(config.algo, config.env.scenario, config.hp_overrides, config.hyperparams_file)
+    resume = load_model_file(config.resume, what="--resume") if config.resume is not None else None
+    if resume is not None:
+        hp = _resume_hyperparams(resume, config)
+    else:
+        hp = load_hyperparams(config.algo, config.env.scenario, config.hp_overrides, config.hyperparams_file)
     total = config.steps or hp.n_timesteps
     env = make_vec_env(config.env, hp.n_envs, config.seed)
     world: World = env.envs[0].unwrapped.world
-    write = sidecar_writer(config, hp, world)
+    fields = header_fields(config, hp, world)
+
+    def save(model: Any, path: Path) -> Path:
+        return save_checkpoint(model, path, fields, config.env.observation)
+
     config.out.mkdir(parents=True, exist_ok=True)
 
-    if config.resume is not None:
-        model = _load(config, hp, env)
+    if resume is not None:
+        model = _load(config, resume, hp, env)
     else:
         tb = str(config.out / "tb") if config.tensorboard else None
         model = algo_class(hp.class_name)(
@@ -218,12 +278,12 @@ def train(config: TrainConfig, callbacks: Sequence[Any] = ()) -> TrainResult:
         )
     start_steps = int(model.num_timesteps)
 
-    checkpoints = (
-        Checkpoints(config.checkpoint_freq, config.out / "checkpoints", write) if config.checkpoint_freq else None
-    )
-    chain: list[Any] = [c for c in (checkpoints,) if c is not None]
+    freq = checkpoint_every(config, hp, total)
+    checkpoints = Checkpoints(freq, config.out / "checkpoints", save) if freq else None
+    stop = StopOnSignal()
+    chain: list[Any] = [c for c in (checkpoints, stop) if c is not None]
     if config.eval_freq:
-        chain.append(_eval_callback(config, hp, write))
+        chain.append(_eval_callback(config, hp, save))
     if config.progress_bar:
         chain.append(ProgressBar(total))
     chain.extend(callbacks)
@@ -231,21 +291,23 @@ def train(config: TrainConfig, callbacks: Sequence[Any] = ()) -> TrainResult:
     t0 = time.perf_counter()
     remaining = total - start_steps
     if remaining > 0:
-        model.learn(
-            remaining,
-            callback=CallbackList(chain),
-            reset_num_timesteps=config.resume is None,
-            tb_log_name=f"{config.algo}_seed{config.seed}",
-        )
+        with stop.catching():
+            model.learn(
+                remaining,
+                callback=CallbackList(chain),
+                reset_num_timesteps=resume is None,
+                tb_log_name=f"{config.algo}_seed{config.seed}",
+            )
     else:
         log.warning("checkpoint already has %d >= %d steps: nothing to train", start_steps, total)
     seconds = time.perf_counter() - t0
 
-    path = save_checkpoint(model, config.out / "model.zip", write)
-    if config.env.seat == "human":
-        from hg_marl.agents.humans.learned import save_sb3_policy
-
-        save_sb3_policy(config.out, model, world, observation=config.env.observation, seat=Agent.HUMAN)
+    saved = list(checkpoints.saved) if checkpoints else []
+    if stop.stopped:
+        path = save(model, (config.out / "checkpoints") / f"ckpt_{int(model.num_timesteps)}_steps.json")
+        saved.append(path)
+    else:
+        path = save(model, config.out / "model.json")
     env.close()
     return TrainResult(
         model,
@@ -254,7 +316,8 @@ def train(config: TrainConfig, callbacks: Sequence[Any] = ()) -> TrainResult:
         int(model.num_timesteps),
         int(model.num_timesteps) - start_steps,
         seconds,
-        list(checkpoints.saved) if checkpoints else [],
+        saved,
+        interrupted=stop.stopped,
     )
 
 

@@ -1,35 +1,89 @@
-"""Helpers shared by the subcommands: parsing ``key=value`` options, clean errors."""
+"""Helpers shared by the subcommands: ``key=value`` options as specs, checked values, clean errors.
+
+Bad input raises an :class:`~hg_marl.core.errors.HgMarlError` whose message names the
+user's option; ``training/cli.py:main`` prints it as one line and exits 2.
+"""
 
 from __future__ import annotations
 
-import json
+import dataclasses
 from collections.abc import Callable, Iterable
+from pathlib import Path
 from typing import Any, TypeVar
 
-import typer
+from hg_marl.core.errors import ConfigError, HgMarlError, check_finite
+from hg_marl.core.spec import Spec, parse_spec
 
 T = TypeVar("T")
 
+MAX_DURATION = 10_000_000.0
+"""Longest simulated run accepted from the command line (about 116 simulated days)."""
 
-def parse_params(items: Iterable[str] | None, what: str) -> dict[str, Any]:
-    """Parse repeated ``key=value`` options; values are read as JSON when they can be."""
-    params: dict[str, Any] = {}
+
+def parse_params(items: Iterable[str] | None, option: str) -> dict[str, str]:
+    """Repeated ``key=value`` options as raw spec texts (converted later by the registry, by type).
+
+    Raises:
+        ConfigError: an item without ``=`` or a key given twice, naming ``option``.
+    """
+    params: dict[str, str] = {}
     for item in items or ():
         key, sep, value = item.partition("=")
+        key = key.strip()
         if not sep or not key:
-            raise typer.BadParameter(f"{what} parameter {item!r}: expected key=value")
-        try:
-            params[key] = json.loads(value)
-        except json.JSONDecodeError:
-            params[key] = value
+            raise ConfigError(f"{option} {item!r}: expected key=value")
+        if key in params:
+            raise ConfigError(f"{option}: {key!r} given twice")
+        params[key] = value.strip()
     return params
 
 
+def spec_with(text: str, items: Iterable[str] | None, option: str, params_option: str) -> Spec:
+    """The spec ``text`` (``--robot hybrid:criterion=vpi``) with ``--robot-param`` items added."""
+    try:
+        spec = parse_spec(text, option)
+    except HgMarlError as exc:
+        raise ConfigError(str(exc)) from None
+    extra = parse_params(items, params_option)
+    clash = sorted(set(spec.raw) & set(extra))
+    if clash:
+        raise ConfigError(f"{option} and {params_option} both set {', '.join(clash)}")
+    return Spec(spec.name, {**spec.raw, **extra})
+
+
+def check_duration(value: float, option: str = "--duration") -> float:
+    """A simulated duration: finite, positive, at most :data:`MAX_DURATION`."""
+    return check_finite(value, option, positive=True, maximum=MAX_DURATION)
+
+
+def check_out_file(path: Path | None, option: str) -> Path | None:
+    """An output file whose folder exists (checked before any work is done)."""
+    if path is not None and not path.parent.is_dir():
+        raise ConfigError(f"{option} {path}: folder {path.parent} does not exist")
+    return path
+
+
+def default(config: type, name: str) -> Any:
+    """The default of field ``name`` of a config dataclass (CLI defaults come from there, not restated)."""
+    for f in dataclasses.fields(config):
+        if f.name == name:
+            if f.default is not dataclasses.MISSING:
+                return f.default
+            if f.default_factory is not dataclasses.MISSING:
+                return f.default_factory()
+    raise KeyError(f"{config.__name__} has no field {name!r}")
+
+
 def checked(build: Callable[[], T]) -> T:
-    """Run ``build``; turn a ValueError/KeyError (unknown name, bad parameter) into a CLI error."""
+    """Run ``build``; turn a ValueError/KeyError (unknown name, bad parameter) into a CLI error.
+
+    HgMarlErrors pass through to ``main``; the ValueErrors caught here come from code not
+    yet on the error hierarchy.
+    """
     try:
         return build()
+    except HgMarlError:
+        raise
     except (ValueError, KeyError, FileNotFoundError) as exc:
         message = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
-        typer.secho(f"error: {message}", fg=typer.colors.RED, err=True)
-        raise typer.Exit(2) from exc
+        raise ConfigError(str(message)) from exc

@@ -18,9 +18,17 @@ def register(app: typer.Typer) -> None:
         """Optimal tasks per simulated hour by value iteration on the exact model."""
         from hg_marl.agents.humans import HumanError
         from hg_marl.agents.oracle import OracleTooLarge, oracle_rate
+        from hg_marl.core.errors import ConfigError
+        from hg_marl.core.scenario import layout_count, load_scenario
 
+        layouts = layout_count(load_scenario(scenario))
+        if layouts > max_states:
+            # Checked before the oracle enumerates them (which would take memory first).
+            raise ConfigError(
+                f"scenario {scenario}: {layouts} initial layouts, over --max-states {max_states} (raise it to try)"
+            )
         try:
-            result = oracle_rate(scenario, human, max_states=max_states, failed_actions=failed_actions)
+            result = oracle_rate(scenario, human, max_states=max_states, failed_actions=failed_actions, progress=True)
         except (HumanError, OracleTooLarge, ValueError) as exc:
             typer.echo(f"error: {exc}", err=True)
             raise typer.Exit(2) from exc

@@ -16,6 +16,8 @@ import typer
 from hg_marl.agents.planner import Planner, PlannerConfig, make_human_model
 from hg_marl.agents.planner.gantt import gantt_png, gantt_text
 from hg_marl.core import World
+from hg_marl.core.errors import ConfigError
+from hg_marl.training.commands.common import check_out_file, checked, default
 
 
 def register(app: typer.Typer) -> None:
@@ -24,15 +26,22 @@ def register(app: typer.Typer) -> None:
     @app.command("plan")
     def plan(
         scenario: Annotated[str, typer.Option(help="Built-in name, generated:k=v,... or a .toml path.")] = "paper2015",
-        seed: Annotated[int, typer.Option(help="Seed of the initial layout.")] = 0,
+        seed: Annotated[int, typer.Option(min=0, help="Seed of the initial layout.")] = 0,
         png: Annotated[Path | None, typer.Option(help="Also write the Gantt chart to this PNG file.")] = None,
         human: Annotated[str, typer.Option(help="Human model: cooperative, no_handover, lazy.")] = "cooperative",
-        budget: Annotated[int, typer.Option(help="Node budget of the search.")] = 200_000,
+        budget: Annotated[int, typer.Option(min=1, help="Node budget of the search.")] = default(
+            PlannerConfig, "node_budget"
+        ),
     ) -> None:
         """Plan the table cleaning from a scenario's initial state and print the plan."""
+        check_out_file(png, "--png")
         world = World(scenario)
         state = world.initial_state(np.random.default_rng(seed))
-        planner = Planner(world, PlannerConfig(node_budget=budget), make_human_model(human))
+        try:
+            model = make_human_model(human)
+        except ValueError as exc:
+            raise ConfigError(f"--human: {exc}") from None
+        planner = Planner(world, checked(lambda: PlannerConfig(node_budget=budget)), model)
         start = time.perf_counter()
         result = planner.plan(state)
         elapsed = time.perf_counter() - start

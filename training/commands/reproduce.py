@@ -8,6 +8,8 @@ from typing import Annotated, Any
 
 import typer
 
+from hg_marl.training.commands.common import check_duration
+
 
 def register(app: typer.Typer) -> None:
     """Add the ``reproduce`` subcommand."""
@@ -36,7 +38,7 @@ def register(app: typer.Typer) -> None:
         from hg_marl.training.io import write_json
         from hg_marl.training.sweep import load_log, run_sweep
 
-        duration = duration or paper.DEFAULT_DURATION
+        duration = paper.DEFAULT_DURATION if duration is None else check_duration(duration)
         jobs = paper.jobs(seeds=seeds, duration=duration, scenario=scenario, further=not paper_only)
         with tqdm(total=len(jobs), unit="run", desc="paper experiment") as bar:
             run_sweep(jobs, out, workers=workers, on_done=lambda job, _: bar.update(1))

@@ -7,7 +7,10 @@ from typing import Annotated
 
 import typer
 
-from hg_marl.training.commands.common import checked, parse_params
+from hg_marl.core.errors import ConfigError
+from hg_marl.core.scenario import load_scenario
+from hg_marl.training.commands.common import check_duration, check_out_file, checked, default, spec_with
+from hg_marl.training.runner import RunConfig
 
 
 def register(app: typer.Typer) -> None:
@@ -16,19 +19,26 @@ def register(app: typer.Typer) -> None:
     @app.command("run")
     def run_command(
         robot: Annotated[
-            str, typer.Option(help="Robot agent: planner, habit, hybrid, random, sb3, oracle.")
+            str, typer.Option(help="Robot agent, with parameters if any: hybrid:criterion=vpi (see --list).")
         ] = "hybrid",
-        criterion: Annotated[str, typer.Option(help="MetaController criterion (hybrid robot only).")] = "random",
+        criterion: Annotated[
+            str, typer.Option(help="MetaController criterion (hybrid robot only), e.g. vpi:tau=0.1.")
+        ] = "random",
         human: Annotated[str, typer.Option(help="Human partner (see `hg-marl run --list`).")] = "cooperative",
         scenario: Annotated[
             str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml path.")
-        ] = "paper2015",
-        duration: Annotated[float, typer.Option(help="Simulated seconds.")] = 1200.0,
-        seed: Annotated[int, typer.Option(help="Seed of the layouts and of both actors.")] = 0,
+        ] = default(RunConfig, "scenario"),
+        duration: Annotated[float, typer.Option(help="Simulated seconds.")] = default(RunConfig, "duration"),
+        seed: Annotated[int, typer.Option(min=0, help="Seed of the layouts and of both actors.")] = default(
+            RunConfig, "seed"
+        ),
         model: Annotated[Path | None, typer.Option(help="Trained SB3 model (robot sb3).")] = None,
         robot_param: Annotated[list[str] | None, typer.Option("--robot-param", help="key=value for the robot.")] = None,
         human_param: Annotated[list[str] | None, typer.Option("--human-param", help="key=value for the human.")] = None,
         out: Annotated[Path | None, typer.Option(help="Write the per-decision log (CSV) here.")] = None,
+        video: Annotated[
+            Path | None, typer.Option(help="Write the run as a labelled GIF or MP4 (one frame per cycle).")
+        ] = None,
         list_agents: Annotated[
             bool, typer.Option("--list", help="List robots, criteria and humans, then exit.")
         ] = False,
@@ -46,20 +56,32 @@ def register(app: typer.Typer) -> None:
             typer.echo(f"criteria: {', '.join(available_criteria())}")
             typer.echo(f"humans:   {', '.join(available_humans())}")
             return
-        robot_kwargs = parse_params(robot_param, "robot")
-        if robot == "hybrid":
-            robot_kwargs.setdefault("criterion", criterion)
+        duration = check_duration(duration)
+        check_out_file(out, "--out")
+        robot_spec = spec_with(robot, robot_param, "--robot", "--robot-param")
+        robot_kwargs: dict[str, object] = {}
+        if robot_spec.name == "hybrid" and "criterion" not in robot_spec.raw:
+            robot_kwargs["criterion"] = criterion
         if model is not None:
-            robot_kwargs.setdefault("path", str(model))
-        the_robot = checked(lambda: make_robot(robot, **robot_kwargs))
-        the_human = checked(lambda: make_human(human, **parse_params(human_param, "human")))
+            if robot_spec.name != "sb3":
+                raise ConfigError(f"--model is for --robot sb3, not {robot_spec.name}")
+            robot_kwargs["path"] = str(model)
+        the_robot = checked(lambda: make_robot(robot_spec, **robot_kwargs))
+        the_human = checked(lambda: make_human(spec_with(human, human_param, "--human", "--human-param")))
         config = RunConfig(scenario=scenario, duration=duration, seed=seed)
+        load_scenario(scenario)  # a bad scenario fails before the progress bar starts
+        recorder = None
+        if video is not None:
+            from hg_marl.training.video import FrameRecorder, check_video_path
+
+            check_video_path(video)
+            recorder = FrameRecorder(the_robot)
         with tqdm(total=int(duration), unit="sim s", desc=f"{robot} + {human}", leave=False) as bar:
 
             def progress(clock: float) -> None:
                 bar.update(int(min(clock, duration)) - bar.n)
 
-            result = checked(lambda: run(the_robot, the_human, config, on_decision=progress))
+            result = checked(lambda: run(recorder or the_robot, the_human, config, on_decision=progress))
         s = result.summary
         label = f"{robot}({criterion})" if robot == "hybrid" else robot
         typer.echo(f"robot {label} with human {human} on {scenario}, seed {seed}, {duration:.0f} simulated s")
@@ -69,3 +91,8 @@ def register(app: typer.Typer) -> None:
         typer.echo(f"  simulated time   {s['simulated_time']:.1f} s")
         if out is not None:
             typer.echo(f"  log              {result.save(out)}")
+        if recorder is not None and video is not None:
+            from hg_marl.training.video import write_video
+
+            written = write_video(recorder.frames, video)
+            typer.echo(f"  video            {written} ({len(recorder.frames)} frames)")

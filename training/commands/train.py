@@ -10,7 +10,12 @@ from typing import Annotated
 
 import typer
 
-from hg_marl.training.commands.common import checked
+from hg_marl.core.errors import check_finite
+from hg_marl.training.baselines.envs import EnvSpec
+from hg_marl.training.baselines.train import TrainConfig
+from hg_marl.training.commands.common import checked, default
+
+DEFAULT_OUT: Path = default(TrainConfig, "out")
 
 
 def register(app: typer.Typer) -> None:
@@ -27,28 +32,49 @@ def register(app: typer.Typer) -> None:
             typer.Option(help="Robot seat: human(s) to train against; a comma list is a population drawn per episode."),
         ] = ("cooperative"),
         robot: Annotated[str, typer.Option(help="Human seat: the fixed robot(s) (comma list).")] = "planner",
-        effort_weight: Annotated[float, typer.Option(help="Human seat: reward minus this x seconds of work.")] = 0.0,
-        scenario: Annotated[str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml.")] = (
-            "paper2015"
+        effort_weight: Annotated[
+            float, typer.Option(help="Human seat: reward minus this x seconds of work.")
+        ] = default(EnvSpec, "effort_weight"),
+        scenario: Annotated[str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml.")] = default(
+            EnvSpec, "scenario"
         ),
         steps: Annotated[int | None, typer.Option(help="Total environment steps (default: the YAML's).")] = None,
-        seed: Annotated[int, typer.Option(help="Seed of the model and the training tables.")] = 0,
-        out: Annotated[Path, typer.Option(help="Output directory.")] = Path("runs/train"),
+        seed: Annotated[int, typer.Option(min=0, help="Seed of the model and the training tables.")] = default(
+            TrainConfig, "seed"
+        ),
+        out: Annotated[Path, typer.Option(help="Output directory.")] = DEFAULT_OUT,
         hp: Annotated[list[str] | None, typer.Option("--hp", help="Hyperparameter override key=value.")] = None,
         hyperparams: Annotated[Path | None, typer.Option(help="YAML file instead of the packaged one.")] = None,
-        observation: Annotated[str, typer.Option(help="View observation: facts, flat or dict.")] = "facts",
-        max_cycles: Annotated[int, typer.Option(help="Training episode length in cycles.")] = 100,
-        eval_freq: Annotated[int, typer.Option(help="Steps between evaluations (0: none).")] = 10_000,
-        eval_episodes: Annotated[int, typer.Option(help="Episodes per evaluation.")] = 10,
-        checkpoint_freq: Annotated[int, typer.Option(help="Steps between checkpoints (0: none).")] = 25_000,
-        resume: Annotated[Path | None, typer.Option(help="Checkpoint zip to continue (keeps its step count).")] = (
-            None
+        observation: Annotated[str, typer.Option(help="View observation: facts, flat or dict.")] = default(
+            EnvSpec, "observation"
         ),
-        traces: Annotated[list[Path] | None, typer.Option("--traces", help="bc: trace file(s) (repeat).")] = None,
+        max_cycles: Annotated[int, typer.Option(min=1, help="Training episode length in cycles.")] = default(
+            EnvSpec, "max_cycles"
+        ),
+        eval_freq: Annotated[int, typer.Option(min=0, help="Steps between evaluations (0: none).")] = default(
+            TrainConfig, "eval_freq"
+        ),
+        eval_episodes: Annotated[int, typer.Option(min=1, help="Episodes per evaluation.")] = default(
+            TrainConfig, "eval_episodes"
+        ),
+        checkpoint_freq: Annotated[
+            int | None,
+            typer.Option(
+                min=0, help="Steps between checkpoints (default: a tenth of --steps, whole rollouts; 0: none)."
+            ),
+        ] = None,
+        resume: Annotated[
+            Path | None, typer.Option(help="Checkpoint (.json) to continue: keeps its steps and optimizer state.")
+        ] = None,
+        traces: Annotated[
+            list[Path] | None, typer.Option("--traces", help="bc: trace files or directories (repeat).")
+        ] = None,
         bc_kind: Annotated[str, typer.Option(help="bc: table or linear_softmax.")] = "table",
-        tensorboard: Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")] = True,
+        tensorboard: Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")] = default(
+            TrainConfig, "tensorboard"
+        ),
         progress: Annotated[bool, typer.Option(help="Show a progress bar.")] = True,
-        verbose: Annotated[int, typer.Option(help="SB3 verbosity.")] = 0,
+        verbose: Annotated[int, typer.Option(help="SB3 verbosity.")] = default(TrainConfig, "verbose"),
     ) -> None:
         """Train an SB3 algorithm on a seat of the table (or clone recorded play with --algo bc)."""
         if algo == "bc":
@@ -61,10 +87,11 @@ def register(app: typer.Typer) -> None:
             typer.echo(f"  policy  {path}  (make_human('learned', path='{path}'))")
             return
 
-        from hg_marl.training.baselines.envs import EnvSpec, split_population
-        from hg_marl.training.baselines.train import TrainConfig, train
+        from hg_marl.training.baselines.envs import split_population
+        from hg_marl.training.baselines.train import train
 
         partners = human if seat == "robot" else robot
+        check_finite(effort_weight, "--effort-weight", minimum=0.0)
         config = checked(
             lambda: TrainConfig(
                 algo=algo,
@@ -91,6 +118,10 @@ def register(app: typer.Typer) -> None:
             )
         )
         result = checked(lambda: train(config))
+        if result.interrupted:
+            typer.echo(f"interrupted at {result.num_timesteps} steps; checkpoint {result.path}")
+            typer.echo(f"  resume  hg-marl train --algo {algo} --resume {result.path} (same options)")
+            raise typer.Exit(130)
         typer.echo(
             f"{result.hyperparams.class_name} in the {seat} seat vs {partners} on {scenario}: "
             f"{result.num_timesteps} steps ({result.session_steps} now, {result.steps_per_second:.0f} steps/s)"
@@ -99,4 +130,4 @@ def register(app: typer.Typer) -> None:
         if seat == "robot":
             typer.echo(f"  use it  hg-marl run --robot sb3 --model {result.path} --human {partners.split(',')[0]}")
         else:
-            typer.echo(f"  use it  make_human('learned', path='{out}')")
+            typer.echo(f"  use it  hg-marl run --human learned:path={out}")

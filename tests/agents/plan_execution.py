@@ -1,4 +1,4 @@
-"""Following a plan and noticing when the human does not.
+"""Following a plan and noticing when the human does not (a reference the tests use).
 
 - :func:`next_robot_action`: the robot's next step of a plan from the current state: its
   first step whose links hold (its preconditions hold in the state, so a take finds the

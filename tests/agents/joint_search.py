@@ -1,4 +1,7 @@
-"""Cost-optimal search over joint cycles for a deterministic human model.
+"""A reference for the half-step search: A* over joint cycles, on ``World.step``.
+
+The planner searched this way before :mod:`hg_marl.agents.planner.halfstep`; the tests
+keep it to check that both find plans of the same cost.
 
 Best-first branch and bound (A*): nodes are cycle-boundary states (the robot to move),
 edges are joint cycles (the robot's candidate, then each human action the model allows,
@@ -19,20 +22,10 @@ from __future__ import annotations
 
 import heapq
 import math
-from dataclasses import dataclass
 
+from hg_marl.agents.planner.halfstep import SearchOutcome
 from hg_marl.agents.planner.space import Space
 from hg_marl.core import Agent, State
-
-
-@dataclass
-class SearchOutcome:
-    """Raw search result: the cycles of the best plan (None on failure) and statistics."""
-
-    cycles: list[tuple[int, int]] | None
-    cost: float
-    nodes: int
-    reason: str = ""
 
 
 def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, int], budget: int) -> SearchOutcome:

@@ -1,0 +1,157 @@
+"""The web front end in a real headless Chromium (Debian's ``chromium``, driven by Playwright).
+
+Run by ``make test-browser`` (its CI stage installs chromium and the extras). Elsewhere
+the tests skip with the reason; with ``HG_MARL_BROWSER_REQUIRED=1`` (the CI stage) a
+missing browser fails instead of skipping. Screenshots go to ``artifacts/``.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from hg_marl.training.play.replay import replay_run
+from hg_marl.training.play.session import PlaySession
+from tests.play.reference import expected_drawing, person_choice
+
+pytestmark = pytest.mark.browser
+
+CHROMIUM = "/usr/bin/chromium"
+ARGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--no-first-run",
+    "--disable-sync",
+]
+ARTIFACTS = Path(__file__).resolve().parents[2] / "artifacts"
+
+
+def _unavailable(reason: str) -> None:
+    if os.environ.get("HG_MARL_BROWSER_REQUIRED") == "1":
+        pytest.fail(f"browser stage: {reason}")
+    pytest.skip(f"{reason}; run `make test-browser` (installs chromium and the play/browser-test extras)")
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[Any]:
+    for module in ("playwright", "starlette", "uvicorn"):
+        if importlib.util.find_spec(module) is None:
+            _unavailable(f"the Python package {module} is not installed")
+    if not os.access(CHROMIUM, os.X_OK):
+        _unavailable(f"no browser at {CHROMIUM} (apt-get install -y chromium)")
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, args=ARGS, headless=True)
+        yield b
+        b.close()
+
+
+@pytest.fixture
+def game(tmp_path: Path) -> Iterator[Any]:
+    """A factory: serve a session and return (session, page)."""
+    from hg_marl.training.play.web import Server
+
+    servers: list[Server] = []
+
+    def start(browser: Any, robot: str = "planner", seed: int = 0) -> tuple[PlaySession, Any]:
+        session = PlaySession(robot, seed=seed, record=tmp_path, player="browser-test")
+        server = Server(session, 0)
+        server.start_in_thread()
+        servers.append(server)
+        page = browser.new_page(viewport={"width": 1000, "height": 820})
+        page.goto(server.url)
+        return session, page
+
+    yield start
+    for server in servers:
+        server.stop()
+
+
+def drawn(page: Any) -> dict[str, object]:
+    """What the page draws, read back from the SVG's data attributes."""
+    objects = page.eval_on_selector_all("#table g.object", "els => els.map(e => [e.dataset.name, e.dataset.place])")
+    offer = page.query_selector("#offer")
+    return {
+        "robot": page.get_attribute("#robot", "data-at"),
+        "objects": dict(objects),
+        "offer": None if offer is None else (offer.get_attribute("data-object"), offer.get_attribute("data-by")),
+    }
+
+
+def buttons(page: Any) -> dict[str, tuple[str, int]]:
+    """Feasible actions on the page: name -> (shortcut, index)."""
+    rows = page.eval_on_selector_all(
+        "#actions button",
+        "els => els.map(e => [e.textContent.slice(e.dataset.key.length), e.dataset.key, e.dataset.action])",
+    )
+    return {name: (key, int(index)) for name, key, index in rows}
+
+
+def play_one_task(page: Any, session: PlaySession, by: str, shots: str | None = None) -> tuple[list[str], int]:
+    """Play as a person until a task is solved, checking the drawing after every move."""
+    moves: list[str] = []
+    handover_shot = False
+    for n in range(60):
+        assert drawn(page) == expected_drawing(session.world, session.state)
+        assert int(page.get_attribute("#status", "data-tasks")) == session.tasks_solved
+        assert float(page.get_attribute("#status", "data-clock")) == pytest.approx(session.clock, abs=1e-3)
+        feasible = buttons(page)
+        assert set(feasible) == {c.name for c in session.choices()}
+        if session.tasks_solved >= 1:
+            return moves, n
+        name = person_choice(list(feasible))
+        if shots and name.startswith("give(") and not handover_shot:
+            page.screenshot(path=str(ARTIFACTS / f"{shots}-before-handover.png"), full_page=True)
+        key, index = feasible[name]
+        if by == "click":
+            page.click(f'#actions button[data-action="{index}"]')
+        else:
+            page.keyboard.press(key)
+        page.wait_for_selector(f'#status[data-moves="{n + 1}"]')
+        moves.append(name)
+        if shots and name.startswith("give(") and not handover_shot:
+            page.screenshot(path=str(ARTIFACTS / f"{shots}-after-handover.png"), full_page=True)
+            handover_shot = True
+    raise AssertionError(f"no task solved in 60 moves: {moves}")
+
+
+@pytest.mark.parametrize("by", ["click", "keyboard"])
+def test_play_a_whole_task_and_replay_it(browser: Any, game: Any, by: str) -> None:
+    ARTIFACTS.mkdir(exist_ok=True)
+    session, page = game(browser)
+    assert page.title() == "hg-marl: play the human"
+    page.screenshot(path=str(ARTIFACTS / f"play-{by}-start.png"), full_page=True)
+    moves, n = play_one_task(page, session, by, shots=f"play-{by}")
+    assert session.tasks_solved == 1 and len(moves) == n
+    assert "give(tape3)" in moves, "paper2015's human tape only reaches the bin through the robot"
+    assert page.text_content("#robot-expert") == "planner"
+    page.screenshot(path=str(ARTIFACTS / f"play-{by}-solved.png"), full_page=True)
+    page.click("#quit")
+    page.wait_for_selector("#done")
+    trace = session.trace_path
+    assert trace is not None and trace.exists()
+    replay = replay_run(trace)
+    assert float(replay.log["reward"].sum()) == session.rewards == 1.0
+    assert list(replay.log["human_action_name"][: len(moves)]) == moves
+
+
+def test_infeasible_request_is_refused_and_hybrid_shows_its_weights(browser: Any, game: Any) -> None:
+    session, page = game(browser, robot="hybrid:criterion=entropy_and_cost")
+    assert page.text_content("#robot-expert") in ("planner", "habit")
+    weights = page.eval_on_selector_all("#weights td:first-child", "els => els.map(e => e.textContent)")
+    assert "h_habit" in weights and "h_planner" in weights
+    status = page.evaluate(
+        "async () => (await fetch('/act', {method: 'POST', body: JSON.stringify({action: 0})})).status"
+    )
+    feasible = {c.index for c in session.choices()}
+    assert (status == 409) == (0 not in feasible)
+    assert len(session.response_times) == (0 if 0 not in feasible else 1)

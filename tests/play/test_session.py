@@ -1,0 +1,158 @@
+"""The play session, its trace and its replay; the terminal front end by scripted input."""
+
+from __future__ import annotations
+
+import io
+import json
+from itertools import count
+from pathlib import Path
+from typing import ClassVar
+
+import pytest
+from rich.console import Console
+
+from hg_marl.agents.humans.trace import read_trace
+from hg_marl.core import Agent
+from hg_marl.core.errors import HgMarlError, HumanError, RobotError, SpecError
+from hg_marl.training.play.replay import replay_run, replay_trace
+from hg_marl.training.play.session import PlaySession, robot_move
+from hg_marl.training.play.tui import play_terminal
+from tests.play.reference import person_choice
+
+
+def fake_timer(step: float = 1.5):
+    """A wall clock that advances ``step`` seconds per reading."""
+    ticks = count()
+    return lambda: next(ticks) * step
+
+
+def play_until(session: PlaySession, tasks: int, limit: int = 80) -> list[str]:
+    moves = []
+    while session.tasks_solved < tasks and len(moves) < limit:
+        name = person_choice([c.name for c in session.choices()])
+        session.play(name)
+        moves.append(name)
+    return moves
+
+
+@pytest.mark.parametrize("robot", ["planner", "hybrid:criterion=entropy_and_cost", "habit"])
+def test_recorded_game_replays_to_the_same_rewards(tmp_path: Path, robot: str) -> None:
+    session = PlaySession(robot, seed=4, record=tmp_path, player="tester", timer=fake_timer())
+    moves = play_until(session, 2, limit=40)
+    path = session.close()
+    assert path is not None
+    (episode,) = read_trace(path)
+    meta = episode.header["meta"]
+    assert (meta["player"], meta["robot"], episode.header["seat"]) == ("tester", robot, "human")
+    assert [s["action_name"] for s in episode.steps] == moves
+    # the fake clock advances 1.5 s per reading: shown (robot's turn) then answered
+    assert [s["response_time"] for s in episode.steps] == [1.5] * len(moves)
+    assert episode.end["rewards"] == session.rewards == session.tasks_solved
+    replay = replay_run(path)
+    assert float(replay.log["reward"].sum()) == session.rewards
+    assert list(replay.log["human_action_name"][: len(moves)]) == moves
+    assert float(replay.log["time"].iloc[len(moves) - 1]) == pytest.approx(episode.end["clock"])
+
+
+def test_planner_game_solves_tasks_with_a_handover(tmp_path: Path) -> None:
+    session = PlaySession("planner", seed=0, record=tmp_path)
+    moves = play_until(session, 1)
+    assert session.tasks_solved == 1 and "give(tape3)" in moves
+    assert session.last_robot is not None and session.last_robot.expert == "planner"
+    result = replay_trace(session.close() or Path())
+    assert (result.rewards, result.recorded_rewards, result.moves) == (1.0, 1.0, len(moves))
+
+
+def test_infeasible_and_unknown_actions_are_refused_without_effect() -> None:
+    session = PlaySession("planner", seed=0)
+    before = (session.state, session.clock)
+    feasible = {c.index for c in session.choices()}
+    infeasible = next(i for i in range(session.world.n_actions(Agent.HUMAN)) if i not in feasible)
+    with pytest.raises(HumanError, match="not feasible now"):
+        session.play(infeasible)
+    with pytest.raises(HumanError, match="unknown action 'dance'"):
+        session.play("dance")
+    with pytest.raises(HumanError, match="not an index"):
+        session.play(999)
+    assert (session.state, session.clock) == before and session.response_times == []
+
+
+def test_shortcuts_are_unique_and_wait_is_w() -> None:
+    session = PlaySession("planner", seed=0)
+    play_until(session, 0)
+    for _ in range(6):
+        keys = [c.key for c in session.choices()]
+        assert len(set(keys)) == len(keys) and keys[-1] == "w"
+        session.play(person_choice([c.name for c in session.choices()]))
+
+
+def test_bad_robot_specs_name_the_problem() -> None:
+    with pytest.raises(RobotError, match="unknown robot 'butler'"):
+        PlaySession("butler")
+    with pytest.raises(RobotError, match="no parameter 'speed'"):
+        PlaySession("planner:speed=3")
+    with pytest.raises(SpecError):
+        PlaySession(":x=1")
+    with pytest.raises(HgMarlError, match="--seed"):
+        PlaySession("planner", seed=-1)
+
+
+def test_robot_move_reads_dict_and_dataclass_records(paper) -> None:
+    from dataclasses import dataclass, field
+
+    @dataclass
+    class Record:
+        expert: str = "habit"
+        decision_time: float = 0.25
+        stats: dict = field(default_factory=lambda: {"vpi": 0.5, "bad": float("nan")})
+
+    class Typed:
+        last_decision = Record()
+
+    class Plain:
+        last_decision: ClassVar[dict] = {
+            "expert": "planner",
+            "meta_h_habit": 0.3,
+            "weight_amplitude": 2.0,
+            "reason": "x",
+        }
+
+    class Nothing:
+        name = "random"
+
+    typed = robot_move(Typed(), paper, 17, False)
+    assert (typed.expert, typed.decision_time, dict(typed.weights)) == ("habit", 0.25, {"vpi": 0.5})
+    plain = robot_move(Plain(), paper, 17, True)
+    assert dict(plain.weights) == {"h_habit": 0.3, "weight_amplitude": 2.0} and plain.failed
+    assert robot_move(Nothing(), paper, 17, False).expert == "random"
+
+
+def test_terminal_front_end_by_scripted_input(tmp_path: Path) -> None:
+    session = PlaySession("planner", seed=0, record=tmp_path, frontend="terminal")
+    script = iter(["1", "w", "zz", "w", "w", "1", "q"])  # pick(tape3), ..., give(tape3)
+    out = io.StringIO()
+    summary = play_terminal(session, Console(file=out, width=120), read=lambda prompt: next(script))
+    text = out.getvalue()
+    (episode,) = read_trace(Path(str(summary["trace"])))
+    names = [s["action_name"] for s in episode.steps]
+    assert names == ["pick(tape3)", "wait", "wait", "wait", "give(tape3)"]
+    assert "unknown action 'zz'" in text and "robot: take(tape3)" in text
+    assert episode.header["meta"]["frontend"] == "terminal" and summary["moves"] == 5
+    assert json.loads(Path(str(summary["trace"])).read_text().splitlines()[-1])["type"] == "end"
+
+
+def test_play_command_in_the_terminal_and_bad_robot(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from typer.testing import CliRunner
+
+    from hg_marl.training.cli import app, main
+
+    result = CliRunner().invoke(app, ["play", "--tui", "--record", str(tmp_path), "--player", "cli"], input="1\nq\n")
+    assert result.exit_code == 0, result.output
+    assert "1 moves, 0 tasks" in result.output
+    (trace,) = tmp_path.glob("*.jsonl")
+    (episode,) = read_trace(trace)
+    assert [s["action_name"] for s in episode.steps] == ["pick(tape3)"] and episode.header["meta"]["player"] == "cli"
+    monkeypatch.setattr("sys.argv", ["hg-marl", "play", "--tui", "--robot", "butler"])
+    with pytest.raises(SystemExit) as stop:
+        main()
+    assert stop.value.code == 2
