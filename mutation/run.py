@@ -216,8 +216,9 @@ def _check_layout(scratch: Path, module: Module) -> None:
 
 
 def _diff_lines(diff: str) -> tuple[str, str]:
-    removed = [ln[1:].strip() for ln in diff.splitlines() if ln.startswith("-") and not ln.startswith("---")]
-    added = [ln[1:].strip() for ln in diff.splitlines() if ln.startswith("+") and not ln.startswith("+++")]
+    lines = [ln for ln in diff.splitlines() if ln[1:].strip()]  # changed blank lines carry no meaning
+    removed = [ln[1:].strip() for ln in lines if ln.startswith("-") and not ln.startswith("---")]
+    added = [ln[1:].strip() for ln in lines if ln.startswith("+") and not ln.startswith("+++")]
     return " / ".join(removed), " / ".join(added)
 
 
@@ -334,6 +335,7 @@ def rescore(path: Path, equivalents: list[Equivalent], target: float) -> int:
         data.pop("score", None)
         o = Outcome(**data)
         for s in o.survivors:
+            s["removed"], s["added"] = (str(s[k]).removesuffix(" / ").strip() for k in ("removed", "added"))
             key = (o.key, str(s["operator"]), str(s["removed"]), str(s["added"]))
             s["equivalent"] = next((e.why for e in equivalents if e.matches(*key)), "")
         o.equivalent = sum(bool(s["equivalent"]) for s in o.survivors)
