@@ -7,8 +7,9 @@ BIN := $(VENV)/bin
 OUT ?= results/paper2015
 PYTEST_ARGS ?=
 MUTATION_ARGS ?=
+RAY_VENV ?= .venv-ray
 
-.PHONY: setup reproduce test test-slow test-browser test-mutation mutation-full lint bench clean
+.PHONY: setup reproduce test test-slow test-browser test-ray test-mutation mutation-full lint bench clean
 
 $(BIN)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -47,6 +48,15 @@ test-mutation: $(BIN)/.mutation
 # Every mutant of every module (hours on 2 cores; see mutation/README.md).
 mutation-full: $(BIN)/.mutation
 	$(BIN)/python mutation/run.py --full $(MUTATION_ARGS)
+# Ray may pull other versions of shared dependencies, so it gets its own environment.
+$(RAY_VENV)/bin/.installed: pyproject.toml
+	$(PYTHON) -m venv $(RAY_VENV)
+	$(RAY_VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(RAY_VENV)/bin/python -m pip install --quiet -e ".[dev,ray]"
+	touch $@
+
+test-ray: $(RAY_VENV)/bin/.installed
+	HG_MARL_RAY_STAGE=1 $(RAY_VENV)/bin/python -m pytest -m ray tests/training/test_ray.py $(PYTEST_ARGS)
 
 lint: setup
 	$(BIN)/ruff check .
@@ -58,4 +68,4 @@ bench: setup
 	$(BIN)/python benchmarks/decision_latency.py
 
 clean:
-	rm -rf $(VENV) results .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) $(RAY_VENV) results .pytest_cache .mypy_cache .ruff_cache

@@ -2,8 +2,8 @@
 
 Each bug is a small, plausible edit of one source file (a swapped filter term, VPI with
 the wrong action's uncertainty, decision time charged from the wrong field or regardless
-of the flag, the tasks column read before the step, a finished sweep job recognised by
-the wrong file, results returned out of job order). For each one this script makes a
+of the flag, the tasks column read before the step, results of a resumed sweep returned out of
+job order; what counts as a finished job is the results store's, tested with it). For each one this script makes a
 scratch copy (as ``mutation/run.py`` does), applies the edit, runs the tests that guard
 that file and reports caught or missed, with the failing tests.
 
@@ -77,17 +77,10 @@ BUGS = (
         RUN_TESTS,
     ),
     Bug(
-        "a job with a log but no summary counts as finished",
-        "training/sweep.py",
-        "_, summary_path = job.paths(out)\n        if summary_path.exists():",
-        "log_path, summary_path = job.paths(out)\n        if log_path.exists():",
-        RUN_TESTS,
-    ),
-    Bug(
         "results of a resumed sweep in completion order",
         "training/sweep.py",
-        "return [summaries[i] for i in range(len(jobs))]",
-        "return list(summaries.values())",
+        "return [found[key] for key in keys], stats",
+        "return list(found.values()), stats",
         RUN_TESTS,
     ),
 )

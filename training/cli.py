@@ -18,7 +18,7 @@ from typer.exceptions import Abort, TyperException
 
 from hg_marl.core.errors import HgMarlError
 
-COMMANDS = ("run", "plan", "oracle", "reproduce", "train", "compare", "convert", "play", "replay", "traces")
+COMMANDS = ("run", "plan", "oracle", "reproduce", "train", "compare", "convert", "play", "replay", "traces", "evaluate")
 """Subcommand modules, in the order ``--help`` lists them."""
 
 app = typer.Typer(

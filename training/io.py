@@ -1,8 +1,10 @@
 """Atomic writes: a result file is either absent or complete, never half-written.
 
-Every result goes to a temporary file in the same directory, then ``os.replace`` puts
-it in place (atomic on POSIX), so an interrupted run leaves no torn file and a resumed
-run can trust whatever it finds.
+Every result goes to a temporary file in the same directory, is flushed to disk
+(``fsync``), then ``os.replace`` puts it in place (atomic on POSIX) and the directory
+entry is synced too, so an interrupted run or a power cut leaves no torn file and a
+resumed run can trust whatever it finds. Files are made readable by others (0644):
+results are meant to be shared, and ``mkstemp`` alone would leave them 0600.
 """
 
 from __future__ import annotations
@@ -15,16 +17,38 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+FILE_MODE = 0o644
+"""Permissions of every result file: the owner writes, everyone reads."""
+
+
+def _fsync_dir(directory: Path) -> None:
+    """Make a rename in ``directory`` durable (a no-op where directories cannot be opened)."""
+    try:
+        fd = os.open(directory, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
 
 def atomic_write(path: str | Path, write: Callable[[Path], object]) -> Path:
-    """Call ``write(tmp_path)`` then move the temporary file onto ``path``."""
+    """Call ``write(tmp_path)``, flush it to disk, then move it onto ``path`` (mode 0644)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     os.close(fd)
     try:
         write(Path(tmp))
+        fd = os.open(tmp, os.O_RDONLY)
+        try:
+            os.fsync(fd)
+        finally:
+            os.close(fd)
+        os.chmod(tmp, FILE_MODE)
         os.replace(tmp, path)
+        _fsync_dir(path.parent)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise

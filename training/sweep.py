@@ -1,76 +1,125 @@
-"""Resumable sweeps of runner jobs over local processes.
+"""Resumable sweeps of runner jobs on the content-addressed store, on any backend.
 
-A job is (condition label, robot spec, human spec, scenario, duration, seed). Each
-finished job writes its per-decision log and its summary atomically under
-``out/runs/<label>/seed<k>.{csv,json}``; a job whose summary exists is skipped, so an
-interrupted sweep resumes where it stopped and never loses a finished run. Jobs run
-in a process pool (``jobs`` workers; 1 runs in-process, which tests and profilers
-prefer). Every job is a pure function of its spec, so results do not depend on the
-number of workers.
+:func:`run_jobs` is the driver: for each job (in order) it reuses the stored run when
+the job's key is in the store, else claims the key, checks the store once more (another
+process may just have finished it) and hands the job to the backend; each finished
+result is written to the store before its claim is released. Jobs claimed by another
+live process are waited for, not run again. So an interrupted sweep resumes where it
+stopped, two sweeps on one folder share the work, and the results depend on neither
+the backend nor the number of workers (every job is a pure function of its key).
+
+:func:`run_sweep` and :func:`load_log` keep the older folder-based signature: the store
+lives in ``out/store``.
 """
 
 from __future__ import annotations
 
-import json
+import contextlib
 import logging
-from collections.abc import Callable, Iterable
-from concurrent.futures import ProcessPoolExecutor, as_completed
-from dataclasses import asdict, dataclass, field
+import time
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import pandas as pd
 
-from hg_marl.training.io import write_json
-from hg_marl.training.runner import RunConfig, RunResult, run
+from hg_marl.training.backends import Backend, LocalBackend
+from hg_marl.training.store import Job, Store, StoredRun
+
+__all__ = ["Job", "SweepStats", "load_log", "run_jobs", "run_sweep", "store_of"]
 
 log = logging.getLogger(__name__)
 
-
-@dataclass(frozen=True)
-class Job:
-    """One run of a sweep."""
-
-    label: str
-    """Condition name, used for the output folder."""
-    robot: str
-    """Robot registry name."""
-    seed: int
-    """Run seed."""
-    scenario: str = "paper2015"
-    """Scenario."""
-    duration: float = 1200.0
-    """Simulated seconds."""
-    human: str = "cooperative"
-    """Human registry name."""
-    robot_params: dict[str, Any] = field(default_factory=dict)
-    """Keyword arguments of ``make_robot``."""
-    human_params: dict[str, Any] = field(default_factory=dict)
-    """Keyword arguments of ``make_human``."""
-
-    def paths(self, out: Path) -> tuple[Path, Path]:
-        """Where this job's log (CSV) and summary (JSON) go."""
-        base = out / "runs" / self.label / f"seed{self.seed}"
-        return base.with_suffix(".csv"), base.with_suffix(".json")
+POLL = 0.2
+"""Seconds between looks at jobs another process is running."""
 
 
-def execute(job: Job) -> RunResult:
-    """Build the actors from their specs and run the job."""
-    from hg_marl.agents.humans import make_human
-    from hg_marl.agents.robots import make_robot
+@dataclass
+class SweepStats:
+    """What a sweep did."""
 
-    robot = make_robot(job.robot, **job.robot_params)
-    human = make_human(job.human, **job.human_params)
-    return run(robot, human, RunConfig(scenario=job.scenario, duration=job.duration, seed=job.seed))
+    ran: int = 0
+    """Jobs this process ran."""
+    reused: int = 0
+    """Jobs found finished in the store (including those another process finished meanwhile)."""
 
 
-def _execute_and_save(job: Job, out: Path) -> dict[str, Any]:
-    result = execute(job)
-    log_path, summary_path = job.paths(out)
-    result.save(log_path)
-    summary = {**result.summary, "job": asdict(job)}
-    write_json(summary_path, summary)
-    return summary
+def run_jobs(
+    jobs: Sequence[Job],
+    store: Store,
+    backend: Backend | None = None,
+    on_done: Callable[[Job, StoredRun], None] | None = None,
+) -> tuple[list[StoredRun], SweepStats]:
+    """Run every job whose key is not in ``store``; return all stored runs, in job order.
+
+    Args:
+        jobs: the sweep (jobs with equal keys run once).
+        store: where results are kept.
+        backend: executor (default: in this process); closed on return.
+        on_done: called once per job as it is found or finished (progress bars hook in here).
+    """
+    backend = backend or LocalBackend(1)
+    keys = [job.key() for job in jobs]
+    positions: dict[str, list[int]] = {}
+    for i, key in enumerate(keys):
+        positions.setdefault(key, []).append(i)
+    first = {key: at[0] for key, at in positions.items()}
+    found: dict[str, StoredRun] = {}
+    stats = SweepStats()
+
+    def record(key: str, stored: StoredRun) -> None:
+        found[key] = stored
+        if on_done:
+            for i in positions[key]:
+                on_done(jobs[i], stored)
+
+    pending = list(first)
+    claims: dict[str, contextlib.ExitStack] = {}
+    try:
+        while pending or claims:
+            waiting: list[str] = []
+            for key in pending:
+                job = jobs[first[key]]
+                if len(claims) >= backend.capacity:
+                    waiting.append(key)
+                    continue
+                stored = store.get(job, key)
+                if stored is None:
+                    stack = contextlib.ExitStack()
+                    if not stack.enter_context(store.claim(key)):
+                        stack.close()
+                        waiting.append(key)
+                        continue
+                    stored = store.get(job, key, repair=True)
+                    if stored is None:
+                        claims[key] = stack
+                        backend.submit(key, job)
+                        continue
+                    stack.close()
+                stats.reused += 1
+                record(key, stored)
+            pending = waiting
+            if claims:
+                for key, result in backend.wait(timeout=POLL):
+                    stored = store.put(jobs[first[key]], result, key)
+                    claims.pop(key).close()
+                    stats.ran += 1
+                    record(key, stored)
+            elif pending:
+                time.sleep(POLL)  # the rest is being run by another process
+    finally:
+        backend.close()
+        for stack in claims.values():
+            stack.close()
+    if stats.ran or stats.reused:
+        log.info("sweep: %d runs made, %d reused", stats.ran, stats.reused)
+    return [found[key] for key in keys], stats
+
+
+def store_of(out: str | Path) -> Store:
+    """The store of an output folder."""
+    return Store(Path(out) / "store")
 
 
 def run_sweep(
@@ -78,45 +127,25 @@ def run_sweep(
     out: str | Path,
     workers: int = 1,
     on_done: Callable[[Job, dict[str, Any]], None] | None = None,
+    backend: Backend | None = None,
 ) -> list[dict[str, Any]]:
-    """Run every job not already finished under ``out``; return all summaries, in job order.
+    """Run every job not already in ``out``'s store; return all summaries, in job order.
 
     Args:
         jobs: the sweep.
-        out: output folder (created).
-        workers: worker processes; 1 runs in this process.
-        on_done: called after each job (finished now or found finished).
+        out: output folder (its store is ``out/store``).
+        workers: local worker processes; 1 runs in this process (ignored with ``backend``).
+        on_done: called with each job and its summary as it is found or finished.
+        backend: executor (default: :class:`LocalBackend` with ``workers``).
     """
-    out = Path(out)
-    jobs = list(jobs)
-    summaries: dict[int, dict[str, Any]] = {}
-    todo: list[int] = []
-    for i, job in enumerate(jobs):
-        _, summary_path = job.paths(out)
-        if summary_path.exists():
-            summaries[i] = json.loads(summary_path.read_text())
-            if on_done:
-                on_done(job, summaries[i])
-        else:
-            todo.append(i)
-    if todo:
-        log.info("%d jobs to run, %d already done", len(todo), len(summaries))
-    if workers <= 1 or len(todo) <= 1:
-        for i in todo:
-            summaries[i] = _execute_and_save(jobs[i], out)
-            if on_done:
-                on_done(jobs[i], summaries[i])
-    else:
-        with ProcessPoolExecutor(max_workers=workers) as pool:
-            futures = {pool.submit(_execute_and_save, jobs[i], out): i for i in todo}
-            for future in as_completed(futures):
-                i = futures[future]
-                summaries[i] = future.result()
-                if on_done:
-                    on_done(jobs[i], summaries[i])
-    return [summaries[i] for i in range(len(jobs))]
+    callback = None if on_done is None else (lambda job, stored: on_done(job, stored.summary))
+    runs, _ = run_jobs(list(jobs), store_of(out), backend or LocalBackend(workers), callback)
+    return [{**run.summary, "job": run.job, "key": run.key} for run in runs]
 
 
 def load_log(job: Job, out: str | Path) -> pd.DataFrame:
-    """The per-decision log of a finished job."""
-    return pd.read_csv(job.paths(Path(out))[0])
+    """The per-decision log of a finished job of ``out``'s store."""
+    stored = store_of(out).get(job)
+    if stored is None:
+        raise FileNotFoundError(f"no finished run of {job.label or job.robot} seed {job.seed} in {out}")
+    return stored.log()

@@ -106,7 +106,7 @@ def test_bad_video_names_are_one_line_errors(
     code, err = main_exit(["run", "--duration", "5", "--video", str(tmp_path / "x.mp4")], monkeypatch, capsys)
     assert code == 2 and "hg-marl[video]" in err
     code, err = main_exit(["replay", str(tmp_path / "none.jsonl")], monkeypatch, capsys)
-    assert code == 2 and "no such trace file" in err
+    assert code == 2 and "trace file not found" in err
 
 
 @pytest.mark.skipif(importlib.util.find_spec("imageio_ffmpeg") is None, reason="needs the video extra")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -66,3 +67,18 @@ def test_adaptation_smoke(tmp_path: Path) -> None:
     assert rows["planner"]["tasks_lost_mean"] < rows["habit"]["tasks_lost_mean"]
     assert figures["adaptation_no_handover"].exists()
     assert "planner" in adaptation.adaptation_table(summary)
+
+
+def test_reproduce_with_a_new_duration_never_reuses_the_old_runs(tmp_path: Path) -> None:
+    from hg_marl.training.reproduce import ReproduceConfig, reproduce
+
+    base = ReproduceConfig(out=tmp_path / "a", seeds=1, duration=120.0, paper_only=True, adaptation=False)
+    reproduce(base)
+    longer = reproduce(replace(base, duration=240.0))
+    fresh = reproduce(replace(base, out=tmp_path / "b", duration=240.0))
+    assert longer["duration"] == 240.0
+    assert longer["conditions"] == fresh["conditions"]  # same as never having run 120 s before
+    assert (
+        longer["conditions"]["planner"]["tasks_solved_mean"]
+        > reproduce(base)["conditions"]["planner"]["tasks_solved_mean"]
+    )

@@ -11,7 +11,7 @@ from typer.testing import CliRunner
 
 from hg_marl.agents.humans import make_human
 from hg_marl.agents.robots import make_robot
-from hg_marl.training import sweep
+from hg_marl.training import backends, sweep
 from hg_marl.training.cli import app
 from hg_marl.training.io import atomic_write
 from hg_marl.training.runner import COLUMNS, RunConfig, run
@@ -52,22 +52,23 @@ def test_charging_decision_time_costs_tasks() -> None:
 
 
 def test_sweep_resumes_without_rerunning(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    jobs = [Job("random", "random", seed=s, duration=60.0, human="random") for s in range(2)]
+    jobs = [Job(robot="random", seed=s, duration=60.0, human="random", label="random") for s in range(2)]
     first = run_sweep(jobs, tmp_path)
     assert [s["job"]["seed"] for s in first] == [0, 1]
-    for job in jobs:
-        log_path, summary_path = job.paths(tmp_path)
-        assert log_path.exists() and json.loads(summary_path.read_text())["actions"] == len(pd.read_csv(log_path))
+    for job, summary in zip(jobs, first, strict=True):
+        entry = sweep.store_of(tmp_path).entry(job.key())
+        assert json.loads((entry / "result.json").read_text())["summary"]["actions"] == summary["actions"]
+        assert summary["actions"] == len(sweep.load_log(job, tmp_path))
 
     def boom(job: Job) -> None:
         raise AssertionError("a finished job was run again")
 
-    monkeypatch.setattr(sweep, "execute", boom)
+    monkeypatch.setattr(backends, "execute", boom)
     assert run_sweep(jobs, tmp_path) == first
 
 
 def test_sweep_in_two_processes_matches_in_process(tmp_path: Path) -> None:
-    jobs = [Job("planner", "planner", seed=s, duration=80.0) for s in range(2)]
+    jobs = [Job(robot="planner", seed=s, duration=80.0) for s in range(2)]
     serial = run_sweep(jobs, tmp_path / "a", workers=1)
     parallel = run_sweep(jobs, tmp_path / "b", workers=2)
     assert [s["tasks_solved"] for s in serial] == [s["tasks_solved"] for s in parallel]

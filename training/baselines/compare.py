@@ -3,9 +3,12 @@
 For each (algorithm, human, seed) *cell*: train for a fixed step budget against that
 human and, every ``eval_every`` steps (and at step 0), score the model on the runner's
 protocol (continuing play, ``duration`` simulated seconds, decision time charged, the
-same evaluation seeds for everyone). Each cell is written atomically to
-``OUT/cells/<algo>__<human>__seed<k>.json`` as soon as it finishes, and an existing cell
-is never recomputed, so an interrupted comparison resumes where it stopped.
+same evaluation seeds for everyone). Each cell is a training job of the content-addressed
+store in ``OUT/store`` (:mod:`hg_marl.training.store`), keyed by everything that makes it
+(:func:`cell_fields`: algorithm, human, seed, scenario content, budget, evaluation
+protocol, the trainer's sources and hyperparameter files, the SB3 and torch versions),
+written as soon as it finishes; an interrupted comparison resumes where it stopped, and
+a changed setting never reuses an old cell.
 
 The summary puts, per (algorithm, human): the final and best rate as a fraction of the
 oracle's (mean over seeds), and the environment steps to first reach 50% and 90% of the
@@ -17,10 +20,9 @@ human (None for a non-stationary human).
 
 from __future__ import annotations
 
-import json
+import hashlib
 import logging
 import math
-import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -33,6 +35,8 @@ from hg_marl.training.baselines.envs import DEFAULT_MAX_CYCLES, EnvSpec
 from hg_marl.training.baselines.evaluation import actor_rate, runner_rate, steps_to_reach
 from hg_marl.training.baselines.train import TrainConfig, train
 from hg_marl.training.io import write_json
+from hg_marl.training.store import content_key, scenario_content
+from hg_marl.training.sweep import store_of
 
 log = logging.getLogger(__name__)
 
@@ -71,17 +75,38 @@ class CompareConfig:
     """Output directory."""
 
 
-def _slug(text: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.=-]+", "-", text)
+def _trainer_fingerprint() -> dict[str, str]:
+    """What the trainer is: its sources, its hyperparameter files, the learning libraries' versions."""
+    import stable_baselines3
+    import torch
+
+    here = Path(__file__).parent
+    digest = hashlib.sha256()
+    for f in sorted([*here.glob("*.py"), *(here.parent / "hyperparams").glob("*.yml")]):
+        digest.update(f.name.encode())
+        digest.update(f.read_bytes())
+    return {"sources": digest.hexdigest(), "sb3": stable_baselines3.__version__, "torch": str(torch.__version__)}
 
 
-def cell_path(config: CompareConfig, algo: str, human: str, seed: int) -> Path:
-    """Where a cell's result lives."""
-    return config.out / "cells" / f"{algo}__{_slug(human)}__seed{seed}.json"
+def cell_fields(config: CompareConfig, algo: str, human: str, seed: int) -> dict[str, Any]:
+    """Everything that determines a cell's result (its key in the store)."""
+    return {
+        "algo": algo,
+        "human": human,
+        "seed": seed,
+        "scenario": scenario_content(config.scenario),
+        "steps": config.steps,
+        "eval_every": config.eval_every,
+        "eval_seeds": list(config.eval_seeds),
+        "duration": config.duration,
+        "deterministic": config.deterministic,
+        "max_cycles": config.max_cycles,
+        "trainer": _trainer_fingerprint(),
+    }
 
 
-def run_cell(config: CompareConfig, algo: str, human: str, seed: int) -> dict[str, Any]:
-    """Train one cell with runner evaluations; returns (and writes) its record."""
+def run_cell(config: CompareConfig, algo: str, human: str, seed: int, directory: Path) -> dict[str, Any]:
+    """Train one cell with runner evaluations (the model goes to ``directory``); return its record."""
     spec = EnvSpec(seat="robot", partners=(human,), scenario=config.scenario, max_cycles=config.max_cycles)
 
     def evaluate(model: Any) -> float:
@@ -96,7 +121,6 @@ def run_cell(config: CompareConfig, algo: str, human: str, seed: int) -> dict[st
         )
 
     curve = RateCurve(config.eval_every, evaluate)
-    directory = config.out / "models" / f"{algo}__{_slug(human)}__seed{seed}"
     result = train(
         TrainConfig(
             algo=algo,
@@ -127,16 +151,25 @@ def run_cell(config: CompareConfig, algo: str, human: str, seed: int) -> dict[st
         "curve": [[s, r] for s, r in curve.curve],
         "model": str(result.path),
     }
-    write_json(cell_path(config, algo, human, seed), record)
     return record
 
 
 def reference_rates(config: CompareConfig, human: str) -> dict[str, float | None]:
-    """The oracle's and the baseline robots' tasks per hour against ``human`` (cached on disk)."""
-    path = config.out / "references" / f"{_slug(human)}.json"
-    if path.is_file():
-        cached: dict[str, float | None] = json.loads(path.read_text())
-        return cached
+    """The oracle's and the baseline robots' tasks per hour against ``human`` (cached in the store)."""
+    fields = {
+        "human": human,
+        "scenario": scenario_content(config.scenario),
+        "duration": config.duration,
+        "eval_seeds": list(config.eval_seeds),
+        "robots": BASELINE_ROBOTS,
+    }
+    rates: dict[str, float | None] = store_of(config.out).cached(
+        "compare_reference", fields, lambda: _reference_rates(config, human)
+    )
+    return rates
+
+
+def _reference_rates(config: CompareConfig, human: str) -> dict[str, float | None]:
     from hg_marl.agents.humans import HumanError
     from hg_marl.agents.oracle import OracleTooLarge, oracle_rate
     from hg_marl.agents.robots import make_robot
@@ -153,7 +186,6 @@ def reference_rates(config: CompareConfig, human: str) -> dict[str, float | None
             return make_robot(name, **params)
 
         rates[name] = actor_rate(build, human, config.scenario, config.duration, config.eval_seeds)
-    write_json(path, rates)
     return rates
 
 
@@ -237,23 +269,20 @@ def compare(config: CompareConfig, on_cell: Callable[[str], None] | None = None)
         ``{"config": ..., "rows": [...], "cells": [...]}`` (also written to ``summary.json``).
     """
     cells: list[dict[str, Any]] = []
+    store = store_of(config.out)
     references = {human: reference_rates(config, human) for human in config.humans}
     for algo in config.algos:
         for human in config.humans:
             for seed in range(config.seeds):
-                path = cell_path(config, algo, human, seed)
-                label = f"{algo} vs {human} seed {seed}"
-                cached = json.loads(path.read_text()) if path.is_file() else None
-                if cached is not None and (cached.get("budget"), cached.get("deterministic")) == (
-                    config.steps,
-                    config.deterministic,
-                ):
-                    cells.append(cached)
-                    log.info("%s: done already (%s)", label, path)
-                    continue
-                if on_cell is not None:
-                    on_cell(label)
-                cells.append(run_cell(config, algo, human, seed))
+                fields = cell_fields(config, algo, human, seed)
+                directory = config.out / "models" / content_key("compare_cell", fields)[:16]
+
+                def cell(algo: str = algo, human: str = human, seed: int = seed, directory: Path = directory) -> Any:
+                    if on_cell is not None:
+                        on_cell(f"{algo} vs {human} seed {seed}")
+                    return run_cell(config, algo, human, seed, directory)
+
+                cells.append(store.cached("compare_cell", fields, cell))
     rows = summarise(config, cells, references)
     summary = {
         "config": {k: (str(v) if isinstance(v, Path) else v) for k, v in vars(config).items()},

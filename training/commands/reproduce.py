@@ -34,43 +34,31 @@ def register(app: typer.Typer) -> None:
         """Planner alone, habit alone, random mix (+ further criteria): Fig. 3-5, summary.json, table."""
         from tqdm import tqdm
 
-        from hg_marl.training import paper, plots
-        from hg_marl.training.io import write_json
-        from hg_marl.training.sweep import load_log, run_sweep
+        from hg_marl.training import paper
+        from hg_marl.training.reproduce import ReproduceConfig, reproduce
 
-        duration = paper.DEFAULT_DURATION if duration is None else check_duration(duration)
-        jobs = paper.jobs(seeds=seeds, duration=duration, scenario=scenario, further=not paper_only)
-        with tqdm(total=len(jobs), unit="run", desc="paper experiment") as bar:
-            run_sweep(jobs, out, workers=workers, on_done=lambda job, _: bar.update(1))
-        logs: dict[str, list[Any]] = {}
-        for job in jobs:
-            logs.setdefault(job.label, []).append(load_log(job, out))
-        rows = {label: paper.summarise_condition(paper.ConditionLogs(label, runs)) for label, runs in logs.items()}
-        summary: dict[str, Any] = {
-            "scenario": scenario,
-            "duration": duration,
-            "seeds": seeds,
-            "conditions": rows,
-            "paper": paper.PAPER,
-            "targets": paper.check_targets(rows),
-        }
-        figures = {
-            "fig3": plots.cumulative_reward(logs, duration, out / "fig3_cumulative_reward.png"),
-            "fig4": plots.actions_per_run(logs, out / "fig4_actions_per_run.png"),
-            "fig5": plots.weight_amplitude(logs, out / "fig5_weight_amplitude.png"),
-        }
-        if adaptation:
-            from hg_marl.training.adaptation import AdaptationConfig, adaptation_jobs, run_adaptation
+        config = ReproduceConfig(
+            out=out,
+            seeds=seeds,
+            duration=paper.DEFAULT_DURATION if duration is None else check_duration(duration),
+            scenario=scenario,
+            paper_only=paper_only,
+            adaptation=adaptation,
+            adaptation_seeds=adaptation_seeds,
+            workers=workers,
+        )
+        bars: list[Any] = []
 
-            config = AdaptationConfig(scenario=scenario, seeds=adaptation_seeds)
-            with tqdm(total=len(adaptation_jobs(config)), unit="run", desc="adaptation") as bar:
-                summary["adaptation"], more = run_adaptation(
-                    out, config, workers=workers, on_done=lambda job, _: bar.update(1)
-                )
-            figures.update(more)
-        summary["figures"] = {k: str(v) for k, v in figures.items()}
-        write_json(out / "summary.json", summary)
-        typer.echo(paper.table(rows))
+        def progress(stage: str, total: int) -> Any:
+            bars.append(tqdm(total=total, unit="run", desc=stage))
+            return lambda job, result: bars[-1].update(1)
+
+        try:
+            summary = reproduce(config, progress=progress)
+        finally:
+            for bar in bars:
+                bar.close()
+        typer.echo(paper.table(summary["conditions"]))
         for name, target in summary["targets"].items():
             verdict = "holds" if target.get("holds") else "MISSED"
             typer.echo(f"target: {name}: {verdict} { ({k: v for k, v in target.items() if k != 'holds'}) }")
@@ -78,4 +66,4 @@ def register(app: typer.Typer) -> None:
             from hg_marl.training.adaptation import adaptation_table
 
             typer.echo(adaptation_table(summary["adaptation"]))
-        typer.echo(f"wrote {out / 'summary.json'} and {', '.join(str(p) for p in figures.values())}")
+        typer.echo(f"wrote {out / 'summary.json'} and {', '.join(summary['figures'].values())}")

@@ -1,0 +1,54 @@
+"""``hg-marl evaluate``: a study file's robots x humans x scenarios x seeds, with rliable aggregates."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Annotated, Any
+
+import typer
+
+
+def _names(text: str | None) -> tuple[str, ...]:
+    return tuple(x.strip() for x in (text or "").split(",") if x.strip())
+
+
+def register(app: typer.Typer) -> None:
+    """Add the ``evaluate`` subcommand."""
+
+    @app.command("evaluate")
+    def evaluate_command(
+        study: Annotated[Path, typer.Argument(help="Study file (TOML), e.g. studies/crossplay.toml.")],
+        out: Annotated[Path, typer.Option(help="Output folder (resumable: its store keeps every run).")],
+        backend: Annotated[str, typer.Option(help="local (process pool) or ray.")] = "local",
+        address: Annotated[
+            str | None, typer.Option(help="ray: 'auto' or ray://host:port joins a cluster; none starts one.")
+        ] = None,
+        workers: Annotated[int, typer.Option(help="Worker processes (local) or CPUs of a new Ray instance.")] = min(
+            2, os.cpu_count() or 1
+        ),
+        seeds: Annotated[int | None, typer.Option(help="Only the study's first N seeds.")] = None,
+        robots: Annotated[str | None, typer.Option(help="Only these robots (comma list of labels or names).")] = None,
+        humans: Annotated[str | None, typer.Option(help="Only these humans (comma list of labels or names).")] = None,
+    ) -> None:
+        """Every robot with every human: scores.csv, aggregate.json, crossplay/profiles/intervals PNGs, report.md."""
+        import time
+
+        from tqdm import tqdm
+
+        from hg_marl.training.backends import make_backend
+        from hg_marl.training.evaluate import cells, evaluate
+        from hg_marl.training.report import robot_table
+        from hg_marl.training.study import load_study
+
+        chosen = load_study(study).narrowed(seeds, _names(robots), _names(humans))
+        executor = make_backend(backend, workers, address)
+        start = time.perf_counter()
+        with tqdm(total=len(cells(chosen)), unit="run", desc=chosen.name) as bar:
+
+            def done(job: Any, run: Any) -> None:
+                bar.update(1)
+
+            agg = evaluate(chosen, out, executor, done)
+        typer.echo(robot_table(agg))
+        typer.echo(f"wall time {time.perf_counter() - start:.1f} s; report: {out / 'report.md'}")

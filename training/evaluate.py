@@ -1,0 +1,173 @@
+"""Run a study: every robot with every human on every scenario and seed, scored against the oracle.
+
+:func:`evaluate` is what ``hg-marl evaluate STUDY.toml --out DIR`` calls. Each cell is a
+:class:`~hg_marl.training.store.Job` of the store in ``DIR/store`` (so an interrupted
+study resumes without repeating finished cells, and a changed setting never reuses an
+old one), run on the chosen backend. A cell's **score** is its tasks per simulated hour
+divided by the *reference rate* of its (human, scenario): the oracle's optimal rate
+(value iteration on the exact model, cached in the store) when the human is stationary
+and the model fits ``oracle_max_states``; otherwise the best robot's mean rate in this
+study, and every table says which. Outputs in DIR (see :func:`write_outputs`):
+``scores.csv``, ``aggregate.json``, ``crossplay.png``, ``profiles.png``,
+``intervals.png`` and ``report.md``.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from hg_marl.training.backends import Backend, LocalBackend
+from hg_marl.training.store import Job, Store, StoredRun, scenario_content
+from hg_marl.training.study import ORACLE, Actor, Study
+
+log = logging.getLogger(__name__)
+
+SCORE_COLUMNS = ("robot", "human", "scenario", "seed", "tasks", "rate", "oracle_rate", "score", "key", "reference")
+"""Columns of ``scores.csv``: one row per run; ``reference`` says what ``oracle_rate`` is."""
+
+
+@dataclass(frozen=True)
+class Cell:
+    """One run of a study, with the labels it is reported under."""
+
+    robot: Actor
+    human: Actor
+    scenario: str
+    seed: int
+    job: Job
+
+
+@dataclass(frozen=True)
+class Reference:
+    """The rate a (human, scenario)'s scores are divided by."""
+
+    rate: float | None
+    """Tasks per simulated hour (None: no reference, scores are missing)."""
+    source: str
+    """``oracle`` or ``best robot (<label>)``, or why there is none."""
+
+
+def stationary(human: Actor) -> bool:
+    """Whether the oracle can model this human (a fixed action distribution per state)."""
+    from hg_marl.agents.humans import available_humans
+
+    return bool(available_humans().get(human.name, {}).get("stationary", False))
+
+
+def cells(study: Study) -> list[Cell]:
+    """Every run of the study, robots outermost (the oracle robot only meets stationary humans)."""
+    out = []
+    for robot in study.robots:
+        for human in study.humans:
+            if robot.name == ORACLE and not stationary(human):
+                continue
+            for scenario in study.scenarios:
+                for seed in study.seeds:
+                    job = Job(
+                        robot=robot.name,
+                        robot_params=dict(robot.params),
+                        human=human.name,
+                        human_params=dict(human.params),
+                        scenario=scenario,
+                        duration=study.duration,
+                        seed=seed,
+                        label=f"{robot.label} with {human.label}",
+                    )
+                    out.append(Cell(robot, human, scenario, seed, job))
+    return out
+
+
+def oracle_rate(store: Store, human: Actor, scenario: str, max_states: int) -> float | None:
+    """The oracle's tasks per hour for (human, scenario), cached in the store (None: not computable)."""
+    if not stationary(human):
+        return None
+    fields = {
+        "human": {"name": human.name, "params": dict(human.params)},
+        "scenario": scenario_content(scenario),
+        "max_states": max_states,
+    }
+
+    def compute() -> float | None:
+        from hg_marl.agents.oracle import OracleTooLarge
+        from hg_marl.agents.oracle import oracle_rate as solve
+
+        try:
+            return float(solve(scenario, human.spec(), max_states=max_states).rate_per_hour)
+        except OracleTooLarge as exc:
+            log.warning("oracle for %s on %s is over its budget (%s); using the best robot", human.label, scenario, exc)
+            return None
+
+    value = store.cached("oracle", fields, compute)
+    return None if value is None else float(value)
+
+
+def _rate(run: StoredRun) -> float:
+    return run.rate
+
+
+def score_table(study: Study, plan: list[Cell], runs: list[StoredRun], store: Store) -> pd.DataFrame:
+    """``scores.csv``'s rows, in the study's order, and the references used."""
+    rows = [
+        {
+            "robot": c.robot.label,
+            "human": c.human.label,
+            "scenario": c.scenario,
+            "seed": c.seed,
+            "tasks": r.tasks,
+            "rate": _rate(r),
+            "key": r.key,
+        }
+        for c, r in zip(plan, runs, strict=True)
+    ]
+    frame = pd.DataFrame(rows)
+    refs: dict[tuple[str, str], Reference] = {}
+    for human in study.humans:
+        for scenario in study.scenarios:
+            rate = oracle_rate(store, human, scenario, study.oracle_max_states)
+            if rate is not None and rate > 0:
+                refs[(human.label, scenario)] = Reference(rate, "oracle")
+                continue
+            if rate == 0:  # the oracle proves that no robot can solve a task with this human
+                refs[(human.label, scenario)] = Reference(None, "oracle: 0 tasks/h, no score")
+                continue
+            mine = frame[(frame["human"] == human.label) & (frame["scenario"] == scenario)]
+            means = mine[mine["robot"] != ORACLE].groupby("robot", sort=False)["rate"].mean()
+            if len(means) and means.max() > 0:
+                refs[(human.label, scenario)] = Reference(float(means.max()), f"best robot ({means.idxmax()})")
+            else:
+                refs[(human.label, scenario)] = Reference(None, "none (no robot solved a task)")
+    frame["oracle_rate"] = [refs[(h, s)].rate for h, s in zip(frame["human"], frame["scenario"], strict=True)]
+    frame["reference"] = [refs[(h, s)].source for h, s in zip(frame["human"], frame["scenario"], strict=True)]
+    frame["score"] = frame["rate"] / frame["oracle_rate"]
+    return frame[list(SCORE_COLUMNS)]
+
+
+def evaluate(
+    study: Study,
+    out: str | Path,
+    backend: Backend | None = None,
+    on_done: Callable[[Job, StoredRun], None] | None = None,
+) -> dict[str, Any]:
+    """Run (or resume) ``study`` into ``out``; write every output; return the aggregates.
+
+    Args:
+        study: a validated (possibly narrowed) study.
+        out: output folder; its ``store`` keeps the runs.
+        backend: executor (default: in this process).
+        on_done: called per cell as it is found or finished (progress bars).
+    """
+    from hg_marl.training.report import write_outputs
+    from hg_marl.training.sweep import run_jobs, store_of
+
+    out = Path(out)
+    store = store_of(out)
+    plan = cells(study)
+    runs, stats = run_jobs([c.job for c in plan], store, backend or LocalBackend(1), on_done)
+    frame = score_table(study, plan, runs, store)
+    return write_outputs(study, frame, out, {"ran": stats.ran, "reused": stats.reused})
