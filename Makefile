@@ -7,10 +7,10 @@ BIN := $(VENV)/bin
 OUT ?= results/paper2015
 PYTEST_ARGS ?=
 NOX_ARGS ?=
-
+MUTATION_ARGS ?=
 RAY_VENV ?= .venv-ray
 
-.PHONY: setup reproduce test test-slow test-browser test-ray test-integrations lint bench clean
+.PHONY: setup reproduce test test-slow test-browser test-ray test-integrations test-mutation mutation-full lint bench clean
 
 $(BIN)/.installed: pyproject.toml
 	@echo "setup: creating $(VENV) and installing hg-marl with its dev and sb3 extras"
@@ -45,6 +45,18 @@ test-browser: setup
 	mkdir -p artifacts
 	HG_MARL_BROWSER_REQUIRED=1 $(BIN)/python -m pytest -m browser $(PYTEST_ARGS)
 
+# Mutation testing (mutation/README.md): a seeded sample of mutants per module of
+# mutation/modules.toml; prints the score per module and every survivor.
+$(BIN)/.mutation: $(BIN)/.installed
+	$(BIN)/python -m pip install --quiet -e ".[dev,sb3,mutation]"
+	touch $@
+
+test-mutation: $(BIN)/.mutation
+	$(BIN)/python mutation/run.py $(MUTATION_ARGS)
+
+# Every mutant of every module (hours on 2 cores; see mutation/README.md).
+mutation-full: $(BIN)/.mutation
+	$(BIN)/python mutation/run.py --full $(MUTATION_ARGS)
 # Ray may pull other versions of shared dependencies, so it gets its own environment.
 $(RAY_VENV)/bin/.installed: pyproject.toml
 	$(PYTHON) -m venv $(RAY_VENV)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib.util
 import os
 
 import pytest
@@ -14,6 +15,34 @@ from hg_marl.core import World
 settings.register_profile("ci", derandomize=True)
 if os.environ.get("CI"):
     settings.load_profile("ci")
+
+
+EXTRAS = {"sb3": ("torch", "stable_baselines3", "sb3_contrib")}
+"""Optional extras, by pytest marker, and the modules each needs."""
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    """Fail the session when an extra a marked test needs is missing where it is required.
+
+    Required in CI (``CI`` set) and when ``HG_MARL_REQUIRE_EXTRAS=1``: there a missing extra
+    would make its test modules skip themselves, and a stage would pass having tested
+    nothing. Elsewhere the modules skip with the reason "needs the ... extra".
+    """
+    if not (os.environ.get("CI") or os.environ.get("HG_MARL_REQUIRE_EXTRAS") == "1"):
+        return
+    if os.environ.get("HG_MARL_REQUIRE_EXTRAS") == "0":
+        return
+    missing = [
+        f"{extra} ({name})"
+        for extra, modules in EXTRAS.items()
+        for name in modules
+        if importlib.util.find_spec(name) is None
+    ]
+    if missing:
+        raise pytest.UsageError(
+            f"missing optional extras: {', '.join(missing)}; install them (pip install -e '.[sb3]') "
+            "or set HG_MARL_REQUIRE_EXTRAS=0 to let their tests skip"
+        )
 
 
 @pytest.fixture(scope="session")

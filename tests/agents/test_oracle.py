@@ -201,3 +201,14 @@ def test_cli_command_prints_rate_and_size() -> None:
 def test_roboergosum_no_handover() -> None:
     result = oracle_rate("roboergosum", "no_handover")
     assert result.converged and result.n_layouts == 5040 and result.rate_per_hour > 100
+
+
+def test_oracle_robot_waits_outside_its_model(cooperative_oracle) -> None:  # type: ignore[no-untyped-def]
+    from types import SimpleNamespace
+
+    world = World("paper2015")
+    robot = OracleRobot(cooperative_oracle)
+    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
+    outside = State((7, 7, 7), 3)  # three tapes in the robot's one hand: no such state in the model
+    action = robot.act(SimpleNamespace(state=outside))  # type: ignore[arg-type]
+    assert world.action_names[Agent.ROBOT][action] == "wait" and action == 17

@@ -6,10 +6,9 @@ import math
 
 import numpy as np
 import pytest
-from test_planner_reference import execute, initial_states, reference_cost
+from test_planner_reference import execute, initial_states, reference_cost, reference_price
 
 from hg_marl.agents.planner import CostWeights, Planner, PlannerConfig
-from hg_marl.agents.planner.costs import cycle_terms
 from hg_marl.core import Agent, State, World
 
 SMALL = (
@@ -28,7 +27,7 @@ def check_plan(world: World, planner: Planner, state: State, result, to_move=Age
     assert reward == 1.0, "the last robot action must complete the task"
     assert clock == pytest.approx(plan.duration)
     weights = planner.config.weights
-    cost = sum(weights.total(cycle_terms(*p)) for p in parts)
+    cost = sum(reference_price(weights, p) for p in parts)
     assert cost == pytest.approx(result.cost)
     assert sum(result.breakdown.values()) == pytest.approx(result.cost)
     assert result.breakdown["time"] == pytest.approx(weights.time * plan.duration)

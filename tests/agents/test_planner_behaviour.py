@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 import pytest
-from test_planner_reference import execute, initial_states, reference_cost
+from test_planner_reference import execute, initial_states, reference_cost, reference_price, reference_terms
 
 from hg_marl.agents.planner import (
     CostWeights,
@@ -15,7 +15,6 @@ from hg_marl.agents.planner import (
     PlannerConfig,
     make_human_model,
 )
-from hg_marl.agents.planner.costs import cycle_terms, robot_active
 from hg_marl.core import Agent, Kind, World
 from hg_marl.core.scenario import parse_scenario
 from tests.agents.plan_execution import PlanMonitor, expected_human_action, next_robot_action
@@ -163,10 +162,8 @@ def reference_expectimax(world: World, state, weights: CostWeights, p: float) ->
             edges = []
             for ah in world.feasible_indices(o1.state, Agent.HUMAN):
                 o2 = world.step(o1.state, Agent.HUMAN, ah)
-                t = cycle_terms(
-                    o1.duration, robot_active(world, ar, ah), o2.duration, ah != wait_h, hand_h in o2.state.where
-                )
-                edges.append((ah, weights.total(t), o2.state))
+                t = reference_terms(world, o1.duration, ar, o2.duration, ah, hand_h in o2.state.where)
+                edges.append((ah, reference_price(weights, t), o2.state))
                 if o1.reward == 0.0:
                     frontier.append(o2.state)
             trans[s].append((o1.reward == 1.0, edges))

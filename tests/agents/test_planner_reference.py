@@ -2,7 +2,9 @@
 
 Independent of the planner's domain, bound and symmetry reduction: every feasible
 robot action (``World.feasible_indices``), then every feasible human action the model
-allows, applied with ``World.step``, costed with the same cycle terms and weights.
+allows, applied with ``World.step``, and priced by :func:`reference_terms`, a second
+implementation of the cost model written from its definition (not the planner's
+``cycle_terms``/``CostWeights.total``), so a mistake in the planner's pricing shows.
 """
 
 from __future__ import annotations
@@ -14,8 +16,37 @@ import math
 import numpy as np
 
 from hg_marl.agents.planner import CostWeights, HumanModel
-from hg_marl.agents.planner.costs import cycle_terms, robot_active
 from hg_marl.core import Agent, State, World
+
+
+def reference_terms(
+    world: World, d_r: float, ar: int, d_h: float, ah: int, holding: bool
+) -> tuple[float, float, float, float, float]:
+    """One cycle's raw terms (time, human effort, effort balance, human idle, holding).
+
+    From the cost model's definition: ``dt = max(d_r, d_h)``; the human is active unless it
+    waits; the robot is active unless it waits, has no action in the cycle (``ar < 0``), or
+    gives and the human does not take in reply.
+    """
+    robot_kind = "none" if ar < 0 else world.action_names[Agent.ROBOT][ar].split("(")[0]
+    human_kind = world.action_names[Agent.HUMAN][ah].split("(")[0]
+    robot_idle = robot_kind in ("none", "wait") or (robot_kind == "give" and human_kind != "take")
+    e_r = 0.0 if robot_idle else d_r
+    e_h = 0.0 if human_kind == "wait" else d_h
+    dt = max(d_r, d_h)
+    return (dt, e_h, max(0.0, e_h - e_r), dt - e_h, dt if holding else 0.0)
+
+
+def reference_price(weights: CostWeights, terms: tuple[float, ...]) -> float:
+    """Weighted sum of one cycle's terms, field by field."""
+    time, effort, balance, idle, holding = terms
+    return (
+        weights.time * time
+        + weights.human_effort * effort
+        + weights.effort_balance * balance
+        + weights.human_idle * idle
+        + weights.human_holding * holding
+    )
 
 
 def reference_cost(
@@ -28,7 +59,6 @@ def reference_cost(
     limit: int = 2_000_000,
 ) -> float:
     """Minimum total cost to complete the task from ``root`` (inf if impossible)."""
-    wait_h = world.n_actions(Agent.HUMAN) - 1
     hand_h = world.hand[Agent.HUMAN]
 
     def human_moves(s1: State) -> list[int]:
@@ -44,8 +74,8 @@ def reference_cost(
         out = []
         for ah in human_moves(s1):
             o = world.step(s1, Agent.HUMAN, ah)
-            t = cycle_terms(d_r, robot_active(world, ar, ah), o.duration, ah != wait_h, hand_h in o.state.where)
-            out.append((g + weights.total(t), o.state))
+            t = reference_terms(world, d_r, ar, o.duration, ah, hand_h in o.state.where)
+            out.append((g + reference_price(weights, t), o.state))
         return out
 
     counter = itertools.count()
@@ -84,12 +114,11 @@ def execute(
     plan_cycles: tuple[tuple[int, int], ...],
     root: State,
     robot_part: tuple[float, int] = (0.0, -1),
-) -> tuple[float, list[tuple[float, bool, float, bool, bool]], float]:
-    """Run cycles with ``World.step``; return (clock, per-cycle raw inputs, reward of the last robot action).
+) -> tuple[float, list[tuple[float, ...]], float]:
+    """Run cycles with ``World.step``; return (clock, per-cycle reference terms, reward of the last robot action).
 
     Asserts every action succeeds.
     """
-    wait_h = world.n_actions(Agent.HUMAN) - 1
     hand_h = world.hand[Agent.HUMAN]
     state, clock, reward, parts = root, 0.0, 0.0, []
     for ar, ah in plan_cycles:
@@ -102,7 +131,7 @@ def execute(
         o = world.step(state, Agent.HUMAN, ah)
         assert o.ok, f"human {world.action_names[1][ah]} failed"
         state = o.state
-        parts.append((d_r, robot_active(world, r_act, ah), o.duration, ah != wait_h, hand_h in state.where))
+        parts.append(reference_terms(world, d_r, r_act, o.duration, ah, hand_h in state.where))
         clock += max(d_r, o.duration)
     return clock, parts, reward
 

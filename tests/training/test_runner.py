@@ -66,8 +66,11 @@ def test_charging_decision_time_costs_tasks() -> None:
     free = run(
         make_robot("planner"), make_human("cooperative"), RunConfig(duration=300.0, seed=0, charge_decision_time=False)
     )
-    assert len(free.log) >= len(charged.log)
-    assert free.log["decision_time"].sum() > 0
+    # the decisions' time (modelled: 50 ms + 0.5 ms/node per plan) is recorded either way, and
+    # only the charged run loses it: the free run fits more cycles and at least as many tasks
+    assert free.log["decision_time"].sum() > 1.0 and charged.log["decision_time"].sum() > 1.0
+    assert len(free.log) > len(charged.log)
+    assert free.summary["tasks_solved"] >= charged.summary["tasks_solved"]
 
 
 def test_sweep_resumes_without_rerunning(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

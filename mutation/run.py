@@ -1,0 +1,425 @@
+"""Mutation testing of the modules whose mistakes change results (cosmic-ray underneath).
+
+For each module of ``mutation/modules.toml`` this script
+
+1. copies the sources and tests into a scratch folder laid out as the installed package
+   (``agents/`` and ``training/`` appear as ``hg_marl/agents`` and ``hg_marl/training``),
+   so the mutated file is the one the tests import and the worktree is never touched;
+2. runs the module's tests once unmutated (they must pass; their time sets the timeout);
+3. lets cosmic-ray enumerate every mutant of the module, draws a seeded sample (or keeps
+   all with ``--full``), marks the rest skipped and executes the sample;
+4. prints the mutation score per module (killed / (run - justified equivalents)) and
+   every survivor with its diff, flagging those not in ``mutation/equivalent.toml``.
+
+Exit status: 0 when every module's score is at least its ``fail_under``; 1 otherwise;
+2 for a bad config or option (one line naming it).
+
+Usage::
+
+    python mutation/run.py                      # all modules, seeded sample (the CI stage)
+    python mutation/run.py --full               # every mutant (long: see mutation/README.md)
+    python mutation/run.py --changed main       # only modules whose file or tests differ from main
+    python mutation/run.py --modules vpi,runner --sample 40
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import shlex
+import shutil
+import subprocess
+import sys
+import tarfile
+import tempfile
+import time
+import tomllib
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import asdict, dataclass, field
+from io import BytesIO
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parent.parent
+CONFIG = ROOT / "mutation" / "modules.toml"
+EQUIVALENT = ROOT / "mutation" / "equivalent.toml"
+COPIED = ("hg_marl", "agents", "training", "tests", "pyproject.toml")
+"""What a scratch copy holds (sources, tests, and pytest's configuration)."""
+PACKAGE_DIRS = {"agents": "hg_marl/agents", "training": "hg_marl/training"}
+"""pyproject's package-dir: these folders install under hg_marl."""
+
+
+class ConfigError(Exception):
+    """Bad config or option: reported in one line, exit code 2."""
+
+
+@dataclass(frozen=True)
+class Module:
+    """One entry of modules.toml."""
+
+    key: str
+    path: str
+    tests: tuple[str, ...]
+    sample: int
+    fail_under: float
+
+
+@dataclass(frozen=True)
+class Equivalent:
+    """A survivor judged equivalent: same behaviour, so no test can kill it.
+
+    ``module`` is a key of modules.toml or ``*``; ``operator`` (a trailing ``*`` matches
+    any suffix), ``removed`` and ``added`` (the changed line before and after, stripped)
+    and ``pattern`` (a regular expression searched in the removed line) narrow the match.
+    """
+
+    module: str
+    why: str
+    operator: str = ""
+    removed: str = ""
+    added: str = ""
+    pattern: str = ""
+
+    def matches(self, module: str, operator: str, removed: str, added: str) -> bool:
+        """Whether a survivor is this equivalent mutant."""
+        op = self.operator
+        return (
+            self.module in ("*", module)
+            and (not op or op == operator or (op.endswith("*") and operator.startswith(op[:-1])))
+            and self.removed in ("", removed)
+            and self.added in ("", added)
+            and (not self.pattern or re.search(self.pattern, removed) is not None)
+        )
+
+
+@dataclass
+class Outcome:
+    """A module's result."""
+
+    key: str
+    path: str
+    total: int = 0
+    run: int = 0
+    killed: int = 0
+    timeouts: int = 0
+    incompetent: int = 0
+    equivalent: int = 0
+    survivors: list[dict[str, str | int]] = field(default_factory=list)
+    baseline_s: float = 0.0
+    wall_s: float = 0.0
+    error: str = ""
+
+    @property
+    def score(self) -> float:
+        """Killed over the non-equivalent mutants run (1.0 when there were none)."""
+        denominator = self.run - self.equivalent
+        return self.killed / denominator if denominator > 0 else 1.0
+
+
+def load_modules(path: Path = CONFIG) -> tuple[dict[str, Module], dict[str, float | int]]:
+    """Read modules.toml, naming any bad field."""
+    data = tomllib.loads(path.read_text())
+    defaults = data.get("defaults", {})
+    for name in ("sample", "seed", "fail_under", "target"):
+        if name not in defaults:
+            raise ConfigError(f"{path}: field 'defaults.{name}' is missing")
+    modules: dict[str, Module] = {}
+    for key, entry in data.get("modules", {}).items():
+        where = f"{path}: field 'modules.{key}"
+        if not isinstance(entry.get("path"), str):
+            raise ConfigError(f"{where}.path': expected a file path")
+        if not (ROOT / entry["path"]).is_file():
+            raise ConfigError(f"{where}.path': no file {entry['path']!r} (renamed? update this entry)")
+        tests = entry.get("tests")
+        if not isinstance(tests, list) or not tests:
+            raise ConfigError(f"{where}.tests': expected a non-empty list of test files")
+        present = tuple(t for t in tests if (ROOT / t.split("::")[0]).exists())  # files or pytest node ids
+        if not present:
+            raise ConfigError(f"{where}.tests': none of {tests} exists (renamed? update this entry)")
+        for missing in sorted(set(tests) - set(present)):
+            print(f"warning: {where}.tests': {missing!r} does not exist, ignored", file=sys.stderr)
+        modules[key] = Module(
+            key,
+            entry["path"],
+            present,
+            int(entry.get("sample", defaults["sample"])),
+            float(entry.get("fail_under", defaults["fail_under"])),
+        )
+    return modules, defaults
+
+
+def load_equivalents(path: Path = EQUIVALENT) -> list[Equivalent]:
+    """The justified equivalent mutants (matched by module and changed line, not line number)."""
+    data = tomllib.loads(path.read_text()) if path.exists() else {}
+    out = []
+    fields = ("module", "why", "operator", "removed", "added", "pattern")
+    for i, entry in enumerate(data.get("equivalent", [])):
+        for name in fields:
+            if not isinstance(entry.get(name, ""), str) or (name in ("module", "why") and not entry.get(name)):
+                raise ConfigError(f"{path}: field 'equivalent[{i}].{name}': expected a non-empty string")
+        unknown = set(entry) - set(fields)
+        if unknown:
+            raise ConfigError(f"{path}: field 'equivalent[{i}].{sorted(unknown)[0]}': unknown (known: {fields})")
+        out.append(Equivalent(**{k: str(entry.get(k, "")).strip() for k in fields}))
+    return out
+
+
+def changed_files(base: str) -> set[str]:
+    """Files that differ from ``base`` (committed on this branch or not yet committed)."""
+    cmd = ["git", "diff", "--name-only", f"{base}...HEAD"]
+    committed = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, check=False)
+    if committed.returncode != 0:
+        raise ConfigError(f"--changed {base}: git diff failed: {committed.stderr.strip()}")
+    cmd = ["git", "diff", "--name-only", "HEAD"]
+    local = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, check=False)
+    return set(committed.stdout.split()) | set(local.stdout.split())
+
+
+def scratch_copy(dest: Path) -> Path:
+    """Sources and tests laid out as installed, so ``import hg_marl.agents`` finds the copy."""
+    ignore = shutil.ignore_patterns("__pycache__", "*.pyc", ".hypothesis", ".pytest_cache")
+    for name in COPIED:
+        src = ROOT / name
+        if src.is_dir():
+            shutil.copytree(src, dest / name, ignore=ignore)
+        else:
+            shutil.copy2(src, dest / name)
+    for folder, installed in PACKAGE_DIRS.items():
+        (dest / installed).symlink_to(Path("..") / folder)
+    return dest
+
+
+def _env(scratch: Path) -> dict[str, str]:
+    env = dict(os.environ, PYTHONPATH=str(scratch), PYTHONDONTWRITEBYTECODE="1")
+    env.setdefault("CI", "1")  # hypothesis replays the same examples (conftest's "ci" profile)
+    return env
+
+
+def _test_command(tests: tuple[str, ...]) -> list[str]:
+    return [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider", "-m", "not slow", *tests]
+
+
+def _check_layout(scratch: Path, module: Module) -> None:
+    """The module the tests import must be the scratch copy (else every mutant survives)."""
+    dotted = module.path.removesuffix(".py").replace("/", ".")
+    for folder, installed in PACKAGE_DIRS.items():
+        if dotted.startswith(folder + "."):
+            dotted = installed.replace("/", ".") + dotted[len(folder) :]
+    code = f"import {dotted} as m, pathlib; print(pathlib.Path(m.__file__).resolve())"
+    proc = subprocess.run([sys.executable, "-c", code], cwd=scratch, env=_env(scratch), capture_output=True, text=True)
+    where = Path(proc.stdout.strip() or "?")
+    if proc.returncode != 0 or not where.is_relative_to(scratch.resolve()):
+        raise RuntimeError(f"{module.key}: {dotted} imports from {where}, not the scratch copy: {proc.stderr[-300:]}")
+
+
+def _diff_lines(diff: str) -> tuple[str, str]:
+    lines = [ln for ln in diff.splitlines() if ln[1:].strip()]  # changed blank lines carry no meaning
+    removed = [ln[1:].strip() for ln in lines if ln.startswith("-") and not ln.startswith("---")]
+    added = [ln[1:].strip() for ln in lines if ln.startswith("+") and not ln.startswith("+++")]
+    return " / ".join(removed), " / ".join(added)
+
+
+def tests_from(rev: str, dest: Path) -> None:
+    """Replace a scratch copy's tests by those of commit ``rev`` (to score an older suite)."""
+    archive = subprocess.run(["git", "archive", rev, "tests"], cwd=ROOT, capture_output=True, check=True).stdout
+    shutil.rmtree(dest / "tests")
+    with tarfile.open(fileobj=BytesIO(archive)) as tar:
+        tar.extractall(dest, filter="data")
+
+
+def run_module(
+    module: Module, sample: int | None, seed: int, equivalents: list[Equivalent], work: Path, rev: str | None = None
+) -> Outcome:
+    """Baseline, enumerate, sample, execute and score one module."""
+    from cosmic_ray.work_db import WorkDB, use_db
+    from cosmic_ray.work_item import TestOutcome, WorkerOutcome, WorkResult
+
+    out = Outcome(module.key, module.path)
+    start = time.perf_counter()
+    scratch = scratch_copy(work / module.key)
+    if rev:
+        tests_from(rev, scratch)
+        kept = tuple(t for t in module.tests if (scratch / t.split("::")[0]).exists())
+        module = Module(module.key, module.path, kept, 0, 0.0)
+    _check_layout(scratch, module)
+    env = _env(scratch)
+    t0 = time.perf_counter()
+    command = shlex.join(_test_command(module.tests))  # cosmic-ray runs shlex.split(command)
+    base = subprocess.run(shlex.split(command), cwd=scratch, env=env, capture_output=True, text=True)
+    out.baseline_s = time.perf_counter() - t0
+    if base.returncode != 0:
+        out.error = f"tests fail before mutation:\n{base.stdout[-2000:]}"
+        return out
+    timeout = max(30.0, 4.0 * out.baseline_s)
+    config = scratch / "cosmic-ray.toml"
+    config.write_text(
+        "[cosmic-ray]\n"
+        f"module-path = {json.dumps(module.path)}\n"
+        f"timeout = {timeout:.0f}\n"
+        "excluded-modules = []\n"
+        f"test-command = {json.dumps(command)}\n"
+        '[cosmic-ray.distributor]\nname = "local"\n'
+    )
+    session = scratch / "session.sqlite"
+    cosmic = [sys.executable, "-m", "cosmic_ray.cli"]
+    subprocess.run([*cosmic, "init", str(config), str(session)], cwd=scratch, env=env, check=True)
+    with use_db(str(session), WorkDB.Mode.open) as db:
+        items = sorted(db.work_items, key=lambda w: [(m.start_pos, m.operator_name, m.occurrence) for m in w.mutations])
+        out.total = len(items)
+        keep = len(items) if sample is None else min(sample, len(items))
+        chosen = set(np.random.default_rng(seed).choice(len(items), size=keep, replace=False).tolist())
+        skipped = [w.job_id for i, w in enumerate(items) if i not in chosen]
+        if skipped:
+            db.set_multiple_results(skipped, WorkResult(output="not in sample", worker_outcome=WorkerOutcome.SKIPPED))
+    subprocess.run([*cosmic, "exec", str(config), str(session)], cwd=scratch, env=env, check=True)
+    with use_db(str(session), WorkDB.Mode.open) as db:
+        for item, result in db.completed_work_items:
+            if result.worker_outcome == WorkerOutcome.SKIPPED:
+                continue
+            out.run += 1
+            if result.output == "timeout":  # cosmic-ray counts a timed-out test run as killed
+                out.timeouts += 1
+            if result.test_outcome == TestOutcome.INCOMPETENT:  # the mutant cannot even be imported
+                out.incompetent += 1
+            if result.worker_outcome != WorkerOutcome.NORMAL or result.is_killed:
+                out.killed += 1
+                continue
+            removed, added = _diff_lines(result.diff or "")
+            mutation = item.mutations[0]
+            op = mutation.operator_name
+            why = next((e.why for e in equivalents if e.matches(module.key, op, removed, added)), "")
+            out.equivalent += bool(why)
+            out.survivors.append(
+                {
+                    "line": mutation.start_pos[0],
+                    "operator": op,
+                    "removed": removed,
+                    "added": added,
+                    "equivalent": why,
+                }
+            )
+    out.survivors.sort(key=lambda s: int(s["line"]))
+    out.wall_s = time.perf_counter() - start
+    return out
+
+
+def report(outcomes: list[Outcome], target: float) -> None:
+    """The score table, then every survivor (justified equivalents marked)."""
+    head = f"{'module':<18} {'file':<32} {'mutants':>7} {'run':>4} {'killed':>6} {'t/o':>4} {'inc':>4} {'equiv':>5}"
+    print(f"\n{head} {'score':>6}  time")
+    for o in outcomes:
+        if o.error:
+            print(f"{o.key:<18} {o.path:<32} ERROR: {o.error.splitlines()[0]}")
+            continue
+        flag = "" if o.score >= target else f"  (< target {target:.0%})"
+        print(
+            f"{o.key:<18} {o.path:<32} {o.total:>7} {o.run:>4} {o.killed:>6} {o.timeouts:>4} {o.incompetent:>4} "
+            f"{o.equivalent:>5} "
+            f"{o.score:>6.1%}  {o.wall_s:5.0f}s{flag}"
+        )
+    for o in outcomes:
+        for s in o.survivors:
+            tag = f"equivalent: {s['equivalent']}" if s["equivalent"] else "SURVIVED"
+            print(f"\n{o.path}:{s['line']} [{s['operator']}] {tag}\n  - {s['removed']}\n  + {s['added']}")
+        if o.error:
+            print(f"\n{o.key}: {o.error}")
+
+
+def rescore(path: Path, equivalents: list[Equivalent], target: float) -> int:
+    """Report a saved run again with the current list of equivalent mutants."""
+    outcomes = []
+    for data in json.loads(path.read_text()):
+        data.pop("score", None)
+        o = Outcome(**data)
+        for s in o.survivors:
+            s["removed"], s["added"] = (str(s[k]).removesuffix(" / ").strip() for k in ("removed", "added"))
+            key = (o.key, str(s["operator"]), str(s["removed"]), str(s["added"]))
+            s["equivalent"] = next((e.why for e in equivalents if e.matches(*key)), "")
+        o.equivalent = sum(bool(s["equivalent"]) for s in o.survivors)
+        outcomes.append(o)
+    report(outcomes, target)
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Parse options, run the modules (``--jobs`` at a time) and report."""
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--modules", help="comma-separated keys of modules.toml (default: all)")
+    parser.add_argument("--changed", metavar="BASE", help="only modules whose file or tests differ from BASE")
+    parser.add_argument("--sample", type=int, help="mutants per module (default: modules.toml)")
+    parser.add_argument("--full", action="store_true", help="every mutant of every selected module")
+    parser.add_argument("--seed", type=int, help="seed of the sample (default: modules.toml)")
+    parser.add_argument("--jobs", type=int, default=2, help="modules mutated at once (default 2)")
+    parser.add_argument("--json", type=Path, help="also write the results here")
+    parser.add_argument("--keep", action="store_true", help="keep the scratch copies (printed)")
+    parser.add_argument("--tests-from", metavar="REV", help="score the tests of commit REV (e.g. to compare)")
+    parser.add_argument("--list", action="store_true", help="print the selected modules and their tests, run nothing")
+    parser.add_argument("--rescore", type=Path, metavar="JSON", help="re-apply equivalent.toml to a --json file")
+    args = parser.parse_args(argv)
+    try:
+        modules, defaults = load_modules()
+        equivalents = load_equivalents()
+        selected = list(modules.values())
+        if args.modules:
+            names = [n.strip() for n in args.modules.split(",") if n.strip()]
+            unknown = [n for n in names if n not in modules]
+            if unknown:
+                raise ConfigError(f"--modules: unknown {unknown} (known: {', '.join(modules)})")
+            selected = [modules[n] for n in names]
+        if args.changed:
+            touched = changed_files(args.changed)
+            selected = [m for m in selected if m.path in touched or any(t in touched for t in m.tests)]
+        if args.sample is not None and args.sample < 1:
+            raise ConfigError(f"--sample: expected a positive number, got {args.sample}")
+        if args.jobs < 1:
+            raise ConfigError(f"--jobs: expected a positive number, got {args.jobs}")
+    except (ConfigError, tomllib.TOMLDecodeError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    if args.rescore:
+        return rescore(args.rescore, equivalents, float(defaults["target"]))
+    if args.list:
+        for m in selected:
+            print(f"{m.key:<18} {m.path:<32} sample {m.sample:<3} tests: {' '.join(m.tests)}")
+        return 0
+    if not selected:
+        print("no module selected (nothing to mutate)")
+        return 0
+    seed = int(args.seed if args.seed is not None else defaults["seed"])
+    work = Path(tempfile.mkdtemp(prefix="hg-marl-mutation-"))
+    start = time.perf_counter()
+    try:
+        with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            futures = [
+                pool.submit(
+                    run_module,
+                    m,
+                    None if args.full else (args.sample or m.sample),
+                    seed,
+                    equivalents,
+                    work,
+                    args.tests_from,
+                )
+                for m in selected
+            ]
+            outcomes = [f.result() for f in futures]
+    finally:
+        if args.keep:
+            print(f"scratch copies kept in {work}")
+        else:
+            shutil.rmtree(work, ignore_errors=True)
+    report(outcomes, float(defaults["target"]))
+    print(f"\nwall time {time.perf_counter() - start:.0f}s, seed {seed}, {'all mutants' if args.full else 'sample'}")
+    if args.json:
+        args.json.write_text(json.dumps([{**asdict(o), "score": o.score} for o in outcomes], indent=1))
+    failed = [o for o in outcomes if o.error or o.score < modules[o.key].fail_under]
+    for o in failed:
+        print(f"FAIL {o.key}: {o.error.splitlines()[0] if o.error else f'score {o.score:.1%} < fail_under'}")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,164 @@
+"""Plan costs and durations worked by hand for small fixed layouts.
+
+Each layout is a scenario file written here with its durations, so every number below
+follows from the file and the cost model's definition (module docstring of
+``agents/planner/costs.py``), not from the planner's own cost functions:
+
+    per cycle  dt = max(d_robot, d_human); e_r, e_h = active (non-wait) durations
+    time += dt; human_effort += e_h; effort_balance += max(0, e_h - e_r);
+    human_idle += dt - e_h; human_holding += dt if the human holds an object after it
+    cost = 1.0 time + 0.2 effort + 0.1 balance + 0.05 idle + 0.1 holding   (default weights)
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from hg_marl.agents.planner import Planner
+from hg_marl.agents.planner.costs import CostWeights, PlannerConfig
+from hg_marl.core import Agent, State, World
+
+DURATIONS = """
+[durations]
+pick = 2.0
+throw = 2.0
+give = 1.0
+take = 1.5
+place = 2.0
+goto = 3.0
+wait = 1.0
+failed = 0.2
+"""
+
+ONE_TAPE = """
+name = "one_tape"
+description = "one tape the robot fetches alone; the human reaches nothing"
+robot_locations = ["bin_side", "table"]
+handover_locations = ["table"]
+robot_start = ["bin_side"]
+[[objects]]
+name = "tape"
+[[bins]]
+name = "bin"
+robot_reach = ["bin_side"]
+human_reach = false
+[[spots]]
+name = "mat"
+robot_reach = ["table"]
+[[layout]]
+count = 1
+spots = ["mat"]
+"""
+
+HANDOVER = """
+name = "handover"
+description = "one tape only the human reaches; the bin only the robot reaches"
+robot_locations = ["bin_side", "human_side"]
+handover_locations = ["human_side"]
+robot_start = ["bin_side"]
+[[objects]]
+name = "tape"
+[[bins]]
+name = "bin"
+robot_reach = ["bin_side"]
+human_reach = false
+[[spots]]
+name = "human_mat"
+human_reach = true
+[[layout]]
+count = 1
+spots = ["human_mat"]
+"""
+
+
+def world(tmp_path: Path, text: str) -> World:
+    path = tmp_path / "layout.toml"
+    path.write_text(text + DURATIONS)
+    return World(str(path))
+
+
+def joint(w: World, plan_cycles: tuple[tuple[int, int], ...]) -> list[tuple[str, str]]:
+    return [(w.action_names[Agent.ROBOT][r], w.action_names[Agent.HUMAN][h]) for r, h in plan_cycles]
+
+
+def test_one_tape_robot_alone(tmp_path: Path) -> None:
+    w = world(tmp_path, ONE_TAPE)
+    result = Planner(w).plan(State((0,), 0))  # tape on the mat, robot at the bin
+    assert result.success and result.plan is not None
+    # The human can only wait (1 s), so each cycle lasts the robot's action:
+    #   goto(tape) 3 | pick 2 | goto(bin) 3 | throw 2 | completing wait 1  -> time 11 s
+    assert joint(w, result.plan.cycles) == [
+        ("goto(tape)", "wait"),
+        ("pick(tape)", "wait"),
+        ("goto(bin)", "wait"),
+        ("throw(tape)", "wait"),
+        ("wait", "wait"),
+    ]
+    assert result.plan.duration == pytest.approx(11.0)
+    # effort 0, balance 0, idle = 11 (the human waits throughout), holding 0
+    # cost = 11 + 0.05 * 11 = 11.55
+    assert result.breakdown == pytest.approx(
+        {"time": 11.0, "human_effort": 0.0, "effort_balance": 0.0, "human_idle": 0.55, "human_holding": 0.0}
+    )
+    assert result.cost == pytest.approx(11.55)
+
+
+def test_handover_from_the_human(tmp_path: Path) -> None:
+    w = world(tmp_path, HANDOVER)
+    result = Planner(w).plan(State((0,), 0))
+    assert result.success and result.plan is not None
+    # cycle  robot           human       dt   e_h  balance  idle  holding(after)
+    #   1    goto(human) 3   pick 2      3    2    0        1     3  (holds the tape)
+    #   2    wait 1          give 1      1    1    1        0     1  (still in hand, offered)
+    #   3    take 1.5        wait 1      1.5  0    0        1.5   0
+    #   4    goto(bin) 3     wait 1      3    0    0        3     0
+    #   5    throw 2         wait 1      2    0    0        2     0
+    #   6    wait 1          wait 1      1    0    0        1     0
+    # totals: time 11.5, effort 3, balance 1, idle 8.5, holding 4
+    # cost = 11.5 + 0.2*3 + 0.1*1 + 0.05*8.5 + 0.1*4 = 11.5 + 0.6 + 0.1 + 0.425 + 0.4 = 13.025
+    assert joint(w, result.plan.cycles) == [
+        ("goto(human)", "pick(tape)"),
+        ("wait", "give(tape)"),
+        ("take(tape)", "wait"),
+        ("goto(bin)", "wait"),
+        ("throw(tape)", "wait"),
+        ("wait", "wait"),
+    ]
+    assert result.plan.duration == pytest.approx(11.5)
+    assert result.breakdown == pytest.approx(
+        {"time": 11.5, "human_effort": 0.6, "effort_balance": 0.1, "human_idle": 0.425, "human_holding": 0.4}
+    )
+    assert result.cost == pytest.approx(13.025)
+
+
+def test_handover_time_only_weights(tmp_path: Path) -> None:
+    w = world(tmp_path, HANDOVER)
+    result = Planner(w, PlannerConfig(weights=CostWeights.time_only())).plan(State((0,), 0))
+    # no social term: the cost is the 11.5 s of the fastest plan above
+    assert result.cost == pytest.approx(11.5) and result.plan is not None
+    assert result.plan.duration == pytest.approx(11.5)
+
+
+def test_bound_is_admissible_and_not_trivial(tmp_path: Path) -> None:
+    # a = w_time + w_idle = 1.05. Whatever the plan, the robot must at least get the tape into
+    # its hand (take 1.5 s or pick 2 s), throw it (2 s) and finish with a wait (1 s):
+    # bound >= 1.05 * 4.5 = 4.725; and it may not exceed the optimal costs worked above.
+    for text, optimal in ((ONE_TAPE, 11.55), (HANDOVER, 13.025)):
+        planner = Planner(world(tmp_path, text))
+        bound = planner.space.bound(State((0,), 0))
+        assert 4.725 <= bound <= optimal + 1e-9
+
+
+def test_handover_when_idling_costs_more_than_working(tmp_path: Path) -> None:
+    # idle weight 0.5 above the effort weight 0.1 (the bound's other branch, b < 0); the same
+    # plan stays optimal: time 11.5, effort 3, idle 8.5 -> 11.5 + 0.1*3 + 0.5*8.5 = 16.05
+    weights = CostWeights(time=1.0, human_effort=0.1, effort_balance=0.0, human_idle=0.5, human_holding=0.0)
+    planner = Planner(world(tmp_path, HANDOVER), PlannerConfig(weights=weights))
+    result = planner.plan(State((0,), 0))
+    assert result.cost == pytest.approx(16.05)
+    assert result.breakdown == pytest.approx(
+        {"time": 11.5, "human_effort": 0.3, "effort_balance": 0.0, "human_idle": 4.25, "human_holding": 0.0}
+    )
+    assert planner.space.bound(State((0,), 0)) <= 16.05 + 1e-9

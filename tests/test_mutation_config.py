@@ -1,0 +1,51 @@
+"""The mutation stage's configuration stays valid as modules move (checked by ``make test``)."""
+
+from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+@pytest.fixture(scope="module")
+def mutation():  # type: ignore[no-untyped-def]
+    spec = importlib.util.spec_from_file_location("mutation_run", ROOT / "mutation" / "run.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["mutation_run"] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_every_module_and_test_file_exists(mutation) -> None:  # type: ignore[no-untyped-def]
+    modules, defaults = mutation.load_modules()
+    assert 0.0 <= defaults["target"] <= 1.0 and defaults["sample"] >= 1
+    for m in modules.values():
+        assert (ROOT / m.path).is_file(), f"mutation/modules.toml: modules.{m.key}.path"
+        for t in m.tests:
+            assert (ROOT / t.split("::")[0]).exists(), f"mutation/modules.toml: modules.{m.key}.tests: {t}"
+
+
+def test_a_renamed_module_is_named_in_one_line(mutation, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    config = tmp_path / "modules.toml"
+    config.write_text(
+        '[defaults]\nsample = 2\nseed = 0\nfail_under = 0.0\ntarget = 0.9\n[modules.gone]\npath = "agents/gone.py"\n'
+        'tests = ["tests/agents/test_meta.py"]\n'
+    )
+    with pytest.raises(mutation.ConfigError, match=r"modules\.gone\.path'.*renamed\? update this entry"):
+        mutation.load_modules(config)
+
+
+def test_equivalents_parse_and_match_by_operator_or_line(mutation) -> None:  # type: ignore[no-untyped-def]
+    equivalents = mutation.load_equivalents()
+    assert equivalents and all(e.why for e in equivalents)
+    by_operator = mutation.Equivalent("*", "why", operator="core/ReplaceComparisonOperator_Is_Eq")
+    assert by_operator.matches("vpi", "core/ReplaceComparisonOperator_Is_Eq", "a is b", "a == b")
+    assert not by_operator.matches("vpi", "core/NumberReplacer", "x = 1", "x = 2")
+    by_line = mutation.Equivalent("world", "why", removed="if a > b:")
+    assert by_line.matches("world", "any", "if a > b:", "if a >= b:")
+    assert not by_line.matches("oracle", "any", "if a > b:", "if a >= b:")

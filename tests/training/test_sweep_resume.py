@@ -1,0 +1,61 @@
+"""An interrupted sweep, run again, gives what an uninterrupted sweep gives, in job order.
+
+Written against the sweep's public behaviour (jobs in, one summary per job out, finished
+jobs kept on disk) so that it holds for any results store that keeps that promise.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from hg_marl.training import backends
+from hg_marl.training.sweep import Job, load_log, run_sweep
+
+JOBS = [Job(robot="random", seed=s, duration=40.0, human="random", label="mix") for s in range(3)]
+
+
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, list[dict]]:
+    """An uninterrupted sweep."""
+    out = tmp_path_factory.mktemp("uninterrupted")
+    return out, run_sweep(JOBS, out)
+
+
+def test_rerun_after_a_crash_equals_an_uninterrupted_sweep(
+    tmp_path: Path, reference: tuple[Path, list[dict]], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    ref_out, ref = reference
+    real = backends.execute
+
+    def crash_on_second(job: Job):  # type: ignore[no-untyped-def]
+        if job.seed == 1:
+            raise KeyboardInterrupt("interrupted")
+        return real(job)
+
+    monkeypatch.setattr(backends, "execute", crash_on_second)
+    with pytest.raises(KeyboardInterrupt):
+        run_sweep(JOBS, tmp_path)
+    monkeypatch.setattr(backends, "execute", real)
+    again = run_sweep(JOBS, tmp_path)
+    assert [s["job"]["seed"] for s in again] == [0, 1, 2]
+    assert again == ref
+    for job in JOBS:
+        pd.testing.assert_frame_equal(
+            load_log(job, tmp_path).drop(columns="planning_time"), load_log(job, ref_out).drop(columns="planning_time")
+        )
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_results_keep_job_order_when_later_jobs_finished_first(
+    tmp_path: Path, reference: tuple[Path, list[dict]], workers: int
+) -> None:
+    _, ref = reference
+    run_sweep(JOBS[2:], tmp_path)  # the last job finished in an earlier session
+    done: list[int] = []
+    again = run_sweep(JOBS, tmp_path, workers=workers, on_done=lambda job, _: done.append(job.seed))
+    assert again == ref
+    assert [s["job"]["seed"] for s in again] == [0, 1, 2]
+    assert sorted(done) == [0, 1, 2]
