@@ -145,7 +145,9 @@ def test_play_a_whole_task_and_replay_it(browser: Any, game: Any, by: str) -> No
 
 
 def test_infeasible_request_is_refused_and_hybrid_shows_its_weights(browser: Any, game: Any) -> None:
-    session, page = game(browser, robot="hybrid:criterion=entropy_and_cost")
+    # min_visits 0: the criterion weighs the experts from the first decision (by default an
+    # unvisited state goes to the planner before any weights are computed: "habit_untrained").
+    session, page = game(browser, robot='hybrid:criterion=entropy_and_cost,criterion_params={"min_visits":0}')
     assert page.text_content("#robot-expert") in ("planner", "habit")
     weights = page.eval_on_selector_all("#weights td:first-child", "els => els.map(e => e.textContent)")
     assert "h_habit" in weights and "h_planner" in weights
