@@ -6,7 +6,6 @@ import io
 import json
 from itertools import count
 from pathlib import Path
-from typing import ClassVar
 
 import pytest
 from rich.console import Console
@@ -97,33 +96,26 @@ def test_bad_robot_specs_name_the_problem() -> None:
         PlaySession("planner", seed=-1)
 
 
-def test_robot_move_reads_dict_and_dataclass_records(paper) -> None:
-    from dataclasses import dataclass, field
-
-    @dataclass
-    class Record:
-        expert: str = "habit"
-        decision_time: float = 0.25
-        stats: dict = field(default_factory=lambda: {"vpi": 0.5, "bad": float("nan")})
+def test_robot_move_reads_the_typed_decision_record(paper) -> None:
+    from hg_marl.policy import Decision
 
     class Typed:
-        last_decision = Record()
-
-    class Plain:
-        last_decision: ClassVar[dict] = {
-            "expert": "planner",
-            "meta_h_habit": 0.3,
-            "weight_amplitude": 2.0,
-            "reason": "x",
-        }
+        last_decision = Decision(
+            expert="habit",
+            action=17,
+            decision_time=0.25,
+            weight_amplitude=2.0,
+            stats=(("vpi", 0.5), ("bad", float("nan"))),
+        )
 
     class Nothing:
         name = "random"
 
-    typed = robot_move(Typed(), paper, 17, False)
-    assert (typed.expert, typed.decision_time, dict(typed.weights)) == ("habit", 0.25, {"vpi": 0.5})
-    plain = robot_move(Plain(), paper, 17, True)
-    assert dict(plain.weights) == {"h_habit": 0.3, "weight_amplitude": 2.0} and plain.failed
+    typed = robot_move(Typed(), paper, 17, True)
+    # the non-finite stat is dropped; the weight amplitude is shown beside the criterion's numbers
+    assert (typed.expert, typed.decision_time, typed.failed) == ("habit", 0.25, True)
+    assert dict(typed.weights) == {"vpi": 0.5, "weight_amplitude": 2.0}
+    # an actor without a record is shown under its name
     assert robot_move(Nothing(), paper, 17, False).expert == "random"
 
 

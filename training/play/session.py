@@ -35,7 +35,7 @@ from hg_marl.agents.robots.registry import ROBOTS
 from hg_marl.core import Agent, State, World
 from hg_marl.core.errors import ConfigError, HumanError, RobotError
 from hg_marl.core.spec import bind, parse_spec
-from hg_marl.policy import Actor, Turn
+from hg_marl.policy import Actor, Turn, decision_of
 
 SHORTCUTS = "123456789abcdefghijklmnopqrstuvxyz"
 """Keyboard shortcuts of the feasible actions, in order (``w`` is kept for ``wait``)."""
@@ -75,32 +75,22 @@ class RobotMove:
 
 
 def robot_move(robot: Actor, world: World, action: int, failed: bool) -> RobotMove:
-    """The robot's last decision as a :class:`RobotMove`, read defensively.
+    """The robot's last decision as a :class:`RobotMove`, read through the typed record.
 
-    The one accessor of the robot's decision record: it accepts the record as a dict or
-    as a dataclass (``last_decision``), and missing fields default, so any robot (or a
-    future typed record) can be shown.
+    :func:`hg_marl.policy.decision_of` gives every actor a :class:`~hg_marl.policy.Decision`
+    (one naming its class if it keeps none), so any robot can be shown; the MetaController's
+    numbers are the record's ``stats``, plus the habit's weight amplitude.
     """
-    record: Any = getattr(robot, "last_decision", None) or {}
-    if dataclasses.is_dataclass(record) and not isinstance(record, type):
-        record = dataclasses.asdict(record)
-    elif not isinstance(record, Mapping):
-        record = {k: getattr(record, k) for k in dir(record) if not k.startswith("_")}
+    record = decision_of(robot)
     weights: dict[str, float] = {}
-    stats = record.get("stats")
-    items = list(stats.items()) if isinstance(stats, Mapping) else []
-    items += [(k.removeprefix("meta_"), v) for k, v in record.items() if k.startswith("meta_")]
-    if "weight_amplitude" in record:
-        items.append(("weight_amplitude", record["weight_amplitude"]))
-    for key, value in items:
+    for key, value in (*record.stats, ("weight_amplitude", record.weight_amplitude)):
         if isinstance(value, int | float) and not isinstance(value, bool) and np.isfinite(value):
             weights[str(key)] = float(value)
-    expert = record.get("expert", getattr(robot, "name", type(robot).__name__))
     return RobotMove(
         action=action,
         name=world.action_names[Agent.ROBOT][action],
-        expert=str(getattr(expert, "value", expert)),
-        decision_time=float(record.get("decision_time", 0.0) or 0.0),
+        expert=str(record.expert),
+        decision_time=float(record.decision_time),
         failed=failed,
         weights=weights,
     )
