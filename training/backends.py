@@ -151,7 +151,15 @@ class RayBackend:
         self._ray = ray
         if not ray.is_initialized():
             if address is None:
-                ray.init(num_cpus=workers, include_dashboard=False, log_to_driver=False, configure_logging=False)
+                # "local" always starts a private instance: with no address Ray would join
+                # whatever cluster /tmp/ray/ray_current_cluster names (a stale or foreign one).
+                ray.init(
+                    address="local",
+                    num_cpus=workers,
+                    include_dashboard=False,
+                    log_to_driver=False,
+                    configure_logging=False,
+                )
             else:
                 ray.init(address=address, log_to_driver=False, configure_logging=False)
         cpus = int(ray.cluster_resources().get("CPU", 1))
