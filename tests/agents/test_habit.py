@@ -88,6 +88,15 @@ def test_sample_degenerate_distribution() -> None:
     assert {sample(np.array([0.0, 0.0, 1.0]), rng) for _ in range(50)} == {2}
 
 
+def test_sample_scales_the_draw_by_the_total_so_weights_need_not_sum_to_one() -> None:
+    # weights 1 and 3 (total 4): index 1 is drawn with probability 3/4, index 0 with 1/4;
+    # 4,000 draws: standard deviation of the share sqrt(0.75 * 0.25 / 4000) = 0.0068
+    rng = np.random.default_rng(7)
+    draws = np.array([sample(np.array([1.0, 3.0]), rng) for _ in range(4000)])
+    assert set(draws.tolist()) == {0, 1}
+    assert (draws == 1).mean() == pytest.approx(0.75, abs=0.03)
+
+
 def test_weight_amplitude_is_sum_of_abs_weights() -> None:
     q = QLearner(N_FACTS, N_ACTIONS)
     assert q.weight_amplitude == 0.0

@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 import pytest
 
-from hg_marl.agents.meta import Expert, HabitView, MetaController, PlanProposal
+from hg_marl.agents.meta import Criterion, Expert, HabitView, MetaController, PlanProposal
 from hg_marl.agents.meta.vpi import vpi
 
 N = 4
@@ -246,3 +246,21 @@ def test_controller_record_and_reasons() -> None:
     assert (d.expert, d.action, d.reason, d.plan) == (Expert.HABIT, 0, "planner_failed", failed)
     d = mc.decide(view([0.7, 0.1, 0.1, 0.1]), None)
     assert (d.expert, d.action, d.reason, d.plan) == (Expert.HABIT, 0, "habit_only", None)
+
+
+class _AlwaysHabit(Criterion):
+    """Consults the planner every decision, then always picks the habit."""
+
+    name = "always_habit"
+
+    def choose(self, habit: HabitView, plan: PlanProposal) -> Expert:
+        return Expert.HABIT
+
+
+def test_criterion_choosing_the_habit_over_a_successful_plan_executes_the_habits_action() -> None:
+    # the habit's greedy action is 0, the plan's is 2: the criterion's pick decides which runs
+    mc = MetaController(_AlwaysHabit())
+    mc.reset(np.random.default_rng(0))
+    d = mc.decide(view([0.7, 0.1, 0.1, 0.1]), proposal(2))
+    assert (d.expert, d.action, d.reason) == (Expert.HABIT, 0, "criterion")
+    assert d.plan is not None and d.plan.action == 2

@@ -212,3 +212,41 @@ def test_oracle_robot_waits_outside_its_model(cooperative_oracle) -> None:  # ty
     outside = State((7, 7, 7), 3)  # three tapes in the robot's one hand: no such state in the model
     action = robot.act(SimpleNamespace(state=outside))  # type: ignore[arg-type]
     assert world.action_names[Agent.ROBOT][action] == "wait" and action == 17
+
+
+# One tape on the robot's mat; the human reaches nothing, so its only move is wait.
+ALONE = parse_scenario(
+    {
+        "name": "alone",
+        "robot_locations": ["bin_side", "table"],
+        "handover_locations": ["table"],
+        "robot_start": ["bin_side"],
+        "objects": [{"name": "tape"}],
+        "bins": [{"name": "bin", "robot_reach": ["bin_side"]}],
+        "spots": [{"name": "mat", "robot_reach": ["table"]}],
+        "layout": [{"count": 1, "spots": ["mat"]}],
+    }
+)
+
+
+@pytest.mark.parametrize(("failed_actions", "transitions"), [(False, 14), (True, 20)])
+def test_model_size_counts_every_option_including_a_failed_one_after_the_completing_wait(
+    failed_actions: bool, transitions: int
+) -> None:
+    # Robot actions: pick, throw, give, take, goto(tape), goto(bin), goto(human), wait.
+    # The six robot-turn states (tape where, robot where) and their feasible actions:
+    #   mat,  bin_side: goto(tape), goto(human), wait      3
+    #   mat,  table:    pick, goto(bin), wait              3
+    #   hand, table:    give, goto(bin), wait              3  (the offer lapses on the human's wait)
+    #   hand, bin_side: throw, goto(human), wait           3
+    #   bin,  bin_side: goto(human), wait                  2
+    #   bin,  table:    goto(bin), wait                    2
+    # 16 options; the 2 waits on a clean table complete the task (terminal, no reply);
+    # every other option has one reply (the human's wait): 14 transitions. With failed
+    # actions each state also has one infeasible representative (every state has one),
+    # listed after its feasible actions, so also after the completing wait: 6 more, 20.
+    # The best cycle: goto 3 + pick 2 + goto 3 + throw 2 + completing wait 1 = 11 s.
+    result = oracle_rate(World(ALONE), "no_handover", failed_actions=failed_actions)
+    assert (result.n_states, result.n_transitions, result.n_layouts) == (6, transitions, 1)
+    assert result.seconds_per_task == pytest.approx(11.0)
+    assert result.rate_per_hour == pytest.approx(3600.0 / 11.0)

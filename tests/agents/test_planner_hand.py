@@ -18,7 +18,8 @@ import pytest
 
 from hg_marl.agents.planner import Planner
 from hg_marl.agents.planner.costs import CostWeights, PlannerConfig
-from hg_marl.core import Agent, State, World
+from hg_marl.agents.planner.space import Relabel
+from hg_marl.core import Action, Agent, Kind, State, World
 
 DURATIONS = """
 [durations]
@@ -162,3 +163,23 @@ def test_handover_when_idling_costs_more_than_working(tmp_path: Path) -> None:
         {"time": 11.5, "human_effort": 0.3, "effort_balance": 0.0, "human_idle": 4.25, "human_holding": 0.0}
     )
     assert planner.space.bound(State((0,), 0)) <= 16.05 + 1e-9
+
+
+def test_relabel_groups_only_objects_that_share_their_bins(tmp_path: Path) -> None:
+    # paper2015: the three tapes all go to the one trashbin, so they form one class;
+    # one_tape: a lone object has no partner, so nothing is relabelled (states already canonical)
+    paper = Relabel(World("paper2015"))
+    assert paper.classes == ((0, 1, 2),) and paper.active
+    lone = Relabel(world(tmp_path, ONE_TAPE))
+    assert lone.classes == () and not lone.active
+
+
+def test_relabel_maps_actions_back_to_the_original_objects() -> None:
+    # paper2015 robot actions 0, 1, 2 are pick(tape1), pick(tape2), pick(tape3).
+    # orig = (2, 0, 1): canonical object 0 stands for tape3, 1 for tape1, 2 for tape2.
+    w = World("paper2015")
+    relabel = Relabel(w)
+    orig = (2, 0, 1)
+    pick = [w.index(Agent.ROBOT, Action(Kind.PICK, o)) for o in range(3)]
+    assert [relabel.action_back(Agent.ROBOT, pick[o], orig) for o in range(3)] == [pick[2], pick[0], pick[1]]
+    assert relabel.action_back(Agent.ROBOT, -1, orig) == -1  # "no action" stays "no action"

@@ -384,3 +384,12 @@ def test_failed_take_lets_the_offer_lapse(paper: World) -> None:
     assert not out.ok
     assert (out.state.offer_by, out.state.offer_obj) == (-1, -1) and out.state.where == state.where
     assert [e.kind for e in out.events] == ["failed", "let_lapse"]
+
+
+def test_throw_reports_a_threw_event_naming_the_bin(paper: World) -> None:
+    # the robot at the bin side holds tape1 and throws it: one event, "robot threw tape1 into trashbin"
+    state = s((RHAND, CENTRE, HMAT1), BIN_SIDE)
+    out = paper.step(state, R, paper.index(R, Action(Kind.THROW, 0)))
+    assert out.ok and out.state.where == (BIN, CENTRE, HMAT1)
+    assert [tuple(e) for e in out.events] == [("threw", "robot", "tape1", "trashbin")]
+    assert out.reward == 0.0

@@ -17,7 +17,7 @@ from hg_marl.policy import Decision, Turn
 from hg_marl.training import backends, sweep
 from hg_marl.training.cli import app
 from hg_marl.training.io import atomic_write
-from hg_marl.training.runner import COLUMNS, RunConfig, run
+from hg_marl.training.runner import COLUMNS, RunConfig, run, summarise
 from hg_marl.training.sweep import Job, run_sweep
 
 
@@ -132,3 +132,60 @@ def test_cli_run_rejects_unknown_names_clearly(args: list[str], message: str) ->
     assert result.exit_code == 2
     assert message in result.output
     assert "Traceback" not in result.output
+
+
+def test_summary_reads_the_last_row_for_time_and_weight_amplitude() -> None:
+    # three decisions by hand: the summary's time and weight amplitude are the LAST row's,
+    # counts are sums, the planner's share is 2 of 3, human_as_expected the mean of the known ones
+    log = pd.DataFrame(
+        {
+            "reward": [0.0, 1.0, 1.0],
+            "failed": [False, True, False],
+            "time": [2.0, 5.0, 9.0],
+            "expert": ["planner", "habit", "planner"],
+            "weight_amplitude": [0.5, 0.25, 0.125],
+            "human_as_expected": [True, None, False],
+        }
+    )
+    summary = summarise(log, 100.0)
+    assert summary["tasks_solved"] == 2 and summary["actions"] == 3 and summary["failed_actions"] == 1
+    assert summary["simulated_time"] == 9.0
+    assert summary["final_weight_amplitude"] == 0.125
+    assert summary["planner_share"] == pytest.approx(2 / 3)
+    assert summary["human_as_expected"] == pytest.approx(0.5)
+    assert summary["duration"] == 100.0
+
+
+class _ExpectingRobot:
+    """Waits every decision and announces the human action it expects: 0, then wait, then none."""
+
+    expectations = (0, -2, -1)  # -2 stands for "the human's wait" (the last human action)
+
+    def reset(self, world: object, agent: object, rng: np.random.Generator) -> None:
+        self.k = 0
+
+    def act(self, turn: Turn) -> int:
+        wait = int(np.flatnonzero(turn.mask)[-1])
+        expected = self.expectations[self.k % 3]
+        if expected == -2:
+            expected = len(turn.world.action_names[1]) - 1
+        self.last_decision = Decision(expert="stub", action=wait, expected_human_action=expected)
+        self.k += 1
+        return wait
+
+
+class _WaitingHuman:
+    def reset(self, world: object, agent: object, rng: np.random.Generator) -> None:
+        pass
+
+    def act(self, turn: Turn) -> int:
+        return int(np.flatnonzero(turn.mask)[-1])  # the human's wait, its last action
+
+
+def test_human_as_expected_compares_with_every_expected_action_including_index_0() -> None:
+    # the human always waits: expected action 0 (a pick) -> False, expected wait -> True,
+    # no expectation (-1) -> None
+    result = run(_ExpectingRobot(), _WaitingHuman(), RunConfig(duration=100.0, seed=0, max_decisions=3))
+    log = result.log
+    assert log["expected_human_action"].iloc[0] == 0
+    assert log["human_as_expected"].tolist() == [False, True, None]

@@ -18,7 +18,7 @@ import pytest
 import hg_marl
 from hg_marl.agents.meta.cost import CostModel
 from hg_marl.training import store as store_module
-from hg_marl.training.store import Job, Store
+from hg_marl.training.store import Job, Store, StoredRun
 from hg_marl.training.sweep import run_jobs
 
 SHORT = 60.0
@@ -166,3 +166,10 @@ def test_two_concurrent_sweeps_share_the_work(tmp_path: Path) -> None:
     assert len(entries) == 8
     for entry in entries:
         assert json.loads(entry.read_text())["key"] == entry.parent.name
+
+
+def test_rate_is_tasks_per_simulated_hour(tmp_path: Path) -> None:
+    # 3 tasks in 1,800 simulated seconds (half an hour) is 6 tasks per hour
+    run = StoredRun("k", {}, {"tasks_solved": 3, "duration": 1800.0}, tmp_path / "log.csv.gz")
+    assert run.tasks == 3.0
+    assert run.rate == pytest.approx(6.0)

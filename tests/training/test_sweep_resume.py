@@ -6,6 +6,7 @@ jobs kept on disk) so that it holds for any results store that keeps that promis
 
 from __future__ import annotations
 
+import logging
 from pathlib import Path
 
 import pandas as pd
@@ -59,3 +60,20 @@ def test_results_keep_job_order_when_later_jobs_finished_first(
     assert again == ref
     assert [s["job"]["seed"] for s in again] == [0, 1, 2]
     assert sorted(done) == [0, 1, 2]
+
+
+def test_sweep_logs_runs_made_and_reused_whenever_it_did_either(
+    tmp_path: Path, caplog: pytest.LogCaptureFixture
+) -> None:
+    def sweep_lines() -> list[str]:
+        return [r.getMessage() for r in caplog.records if r.getMessage().startswith("sweep:")]
+
+    caplog.set_level(logging.INFO, logger="hg_marl.training.sweep")
+    run_sweep(JOBS[:1], tmp_path)  # a fresh store: one run made, none reused
+    assert sweep_lines() == ["sweep: 1 runs made, 0 reused"]
+    caplog.clear()
+    run_sweep(JOBS[:1], tmp_path)  # the same job again: found in the store
+    assert sweep_lines() == ["sweep: 0 runs made, 1 reused"]
+    caplog.clear()
+    run_sweep([], tmp_path)  # nothing to do: nothing to say
+    assert sweep_lines() == []
