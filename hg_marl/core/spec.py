@@ -96,14 +96,23 @@ def parse_spec(text: str | Spec, what: str = "spec") -> Spec:
     raw: dict[str, str] = {}
     if rest.strip():
         for item in _split_top_level(rest):
-            key, sep, value = item.partition("=")
-            key = key.strip()
-            if not sep or not key:
+            pair = split_param(item)
+            if pair is None:
                 raise SpecError(f"{what} {text!r}: expected key=value, got {item.strip()!r}")
-            if key in raw:
-                raise SpecError(f"{what} {text!r}: parameter {key!r} given twice")
-            raw[key] = value.strip()
+            if pair[0] in raw:
+                raise SpecError(f"{what} {text!r}: parameter {pair[0]!r} given twice")
+            raw[pair[0]] = pair[1]
     return Spec(name, raw)
+
+
+def split_param(item: str) -> tuple[str, str] | None:
+    """One ``key=value`` item as stripped ``(key, raw value)``, or ``None`` without ``=`` or key.
+
+    The one reading of a parameter item, for specs and for repeated ``--x-param`` options.
+    """
+    key, sep, value = item.partition("=")
+    key = key.strip()
+    return (key, value.strip()) if sep and key else None
 
 
 def format_spec(name: str, params: Mapping[str, Any]) -> str:

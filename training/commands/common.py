@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any, TypeVar
 
 from hg_marl.core.errors import ConfigError, HgMarlError, check_finite
-from hg_marl.core.spec import Spec, parse_spec
+from hg_marl.core.spec import Spec, parse_spec, split_param
 
 T = TypeVar("T")
 
@@ -28,13 +28,12 @@ def parse_params(items: Iterable[str] | None, option: str) -> dict[str, str]:
     """
     params: dict[str, str] = {}
     for item in items or ():
-        key, sep, value = item.partition("=")
-        key = key.strip()
-        if not sep or not key:
+        pair = split_param(item)
+        if pair is None:
             raise ConfigError(f"{option} {item!r}: expected key=value")
-        if key in params:
-            raise ConfigError(f"{option}: {key!r} given twice")
-        params[key] = value.strip()
+        if pair[0] in params:
+            raise ConfigError(f"{option}: {pair[0]!r} given twice")
+        params[pair[0]] = pair[1]
     return params
 
 
