@@ -57,7 +57,8 @@ test-mutation: $(BIN)/.mutation
 # Every mutant of every module (hours on 2 cores; see mutation/README.md).
 mutation-full: $(BIN)/.mutation
 	$(BIN)/python mutation/run.py --full $(MUTATION_ARGS)
-# Ray may pull other versions of shared dependencies, so it gets its own environment.
+# Ray may pull other versions of shared dependencies, so it gets its own environment,
+# without the sb3 extra (HG_MARL_REQUIRE_EXTRAS=0: the Ray tests need only Ray).
 $(RAY_VENV)/bin/.installed: pyproject.toml
 	$(PYTHON) -m venv $(RAY_VENV)
 	$(RAY_VENV)/bin/python -m pip install --quiet --upgrade pip
@@ -65,7 +66,7 @@ $(RAY_VENV)/bin/.installed: pyproject.toml
 	touch $@
 
 test-ray: $(RAY_VENV)/bin/.installed
-	HG_MARL_RAY_STAGE=1 $(RAY_VENV)/bin/python -m pytest -m ray tests/training/test_ray.py $(PYTEST_ARGS)
+	HG_MARL_RAY_STAGE=1 HG_MARL_REQUIRE_EXTRAS=0 $(RAY_VENV)/bin/python -m pytest -m ray tests/training/test_ray.py $(PYTEST_ARGS)
 
 lint: setup
 	$(BIN)/ruff check .
