@@ -65,6 +65,7 @@ from hg_marl.envs.render import HUMAN_MESSAGE, caption_of, render_ansi, render_r
 from hg_marl.policy import Turn
 
 _RESET_EVENT = Event("reset", "table", "", "new layout")
+_AGENT_OF = {name: Agent(i) for i, name in enumerate(AGENT_NAMES)}
 EVENT_SEPARATOR = "; "
 """Joins the sentences of ``infos[agent]["events"]`` (split on it to get them back)."""
 
@@ -178,6 +179,7 @@ class raw_env(AECEnv):
         self.world_state = options.get("state") or self.world.initial_state(self._rng)
         self.agents = list(self.possible_agents)
         self.rewards = dict.fromkeys(self.agents, 0.0)
+        self._rewarded = False
         self._cumulative_rewards = dict.fromkeys(self.agents, 0.0)
         self.terminations = dict.fromkeys(self.agents, False)
         self.truncations = dict.fromkeys(self.agents, False)
@@ -219,28 +221,29 @@ class raw_env(AECEnv):
         if self.terminations[name] or self.truncations[name]:
             self._was_dead_step(action)
             return
-        agent = Agent.ROBOT if name == "robot" else Agent.HUMAN
+        agent = _AGENT_OF[name]
         if type(action) is not int or not 0 <= action < self._n_actions[agent]:
             action = self._check_action(agent, action)
         out = self.world.step(self.world_state, agent, action)
         self.world_state = out.state
         self._cycle_durations[agent] = out.duration
         self._last_actions[agent] = action
-        waited = self._is_wait[agent][action]
-        if out.ok and not waited:
+        if out.ok and not self._is_wait[agent][action]:
             self._effort[agent] += out.duration
         events = out.events
         reward = out.reward
         if reward:
             self.tasks_solved += 1
             self.rewards = dict.fromkeys(self.agents, reward)
+            self._rewarded = True
             if self.continuing:
                 self.world_state = self.world.initial_state(self._rng)
                 events = (*events, _RESET_EVENT)
             else:
                 self._done_this_cycle = True
-        else:
+        elif self._rewarded:  # the dict is replaced only when the last step was rewarded
             self.rewards = dict.fromkeys(self.agents, 0.0)
+            self._rewarded = False
         self._last_events[agent] = events
         self.infos[name] = self._info(agent, self.world.action_names[agent][action], not out.ok, events)
         cumulative = self._cumulative_rewards
@@ -257,52 +260,53 @@ class raw_env(AECEnv):
     def _end_cycle(self) -> None:
         durations = self._cycle_durations
         length = max(durations) + self._charged
+        last, is_wait, idle = self._last_actions, self._is_wait, self._idle
         for a in (0, 1):
-            waited = self._is_wait[a][self._last_actions[a]] if self._last_actions[a] >= 0 else False
-            self._idle[a] += length - (0.0 if waited else durations[a])
-        self.clock += length
+            waited = last[a] >= 0 and is_wait[a][last[a]]
+            idle[a] += length if waited else length - durations[a]
+        self.clock = clock = self.clock + length
         self.cycles += 1
         self._cycle_durations = [0.0, 0.0]
         self._charged = 0.0
         truncate = (self.max_cycles is not None and self.cycles >= self.max_cycles) or (
-            self.time_budget is not None and self.clock >= self.time_budget
+            self.time_budget is not None and clock >= self.time_budget
         )
         done = self._done_this_cycle
         if done or truncate:
             for name in self.agents:
                 self.terminations[name] = done
                 self.truncations[name] = truncate and not done
+        cycles, tasks, effort, infos = self.cycles, self.tasks_solved, self._effort, self.infos
         for i, name in enumerate(self.agents):
-            info = self.infos[name]
-            info["clock"], info["cycle"], info["tasks_solved"] = float(self.clock), self.cycles, self.tasks_solved
-            info["effort"], info["idle"] = float(self._effort[i]), float(self._idle[i])
+            info = infos[name]
+            info["clock"], info["cycle"], info["tasks_solved"] = clock, cycles, tasks
+            info["effort"], info["idle"] = effort[i], idle[i]
 
     def _info(self, agent: Agent, action: str, failed: bool, events: tuple[Event, ...]) -> dict[str, Any]:
+        """A fresh info dict (fixed keys and types: floats are Python floats, counters ints)."""
         text = self._event_text.get(events)
         if text is None:
             sentences = tuple(str(e) for e in events)
             text = self._event_text[events] = sentences if self.events_tuple else EVENT_SEPARATOR.join(sentences)
         return {
-            "clock": float(self.clock),
-            "cycle": int(self.cycles),
-            "tasks_solved": int(self.tasks_solved),
+            "clock": self.clock,
+            "cycle": self.cycles,
+            "tasks_solved": self.tasks_solved,
             "action": action,
-            "failed": bool(failed),
+            "failed": failed,
             "events": text,
-            "effort": float(self._effort[agent]),
-            "idle": float(self._idle[agent]),
+            "effort": self._effort[agent],
+            "idle": self._idle[agent],
         }
 
     # ---- observations ----------------------------------------------------------------
     def observe(self, agent: str) -> dict[str, np.ndarray]:
         """Facts and this agent's action mask (shared read-only arrays)."""
-        state = self.world_state
-        if agent not in AGENT_NAMES:
+        who = _AGENT_OF.get(agent) if type(agent) is str else None
+        if who is None:
             raise ConfigError(f"observe: unknown agent {agent!r}; the agents are {', '.join(AGENT_NAMES)}")
-        return {
-            "observation": self.world.facts(state),
-            "action_mask": self.world.mask(state, Agent.ROBOT if agent == "robot" else Agent.HUMAN),
-        }
+        state = self.world_state
+        return {"observation": self.world.facts(state), "action_mask": self.world.mask(state, who)}
 
     def turn(self, agent: str | None = None) -> Turn:
         """A :class:`Turn` for ``agent`` (default: the selected one), for scripted actors.
