@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import json
 import math
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -93,16 +93,8 @@ def parse_spec(text: str | Spec, what: str = "spec") -> Spec:
     name = name.strip()
     if not name:
         raise SpecError(f"{what} {text!r}: missing the name before ':'")
-    raw: dict[str, str] = {}
-    if rest.strip():
-        for item in _split_top_level(rest):
-            pair = split_param(item)
-            if pair is None:
-                raise SpecError(f"{what} {text!r}: expected key=value, got {item.strip()!r}")
-            if pair[0] in raw:
-                raise SpecError(f"{what} {text!r}: parameter {pair[0]!r} given twice")
-            raw[pair[0]] = pair[1]
-    return Spec(name, raw)
+    items = _split_top_level(rest) if rest.strip() else []
+    return Spec(name, collect_params(items, f"{what} {text!r}", SpecError))
 
 
 def split_param(item: str) -> tuple[str, str] | None:
@@ -113,6 +105,23 @@ def split_param(item: str) -> tuple[str, str] | None:
     key, sep, value = item.partition("=")
     key = key.strip()
     return (key, value.strip()) if sep and key else None
+
+
+def collect_params(items: Iterable[str], where: str, error: type[HgMarlError]) -> dict[str, str]:
+    """``key=value`` items as raw texts by key: the one loop for specs and ``--x-param`` options.
+
+    Raises:
+        error: an item without ``=`` or a key given twice, the message starting with ``where``.
+    """
+    raw: dict[str, str] = {}
+    for item in items:
+        pair = split_param(item)
+        if pair is None:
+            raise error(f"{where}: expected key=value, got {item.strip()!r}")
+        if pair[0] in raw:
+            raise error(f"{where}: parameter {pair[0]!r} given twice")
+        raw[pair[0]] = pair[1]
+    return raw
 
 
 def format_spec(name: str, params: Mapping[str, Any]) -> str:

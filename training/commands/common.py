@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any, TypeVar
 
 from hg_marl.core.errors import ConfigError, HgMarlError, check_finite
-from hg_marl.core.spec import Spec, parse_spec, split_param
+from hg_marl.core.spec import Spec, collect_params, parse_spec
 
 T = TypeVar("T")
 
@@ -26,15 +26,7 @@ def parse_params(items: Iterable[str] | None, option: str) -> dict[str, str]:
     Raises:
         ConfigError: an item without ``=`` or a key given twice, naming ``option``.
     """
-    params: dict[str, str] = {}
-    for item in items or ():
-        pair = split_param(item)
-        if pair is None:
-            raise ConfigError(f"{option} {item!r}: expected key=value")
-        if pair[0] in params:
-            raise ConfigError(f"{option}: {pair[0]!r} given twice")
-        params[pair[0]] = pair[1]
-    return params
+    return collect_params(items or (), option, ConfigError)
 
 
 def spec_with(text: str, items: Iterable[str] | None, option: str, params_option: str) -> Spec:
