@@ -58,15 +58,15 @@ BUGS = (
     Bug(
         "clock charged with the measured planning time, not the decision time",
         "training/runner.py",
-        "raw.charge_time(decision_time)",
-        'raw.charge_time(float(record.get("planning_time", 0.0)))',
+        "raw.charge_time(record.decision_time)",
+        "raw.charge_time(record.planning_time)",
         RUN_TESTS,
     ),
     Bug(
         "charge_decision_time flag ignored",
         "training/runner.py",
-        "if config.charge_decision_time and decision_time > 0:",
-        "if decision_time > 0:",
+        "if config.charge_decision_time and record.decision_time > 0:",
+        "if record.decision_time > 0:",
         RUN_TESTS,
     ),
     Bug(

@@ -49,3 +49,22 @@ def test_equivalents_parse_and_match_by_operator_or_line(mutation) -> None:  # t
     by_line = mutation.Equivalent("world", "why", removed="if a > b:")
     assert by_line.matches("world", "any", "if a > b:", "if a >= b:")
     assert not by_line.matches("oracle", "any", "if a > b:", "if a >= b:")
+
+
+def test_every_planted_bug_still_applies() -> None:
+    """Each bug of ``mutation/planted.py`` finds its line once, so the script cannot rot unnoticed."""
+    sys.path.insert(0, str(ROOT / "mutation"))
+    try:
+        spec = importlib.util.spec_from_file_location("mutation_planted", ROOT / "mutation" / "planted.py")
+        assert spec is not None and spec.loader is not None
+        planted = importlib.util.module_from_spec(spec)
+        sys.modules["mutation_planted"] = planted  # dataclasses look their module up there
+        spec.loader.exec_module(planted)
+    finally:
+        sys.path.remove(str(ROOT / "mutation"))
+    assert len(planted.BUGS) == 6
+    for bug in planted.BUGS:
+        text = (ROOT / bug.path).read_text()
+        assert text.count(bug.old) == 1, f"mutation/planted.py: {bug.name}: not found once in {bug.path}"
+        assert bug.old != bug.new
+        assert all((ROOT / t).exists() for t in bug.tests), bug.name
