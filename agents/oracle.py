@@ -23,13 +23,15 @@ certain (e.g. an adversarial human hid an object) are found first by the standar
 almost-sure-reachability fixpoint and get ``V = inf``; if the re-drawn table can lead
 there, the rate is 0.
 
-Size (measured on 2 CPU cores). ``paper2015``: 36 layouts, 500-2,000 states, under a
-second for the scripted humans and ~10 s for the planner-driven ``cooperative`` and
-``noisy`` humans (one planner call per distinct mid-cycle state, up to the relabelling of
-interchangeable objects). ``roboergosum`` (6 objects, 7 placemats): 5,040 layouts; 65k
-states and ~25 s against ``no_handover``, 250k states, 3.2M transitions, ~4 min and
-~0.7 GB against ``lazy``; 192k states, 1.3M transitions and ~9 min (on a loaded
-machine) against the planner-driven ``cooperative`` human. The build is pure Python and
+Size (``hg-marl oracle --scenario S --human H`` on the 2-core machine, wall time of the
+whole command). ``paper2015``: 36 layouts, 444-1,892 states, under 1.5 s for every
+bundled human. ``roboergosum`` (6 objects, 7 placemats, 5,040 layouts): 65k states and
+6 s against ``no_handover``; 116k and 6 s against ``adversarial`` (rate 0); 251k
+states, 3.2M transitions and 20 s against ``lazy``; 192k states and 49 s against the
+planner-driven ``cooperative`` human (one planner call per distinct mid-cycle state up
+to the relabelling of interchangeable objects); 530k states and 15M transitions against
+``random`` (98 s, 2.1 GB) and ``noisy`` (353 s, 4.5 GB: one planner call per human
+action of each mid-cycle state). The build is pure Python and
 shows a progress bar with the states explored and known (``progress=True``, the CLI's
 default); ``max_states`` stops it with a clear :class:`OracleTooLarge` message, and so
 does the kernel's available memory falling under 512 MB, rather than exhausting memory.
