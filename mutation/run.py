@@ -40,6 +40,7 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
 from io import BytesIO
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -94,6 +95,14 @@ class Equivalent:
             and (not self.pattern or re.search(self.pattern, removed) is not None)
         )
 
+    def judges_line(self, module: str, operator: str, line: str) -> bool:
+        """Whether every mutant by ``operator`` of the source ``line`` is this equivalent.
+
+        Only entries that do not depend on the mutated text (no ``added``) can say so
+        before the mutant runs; the sample is drawn among the other mutants.
+        """
+        return not self.added and self.matches(module, operator, line.strip(), "")
+
 
 @dataclass
 class Outcome:
@@ -107,6 +116,8 @@ class Outcome:
     timeouts: int = 0
     incompetent: int = 0
     equivalent: int = 0
+    prejudged: int = 0
+    """Mutants left out of the sample because ``equivalent.toml`` justifies them by their line alone."""
     survivors: list[dict[str, str | int]] = field(default_factory=list)
     baseline_s: float = 0.0
     wall_s: float = 0.0
@@ -230,6 +241,13 @@ def tests_from(rev: str, dest: Path) -> None:
         tar.extractall(dest, filter="data")
 
 
+def _prejudged(mutation: Any, lines: list[str], module: str, equivalents: list[Equivalent]) -> bool:
+    """Whether a mutant is equivalent by its source line alone (see :meth:`Equivalent.judges_line`)."""
+    row = mutation.start_pos[0] - 1
+    line = lines[row] if 0 <= row < len(lines) else ""
+    return any(e.judges_line(module, mutation.operator_name, line) for e in equivalents)
+
+
 def run_module(
     module: Module, sample: int | None, seed: int, equivalents: list[Equivalent], work: Path, rev: str | None = None
 ) -> Outcome:
@@ -267,11 +285,14 @@ def run_module(
     cosmic = [sys.executable, "-m", "cosmic_ray.cli"]
     subprocess.run([*cosmic, "init", str(config), str(session)], cwd=scratch, env=env, check=True)
     with use_db(str(session), WorkDB.Mode.open) as db:
-        items = sorted(db.work_items, key=lambda w: [(m.start_pos, m.operator_name, m.occurrence) for m in w.mutations])
-        out.total = len(items)
+        every = sorted(db.work_items, key=lambda w: [(m.start_pos, m.operator_name, m.occurrence) for m in w.mutations])
+        out.total = len(every)
+        lines = (scratch / module.path).read_text().splitlines()
+        items = [w for w in every if not _prejudged(w.mutations[0], lines, module.key, equivalents)]
+        out.prejudged = out.total - len(items)
         keep = len(items) if sample is None else min(sample, len(items))
-        chosen = set(np.random.default_rng(seed).choice(len(items), size=keep, replace=False).tolist())
-        skipped = [w.job_id for i, w in enumerate(items) if i not in chosen]
+        chosen = {items[i].job_id for i in np.random.default_rng(seed).choice(len(items), size=keep, replace=False)}
+        skipped = [w.job_id for w in every if w.job_id not in chosen]
         if skipped:
             db.set_multiple_results(skipped, WorkResult(output="not in sample", worker_outcome=WorkerOutcome.SKIPPED))
     subprocess.run([*cosmic, "exec", str(config), str(session)], cwd=scratch, env=env, check=True)
@@ -308,7 +329,10 @@ def run_module(
 
 def report(outcomes: list[Outcome], target: float) -> None:
     """The score table, then every survivor (justified equivalents marked)."""
-    head = f"{'module':<18} {'file':<32} {'mutants':>7} {'run':>4} {'killed':>6} {'t/o':>4} {'inc':>4} {'equiv':>5}"
+    head = (
+        f"{'module':<18} {'file':<32} {'mutants':>7} {'pre-eq':>6} {'run':>4} {'killed':>6} {'t/o':>4} {'inc':>4} "
+        f"{'equiv':>5}"
+    )
     print(f"\n{head} {'score':>6}  time")
     for o in outcomes:
         if o.error:
@@ -316,8 +340,8 @@ def report(outcomes: list[Outcome], target: float) -> None:
             continue
         flag = "" if o.score >= target else f"  (< target {target:.0%})"
         print(
-            f"{o.key:<18} {o.path:<32} {o.total:>7} {o.run:>4} {o.killed:>6} {o.timeouts:>4} {o.incompetent:>4} "
-            f"{o.equivalent:>5} "
+            f"{o.key:<18} {o.path:<32} {o.total:>7} {o.prejudged:>6} {o.run:>4} {o.killed:>6} {o.timeouts:>4} "
+            f"{o.incompetent:>4} {o.equivalent:>5} "
             f"{o.score:>6.1%}  {o.wall_s:5.0f}s{flag}"
         )
     for o in outcomes:

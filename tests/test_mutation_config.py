@@ -68,3 +68,15 @@ def test_every_planted_bug_still_applies() -> None:
         assert text.count(bug.old) == 1, f"mutation/planted.py: {bug.name}: not found once in {bug.path}"
         assert bug.old != bug.new
         assert all((ROOT / t).exists() for t in bug.tests), bug.name
+
+
+def test_annotation_mutants_are_left_out_of_the_sample_but_code_mutants_are_not(mutation) -> None:  # type: ignore[no-untyped-def]
+    equivalents = mutation.load_equivalents()
+    op = "core/ReplaceBinaryOperator_BitOr_Sub"
+    signature = "    def get(self, job: Job, key: str | None = None) -> StoredRun | None:"
+    code = "        flags = a | b"
+    assert any(e.judges_line("store", op, signature) for e in equivalents)
+    assert not any(e.judges_line("store", op, code) for e in equivalents)
+    # an entry that names the mutated text cannot judge a line before the mutant exists
+    by_text = mutation.Equivalent("store", "why", removed="x = 1", added="x = 2")
+    assert by_text.matches("store", "any", "x = 1", "x = 2") and not by_text.judges_line("store", "any", "x = 1")

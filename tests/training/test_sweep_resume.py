@@ -77,3 +77,30 @@ def test_sweep_logs_runs_made_and_reused_whenever_it_did_either(
     caplog.clear()
     run_sweep([], tmp_path)  # nothing to do: nothing to say
     assert sweep_lines() == []
+
+
+def test_a_job_claimed_elsewhere_does_not_hold_back_the_jobs_after_it(
+    tmp_path: Path, reference: tuple[Path, list[dict]]
+) -> None:
+    """Another process holds the first job's claim: the sweep runs the others meanwhile, then that one."""
+    import threading
+    import time
+
+    from hg_marl.training.sweep import store_of
+
+    _, ref = reference
+    store = store_of(tmp_path)
+    keys = [job.key() for job in JOBS]
+    results: list[list[dict]] = []
+    with store.claim(keys[0]) as held:
+        assert held
+        sweep = threading.Thread(target=lambda: results.append(run_sweep(JOBS, tmp_path)), daemon=True)
+        sweep.start()
+        deadline = time.monotonic() + 30
+        while not all(store.get(job, key) for job, key in zip(JOBS[1:], keys[1:], strict=True)):
+            assert time.monotonic() < deadline, "the jobs after the claimed one were never run"
+            assert sweep.is_alive(), "the sweep stopped while a job was still claimed elsewhere"
+            time.sleep(0.05)
+        assert store.get(JOBS[0], keys[0]) is None  # still ours: the sweep waits for it
+    sweep.join(timeout=120)
+    assert not sweep.is_alive() and results == [ref]
