@@ -6,8 +6,10 @@ For each module of ``mutation/modules.toml`` this script
    (``agents/`` and ``training/`` appear as ``hg_marl/agents`` and ``hg_marl/training``),
    so the mutated file is the one the tests import and the worktree is never touched;
 2. runs the module's tests once unmutated (they must pass; their time sets the timeout);
-3. lets cosmic-ray enumerate every mutant of the module, draws a seeded sample (or keeps
-   all with ``--full``), marks the rest skipped and executes the sample;
+3. lets cosmic-ray enumerate every mutant of the module, sets aside those that
+   ``equivalent.toml`` justifies by their source line alone, draws a seeded sample among
+   the rest (or keeps them all with ``--full``), marks the others skipped and executes
+   the sample;
 4. prints the mutation score per module (killed / (run - justified equivalents)) and
    every survivor with its diff, flagging those not in ``mutation/equivalent.toml``.
 

@@ -250,3 +250,16 @@ def test_model_size_counts_every_option_including_a_failed_one_after_the_complet
     assert (result.n_states, result.n_transitions, result.n_layouts) == (6, transitions, 1)
     assert result.seconds_per_task == pytest.approx(11.0)
     assert result.rate_per_hour == pytest.approx(3600.0 / 11.0)
+
+
+def test_low_memory_stops_the_build_with_the_limit_named(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Below 512 MB of available memory the build stops with one message saying so (checked every 16,384 states)."""
+    from hg_marl.agents import oracle as oracle_module
+
+    monkeypatch.setattr(oracle_module, "_available_bytes", lambda: 100 * 2**20)
+    with pytest.raises(oracle_module.OracleTooLarge) as refused:
+        oracle_module.oracle_rate("roboergosum", "no_handover")  # 65k states: the check runs
+    message = str(refused.value)
+    assert "less than 512 MB of memory left" in message and "\n" not in message
+    known = int(message.split("stopped at ")[1].split(" states")[0])
+    assert known > 16384  # the first check comes after 16,384 states were explored, not at every state

@@ -152,6 +152,28 @@ def test_bound_is_admissible_and_not_trivial(tmp_path: Path) -> None:
         assert 4.725 <= bound <= optimal + 1e-9
 
 
+@pytest.mark.parametrize(
+    ("where", "at", "action", "to_go"),
+    [
+        # one_tape, robot alone, the human waits throughout (idle = the cycle, weight 0.05):
+        # throw 2 s: 2 + 0.05*2 = 2.1, then the completing wait 1 + 0.05 = 1.05 -> 3.15
+        (2, 0, "throw(tape)", 3.15),
+        (2, 1, "goto(bin)", 3.15 + 3.15),  # goto 3 s: 3 + 0.05*3
+        (0, 1, "pick(tape)", 6.3 + 2.1),  # pick 2 s
+        (0, 0, "goto(tape)", 8.4 + 3.15),  # the plan's whole cost, 11.55 (worked above)
+    ],
+)
+def test_bound_at_each_step_of_the_plan_is_its_exact_cost_to_go(
+    tmp_path: Path, where: int, at: int, action: str, to_go: float
+) -> None:
+    # With nothing to wait for, the relaxation is exact: the bound through the plan's next
+    # robot action equals the cost still to pay, cycle by cycle as worked above.
+    planner = Planner(world(tmp_path, ONE_TAPE))
+    names = planner.world.action_names[Agent.ROBOT]
+    edges = {names[edge.action]: edge.h for edge in planner.space.robot_edges(State((where,), at))}
+    assert edges[action] == pytest.approx(to_go)
+
+
 def test_handover_when_idling_costs_more_than_working(tmp_path: Path) -> None:
     # idle weight 0.5 above the effort weight 0.1 (the bound's other branch, b < 0); the same
     # plan stays optimal: time 11.5, effort 3, idle 8.5 -> 11.5 + 0.1*3 + 0.5*8.5 = 16.05

@@ -156,6 +156,11 @@ def test_place_names(w: World) -> None:
     assert names == ["mat", "shelf", "human_mat", "red_bin", "blue_bin", "robot's hand", "human's hand"]
 
 
+def test_only_the_two_bin_codes_are_bins(w: World) -> None:
+    # place codes 3 and 4 are the bins (the comment above the fixture); spots and hands are not
+    assert [w.is_in_bin(p) for p in range(7)] == [False, False, False, True, True, False, False]
+
+
 def facts(w: World, state: State) -> dict[str, int]:
     return dict(zip(w.fact_names, w.facts(state).tolist(), strict=True))
 

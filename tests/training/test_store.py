@@ -91,6 +91,16 @@ def test_entries_are_readable_by_others(tmp_path: Path) -> None:
         assert stat.S_IMODE((folder / name).stat().st_mode) == 0o644
 
 
+def test_claim_files_are_readable_by_others_under_the_usual_umask(tmp_path: Path) -> None:
+    old = os.umask(0o022)
+    try:
+        with Store(tmp_path).claim("k" * 64) as held:
+            assert held
+            assert stat.S_IMODE((tmp_path / "claims" / f"{'k' * 64}.lock").stat().st_mode) == 0o644
+    finally:
+        os.umask(old)
+
+
 @pytest.mark.parametrize("damage", ["truncate_result", "change_log", "drop_result"])
 def test_corrupt_entry_is_rerun_with_one_warning(tmp_path: Path, damage: str, caplog: pytest.LogCaptureFixture) -> None:
     store = Store(tmp_path)
@@ -138,6 +148,17 @@ def test_cached_value_is_computed_once_per_key(tmp_path: Path) -> None:
     assert store.cached("oracle", {"human": "lazy"}, compute) == 42.5
     assert store.cached("oracle", {"human": "cooperative"}, compute) == 42.5
     assert len(calls) == 2
+
+
+def test_a_cached_file_under_another_key_is_not_served(tmp_path: Path) -> None:
+    """A cached value is served only when the key written inside the file is the file's own."""
+    store = Store(tmp_path)
+    assert store.cached("oracle", {"human": "lazy"}, lambda: 1.0) == 1.0
+    (lazy,) = (tmp_path / "cached" / "oracle").glob("*.json")
+    assert store.cached("oracle", {"human": "noisy"}, lambda: 2.0) == 2.0
+    (noisy,) = [p for p in (tmp_path / "cached" / "oracle").glob("*.json") if p != lazy]
+    noisy.write_text(lazy.read_text())  # the lazy human's result copied over the noisy human's entry
+    assert store.cached("oracle", {"human": "noisy"}, lambda: 3.0) == 3.0
 
 
 SWEEP = textwrap.dedent(
