@@ -346,6 +346,8 @@ def test_cli_compare_is_resumable(tmp_path: Path) -> None:
         "1",
         "--duration",
         "300",
+        "--seeds",
+        "2",
         "--out",
         str(tmp_path),
     ]
@@ -356,8 +358,19 @@ def test_cli_compare_is_resumable(tmp_path: Path) -> None:
     assert agents == {"maskable_ppo", "planner", "hybrid"}
     row = next(r for r in summary["rows"] if r["agent"] == "maskable_ppo")
     assert row["oracle"] > 0 and row["fraction"] >= 0 and summary["cells"][0]["curve"][0][0] == 0
+    assert row["seeds"] == 2 and row["fraction_ci"][0] <= row["fraction"] <= row["fraction_ci"][1]
+    assert summary["aggregate"]["robots"]["maskable_ppo"]["runs"] == 2
+    assert "95% CI" in res.output and "over humans" in res.output
     res = CliRunner().invoke(_app(), args)
     assert res.exit_code == 0 and "training" not in res.output  # every cell came from disk
+
+
+def test_cli_compare_passes_deterministic_on(tmp_path: Path) -> None:
+    args = ["compare", "--algos", "dqn", "--humans", "no_handover", "--steps", "256", "--eval-every", "256"]
+    args += ["--eval-seeds", "1", "--duration", "120", "--seeds", "1", "--deterministic", "--out", str(tmp_path)]
+    res = CliRunner().invoke(_app(), args)
+    assert res.exit_code == 0, res.output
+    assert json.loads((tmp_path / "summary.json").read_text())["config"]["deterministic"] is True
 
 
 def test_importing_the_package_and_commands_does_not_import_torch() -> None:

@@ -22,17 +22,21 @@ from __future__ import annotations
 
 import hashlib
 import logging
-import math
-from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from hg_marl.training.baselines.callbacks import RateCurve
-from hg_marl.training.baselines.envs import DEFAULT_MAX_CYCLES, EnvSpec
-from hg_marl.training.baselines.evaluation import actor_rate, runner_rate, steps_to_reach
+from hg_marl.training.baselines.comparison import (
+    BASELINE_ROBOTS,
+    CompareConfig,
+    aggregates,
+    format_aggregate,
+    format_table,
+    summarise,
+)
+from hg_marl.training.baselines.envs import EnvSpec
+from hg_marl.training.baselines.evaluation import actor_rate, runner_rate
 from hg_marl.training.baselines.train import TrainConfig, train
 from hg_marl.training.io import write_json
 from hg_marl.training.store import content_key, scenario_content
@@ -40,39 +44,17 @@ from hg_marl.training.sweep import store_of
 
 log = logging.getLogger(__name__)
 
-BASELINE_ROBOTS: dict[str, dict[str, Any]] = {"planner": {}, "hybrid": {"criterion": "entropy_and_cost"}}
-"""Robots scored next to the SB3 algorithms: registry name -> parameters."""
-
-
-@dataclass(frozen=True)
-class CompareConfig:
-    """A comparison: algorithms x humans x seeds at a fixed budget."""
-
-    algos: tuple[str, ...] = ("ppo", "maskable_ppo", "dqn", "a2c")
-    """Algorithms to train."""
-    humans: tuple[str, ...] = ("cooperative", "lazy", "no_handover")
-    """Humans, one training per human (not a population)."""
-    scenario: str = "paper2015"
-    """Scenario spec."""
-    steps: int = 20_000
-    """Training budget per cell, in environment steps."""
-    seeds: int = 1
-    """Training seeds per (algorithm, human): 0 .. seeds-1."""
-    eval_every: int = 2_000
-    """Steps between runner evaluations."""
-    eval_seeds: tuple[int, ...] = (100, 101)
-    """Runner seeds of every evaluation (robots and SB3 models alike)."""
-    duration: float = 1200.0
-    """Simulated seconds per evaluation run (the paper's 20 minutes)."""
-    deterministic: bool = False
-    """Evaluate SB3 policies greedily (True) or by sampling their distribution with the robot's
-    own generator (False, default: a greedy policy trained on facts that do not show
-    everything can loop forever, e.g. both agents waiting, and score 0 until late in
-    training; sampling is what the policy-gradient algorithms optimise). DQN is greedy either way."""
-    max_cycles: int = DEFAULT_MAX_CYCLES
-    """Training episode length."""
-    out: Path = Path("runs/compare")
-    """Output directory."""
+__all__ = [
+    "BASELINE_ROBOTS",
+    "CompareConfig",
+    "aggregates",
+    "cell_fields",
+    "compare",
+    "format_aggregate",
+    "format_table",
+    "reference_rates",
+    "summarise",
+]
 
 
 def _trainer_fingerprint() -> dict[str, str]:
@@ -189,75 +171,6 @@ def _reference_rates(config: CompareConfig, human: str) -> dict[str, float | Non
     return rates
 
 
-def _fraction(rate: float | None, oracle: float | None) -> float | None:
-    return None if rate is None or not oracle else rate / oracle
-
-
-def summarise(
-    config: CompareConfig, cells: Sequence[dict[str, Any]], references: dict[str, dict[str, float | None]]
-) -> list[dict[str, Any]]:
-    """One row per (algorithm or baseline robot, human)."""
-    rows: list[dict[str, Any]] = []
-    for human in config.humans:
-        ref = references[human]
-        oracle = ref.get("oracle")
-        for name in BASELINE_ROBOTS:
-            rows.append(
-                {
-                    "agent": name,
-                    "human": human,
-                    "rate": ref.get(name),
-                    "oracle": oracle,
-                    "fraction": _fraction(ref.get(name), oracle),
-                    "best_fraction": None,
-                    "steps_to_50": None,
-                    "steps_to_90": None,
-                    "seeds": len(config.eval_seeds),
-                }
-            )
-        for algo in config.algos:
-            mine = [c for c in cells if c["algo"] == algo and c["human"] == human]
-            if not mine:
-                continue
-            finals = [c["curve"][-1][1] for c in mine]
-            bests = [max(r for _, r in c["curve"]) for c in mine]
-            row: dict[str, Any] = {
-                "agent": algo,
-                "human": human,
-                "rate": float(np.mean(finals)),
-                "oracle": oracle,
-                "fraction": _fraction(float(np.mean(finals)), oracle),
-                "best_fraction": _fraction(float(np.mean(bests)), oracle),
-                "seeds": len(mine),
-            }
-            for level in (50, 90):
-                reached = [steps_to_reach(c["curve"], level / 100 * oracle) for c in mine] if oracle else [None]
-                row[f"steps_to_{level}"] = (
-                    None if any(s is None for s in reached) else float(np.median([s for s in reached if s is not None]))
-                )
-            rows.append(row)
-    return rows
-
-
-def format_table(rows: Sequence[dict[str, Any]]) -> str:
-    """A fixed-width text table of the summary rows."""
-
-    def fmt(value: Any, spec: str) -> str:
-        if value is None or (isinstance(value, float) and math.isnan(value)):
-            return "-"
-        return format(value, spec)
-
-    header = f"{'agent':<13}{'human':<16}{'tasks/h':>9}{'oracle':>9}{'frac':>7}{'best':>7}{'to 50%':>9}{'to 90%':>9}"
-    lines = [header, "-" * len(header)]
-    for r in rows:
-        lines.append(
-            f"{r['agent']:<13}{r['human']:<16}{fmt(r['rate'], '.1f'):>9}{fmt(r['oracle'], '.1f'):>9}"
-            f"{fmt(r['fraction'], '.2f'):>7}{fmt(r['best_fraction'], '.2f'):>7}"
-            f"{fmt(r['steps_to_50'], '.0f'):>9}{fmt(r['steps_to_90'], '.0f'):>9}"
-        )
-    return "\n".join(lines)
-
-
 def compare(config: CompareConfig, on_cell: Callable[[str], None] | None = None) -> dict[str, Any]:
     """Run (or resume) every cell, score the references, write ``OUT/summary.json``.
 
@@ -266,7 +179,9 @@ def compare(config: CompareConfig, on_cell: Callable[[str], None] | None = None)
         on_cell: called with a label before each cell (progress reporting in the CLI).
 
     Returns:
-        ``{"config": ..., "rows": [...], "cells": [...]}`` (also written to ``summary.json``).
+        ``{"config": ..., "rows": [...], "aggregate": {...}, "references": {...}, "cells": [...]}``
+        (also written to ``summary.json``); ``aggregate`` has the shape of a study's
+        ``aggregate.json`` (per algorithm IQM and mean with 95% CIs, pairwise improvement).
     """
     cells: list[dict[str, Any]] = []
     store = store_of(config.out)
@@ -287,6 +202,7 @@ def compare(config: CompareConfig, on_cell: Callable[[str], None] | None = None)
     summary = {
         "config": {k: (str(v) if isinstance(v, Path) else v) for k, v in vars(config).items()},
         "rows": rows,
+        "aggregate": aggregates(config, cells, {h: r.get("oracle") for h, r in references.items()}),
         "references": references,
         "cells": cells,
     }

@@ -10,7 +10,10 @@ from typing import Annotated
 
 import typer
 
-from hg_marl.training.commands.common import checked
+from hg_marl.training.baselines.comparison import CompareConfig
+from hg_marl.training.commands.common import checked, default
+
+DEFAULT_OUT: Path = default(CompareConfig, "out")
 
 
 def _names(text: str) -> tuple[str, ...]:
@@ -22,25 +25,35 @@ def register(app: typer.Typer) -> None:
 
     @app.command("compare")
     def compare_command(
-        algos: Annotated[str, typer.Option(help="Comma list of ppo, maskable_ppo, dqn, a2c.")] = (
-            "ppo,maskable_ppo,dqn,a2c"
+        algos: Annotated[str, typer.Option(help="Comma list of ppo, maskable_ppo, dqn, a2c.")] = ",".join(
+            default(CompareConfig, "algos")
         ),
-        humans: Annotated[str, typer.Option(help="Comma list of humans (one training each).")] = (
-            "cooperative,lazy,no_handover"
+        humans: Annotated[str, typer.Option(help="Comma list of humans (one training each).")] = ",".join(
+            default(CompareConfig, "humans")
         ),
-        scenario: Annotated[str, typer.Option(help="Scenario spec.")] = "paper2015",
-        steps: Annotated[int, typer.Option(help="Training budget per (algo, human, seed).")] = 20_000,
-        seeds: Annotated[int, typer.Option(help="Training seeds per (algo, human).")] = 1,
-        eval_every: Annotated[int, typer.Option(help="Steps between runner evaluations.")] = 2_000,
-        eval_seeds: Annotated[int, typer.Option(help="Runner seeds per evaluation.")] = 2,
-        duration: Annotated[float, typer.Option(help="Simulated seconds per evaluation run.")] = 1200.0,
+        scenario: Annotated[str, typer.Option(help="Scenario spec.")] = default(CompareConfig, "scenario"),
+        steps: Annotated[int, typer.Option(help="Training budget per (algo, human, seed).")] = default(
+            CompareConfig, "steps"
+        ),
+        seeds: Annotated[
+            int, typer.Option(help="Training seeds per (algo, human); 2 or more give confidence intervals.")
+        ] = default(CompareConfig, "seeds"),
+        eval_every: Annotated[int, typer.Option(help="Steps between runner evaluations.")] = default(
+            CompareConfig, "eval_every"
+        ),
+        eval_seeds: Annotated[int, typer.Option(help="Runner seeds per evaluation.")] = len(
+            default(CompareConfig, "eval_seeds")
+        ),
+        duration: Annotated[float, typer.Option(help="Simulated seconds per evaluation run.")] = default(
+            CompareConfig, "duration"
+        ),
         deterministic: Annotated[
             bool, typer.Option(help="Evaluate SB3 policies greedily instead of sampling (DQN: always greedy).")
-        ] = False,
-        out: Annotated[Path, typer.Option(help="Output directory (resumable).")] = Path("runs/compare"),
+        ] = default(CompareConfig, "deterministic"),
+        out: Annotated[Path, typer.Option(help="Output directory (resumable).")] = DEFAULT_OUT,
     ) -> None:
         """Train each algorithm against each human, evaluate on the runner's protocol, report vs the oracle."""
-        from hg_marl.training.baselines.compare import CompareConfig, compare, format_table
+        from hg_marl.training.baselines.compare import compare, format_aggregate, format_table
         from hg_marl.training.baselines.hyperparams import check_algo
 
         names = checked(lambda: tuple(check_algo(a) for a in _names(algos)))
@@ -53,9 +66,13 @@ def register(app: typer.Typer) -> None:
             eval_every=eval_every,
             eval_seeds=tuple(range(100, 100 + eval_seeds)),
             duration=duration,
+            deterministic=deterministic,
             out=out,
         )
         summary = checked(lambda: compare(config, on_cell=lambda label: typer.echo(f"training {label} ...")))
         typer.echo(f"{scenario}: {steps} steps per cell, {seeds} seed(s), {eval_seeds} eval runs x {duration:.0f} s")
         typer.echo(format_table(summary["rows"]))
+        if summary["aggregate"]:
+            typer.echo("over humans (rliable, stratified bootstrap over seeds, 95% CIs):")
+            typer.echo(format_aggregate(summary["aggregate"]))
         typer.echo(f"summary: {out / 'summary.json'}")
