@@ -13,11 +13,11 @@ RAY_VENV ?= .venv-ray
 .PHONY: setup reproduce test test-slow test-browser test-ray test-integrations test-mutation mutation-full lint bench clean
 
 $(BIN)/.installed: pyproject.toml
-	@echo "setup: creating $(VENV) and installing hg-marl with its dev and sb3 extras"
-	@echo "setup: numpy, gymnasium, pettingzoo, matplotlib, pandas, torch==2.13.0 (CPU), stable-baselines3, sb3-contrib, pytest, ruff, mypy, nox (1-3 min)"
+	@echo "setup: creating $(VENV) and installing hg-marl with its dev, sb3 and video extras"
+	@echo "setup: numpy, gymnasium, pettingzoo, matplotlib, pandas, torch==2.13.0 (CPU), stable-baselines3, sb3-contrib, imageio-ffmpeg, pytest, ruff, mypy, nox (1-3 min)"
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet --progress-bar off -e ".[dev,sb3]"
+	$(BIN)/python -m pip install --quiet --progress-bar off -e ".[dev,sb3,video]"
 	@echo "setup: done ($(VENV))"
 	touch $@
 
@@ -48,7 +48,7 @@ test-browser: setup
 # Mutation testing (mutation/README.md): a seeded sample of mutants per module of
 # mutation/modules.toml; prints the score per module and every survivor.
 $(BIN)/.mutation: $(BIN)/.installed
-	$(BIN)/python -m pip install --quiet -e ".[dev,sb3,mutation]"
+	$(BIN)/python -m pip install --quiet -e ".[dev,sb3,video,mutation]"
 	touch $@
 
 test-mutation: $(BIN)/.mutation

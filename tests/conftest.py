@@ -17,7 +17,7 @@ if os.environ.get("CI"):
     settings.load_profile("ci")
 
 
-EXTRAS = {"sb3": ("torch", "stable_baselines3", "sb3_contrib")}
+EXTRAS = {"sb3": ("torch", "stable_baselines3", "sb3_contrib"), "video": ("imageio_ffmpeg",)}
 """Optional extras, by pytest marker, and the modules each needs."""
 
 
@@ -40,7 +40,7 @@ def pytest_configure(config: pytest.Config) -> None:
     ]
     if missing:
         raise pytest.UsageError(
-            f"missing optional extras: {', '.join(missing)}; install them (pip install -e '.[sb3]') "
+            f"missing optional extras: {', '.join(missing)}; install them (pip install -e '.[sb3,video]') "
             "or set HG_MARL_REQUIRE_EXTRAS=0 to let their tests skip"
         )
 
