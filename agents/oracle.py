@@ -156,6 +156,10 @@ class _Model:
         self.t_prob: list[float] = []
         self.t_tau: list[float] = []
         self._dist: dict[tuple[State, int], Distribution] = {}
+        self._answers: dict[tuple[State, int], list[tuple[int, float, float]]] = {}
+        """The human's answers at a (mid-cycle state, robot action seen), as (next state's id,
+        duration, probability): a mid-cycle state recurs from many robot-turn states, and the
+        ids point at states the index holds anyway, so nothing is stored twice."""
         self._uses_robot_action = bool(getattr(human, "uses_robot_action", False))
 
     def _id(self, state: State) -> int:
@@ -187,6 +191,15 @@ class _Model:
                 nxt, _, duration = self.world.table.successor(mid, Agent.HUMAN, h)
                 out.append((nxt, p, max(d_robot, duration)))
         return out
+
+    def _answer_ids(self, mid: State, robot_action: int) -> list[tuple[int, float, float]]:
+        """:meth:`replies` without the cycle's robot part, as state ids, memoised (the explore loop's)."""
+        key = (mid, robot_action if self._uses_robot_action else -1)
+        answers = self._answers.get(key)
+        if answers is None:
+            answers = self._answers[key] = [(self._id(nxt), tau, p) for nxt, p, tau in self.replies(mid, 0.0, key[1])]
+            del self._dist[key]  # held as ids from now on
+        return answers
 
     def robot_options(self, state: State) -> list[int]:
         feasible = self.world.feasible_indices(state, Agent.ROBOT)
@@ -231,11 +244,11 @@ class _Model:
                 self.pair_terminal.append(terminal)
                 if terminal:
                     continue
-                for nxt, p, tau in self.replies(mid, duration, a if ok else -1):
+                for nxt, d_human, p in self._answer_ids(mid, a if ok else -1):
                     self.t_pair.append(pair)
-                    self.t_next.append(self._id(nxt))
+                    self.t_next.append(nxt)
                     self.t_prob.append(p)
-                    self.t_tau.append(tau)
+                    self.t_tau.append(duration if duration > d_human else d_human)
             k += 1
 
 
