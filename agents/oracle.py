@@ -26,12 +26,12 @@ there, the rate is 0.
 Size (``hg-marl oracle --scenario S --human H`` on the 2-core machine, wall time of the
 whole command). ``paper2015``: 36 layouts, 444-1,892 states, under 1.5 s for every
 bundled human. ``roboergosum`` (6 objects, 7 placemats, 5,040 layouts): 65k states and
-6 s against ``no_handover``; 116k and 6 s against ``adversarial`` (rate 0); 251k
-states, 3.2M transitions and 20 s against ``lazy``; 192k states and 49 s against the
+4 s against ``no_handover``; 116k and 5 s against ``adversarial`` (rate 0); 251k
+states, 3.2M transitions and 16 s against ``lazy``; 192k states and 49 s against the
 planner-driven ``cooperative`` human (one planner call per distinct mid-cycle state up
 to the relabelling of interchangeable objects); 530k states and 15M transitions against
-``random`` (98 s, 2.1 GB) and ``noisy`` (353 s, 4.5 GB: one planner call per human
-action of each mid-cycle state). The build is pure Python and
+``random`` (47 s, 2.1 GB) and ``noisy`` (353-396 s, 4.5 GB: one planner call per human
+action of each mid-cycle state, the A* searches taking most of it). The build is pure Python and
 shows a progress bar with the states explored and known (``progress=True``, the CLI's
 default); ``max_states`` stops it with a clear :class:`OracleTooLarge` message, and so
 does the kernel's available memory falling under 512 MB, rather than exhausting memory.
