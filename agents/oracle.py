@@ -51,7 +51,7 @@ from typing import Any
 import numpy as np
 from tqdm import tqdm
 
-from hg_marl.agents.humans.base import Distribution, HumanError
+from hg_marl.agents.humans.base import HumanError
 from hg_marl.agents.humans.registry import make_human
 from hg_marl.core import Agent, Durations, Scenario, State, World
 from hg_marl.policy import Decision, Turn
@@ -155,7 +155,6 @@ class _Model:
         self.t_next: list[int] = []
         self.t_prob: list[float] = []
         self.t_tau: list[float] = []
-        self._dist: dict[tuple[State, int], Distribution] = {}
         self._answers: dict[tuple[State, int], list[tuple[int, float, float]]] = {}
         """The human's answers at a (mid-cycle state, robot action seen), as (next state's id,
         duration, probability): a mid-cycle state recurs from many robot-turn states, and the
@@ -181,12 +180,9 @@ class _Model:
         ``robot_action`` is the robot's action of the cycle if it succeeded, else -1: what
         the human sees in the environment (``base.robot_action_of``).
         """
-        key = (mid, robot_action if self._uses_robot_action else -1)
-        dist = self._dist.get(key)
-        if dist is None:
-            dist = self._dist[key] = self.human.distribution(self.world, mid, key[1])
+        seen = robot_action if self._uses_robot_action else -1
         out = []
-        for h, p in dist:
+        for h, p in self.human.distribution(self.world, mid, seen):
             if p > 0.0:
                 nxt, _, duration = self.world.table.successor(mid, Agent.HUMAN, h)
                 out.append((nxt, p, max(d_robot, duration)))
@@ -198,7 +194,6 @@ class _Model:
         answers = self._answers.get(key)
         if answers is None:
             answers = self._answers[key] = [(self._id(nxt), tau, p) for nxt, p, tau in self.replies(mid, 0.0, key[1])]
-            del self._dist[key]  # held as ids from now on
         return answers
 
     def robot_options(self, state: State) -> list[int]:

@@ -179,7 +179,6 @@ class raw_env(AECEnv):
         self.world_state = options.get("state") or self.world.initial_state(self._rng)
         self.agents = list(self.possible_agents)
         self.rewards = dict.fromkeys(self.agents, 0.0)
-        self._rewarded = False
         self._cumulative_rewards = dict.fromkeys(self.agents, 0.0)
         self.terminations = dict.fromkeys(self.agents, False)
         self.truncations = dict.fromkeys(self.agents, False)
@@ -235,15 +234,13 @@ class raw_env(AECEnv):
         if reward:
             self.tasks_solved += 1
             self.rewards = dict.fromkeys(self.agents, reward)
-            self._rewarded = True
             if self.continuing:
                 self.world_state = self.world.initial_state(self._rng)
                 events = (*events, _RESET_EVENT)
             else:
                 self._done_this_cycle = True
-        elif self._rewarded:  # the dict is replaced only when the last step was rewarded
+        else:
             self.rewards = dict.fromkeys(self.agents, 0.0)
-            self._rewarded = False
         self._last_events[agent] = events
         self.infos[name] = self._info(agent, self.world.action_names[agent][action], not out.ok, events)
         cumulative = self._cumulative_rewards

@@ -27,14 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from hg_marl.training.baselines.callbacks import RateCurve
-from hg_marl.training.baselines.comparison import (
-    BASELINE_ROBOTS,
-    CompareConfig,
-    aggregates,
-    format_aggregate,
-    format_table,
-    summarise,
-)
+from hg_marl.training.baselines.comparison import BASELINE_ROBOTS, CompareConfig, aggregates, summarise
 from hg_marl.training.baselines.envs import EnvSpec
 from hg_marl.training.baselines.evaluation import actor_rate, runner_rate
 from hg_marl.training.baselines.train import TrainConfig, train
@@ -43,18 +36,6 @@ from hg_marl.training.store import content_key, scenario_content
 from hg_marl.training.sweep import store_of
 
 log = logging.getLogger(__name__)
-
-__all__ = [
-    "BASELINE_ROBOTS",
-    "CompareConfig",
-    "aggregates",
-    "cell_fields",
-    "compare",
-    "format_aggregate",
-    "format_table",
-    "reference_rates",
-    "summarise",
-]
 
 
 def _trainer_fingerprint() -> dict[str, str]:

@@ -147,7 +147,7 @@ def aggregates(
 
     A task is a human (with an oracle rate), a run a training seed; the probability of
     improvement is given for each pair of algorithms (see :mod:`hg_marl.training.aggregate`).
-    Empty when no algorithm has two seeds on some human (no interval to draw).
+    Empty with fewer than two training seeds (no interval to draw) or no oracle rate.
     """
     rows = [
         {

@@ -53,7 +53,8 @@ def register(app: typer.Typer) -> None:
         out: Annotated[Path, typer.Option(help="Output directory (resumable).")] = DEFAULT_OUT,
     ) -> None:
         """Train each algorithm against each human, evaluate on the runner's protocol, report vs the oracle."""
-        from hg_marl.training.baselines.compare import compare, format_aggregate, format_table
+        from hg_marl.training.baselines.compare import compare
+        from hg_marl.training.baselines.comparison import format_aggregate, format_table
         from hg_marl.training.baselines.hyperparams import check_algo
 
         names = checked(lambda: tuple(check_algo(a) for a in _names(algos)))
