@@ -263,3 +263,15 @@ def test_low_memory_stops_the_build_with_the_limit_named(monkeypatch: pytest.Mon
     assert "less than 512 MB of memory left" in message and "\n" not in message
     known = int(message.split("stopped at ")[1].split(" states")[0])
     assert known > 16384  # the first check comes after 16,384 states were explored, not at every state
+
+
+def test_memory_is_checked_again_every_16384_states(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Memory that runs low after the first check stops the build at the second one (32,768 states explored)."""
+    from hg_marl.agents import oracle as oracle_module
+
+    readings = iter([8 * 2**30])  # plenty at the first check, then 100 MB
+    monkeypatch.setattr(oracle_module, "_available_bytes", lambda: next(readings, 100 * 2**20))
+    with pytest.raises(oracle_module.OracleTooLarge) as refused:
+        oracle_module.oracle_rate("roboergosum", "no_handover")  # 65k states: two checks on the way
+    known = int(str(refused.value).split("stopped at ")[1].split(" states")[0])
+    assert known > 32768
