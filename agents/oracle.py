@@ -197,10 +197,13 @@ class _Model:
         return answers
 
     def robot_options(self, state: State) -> list[int]:
+        """The feasible robot actions, plus the first infeasible one standing for them all (``failed_actions``)."""
         feasible = self.world.feasible_indices(state, Agent.ROBOT)
-        if self.failed_actions and len(feasible) < len(self.robot_acts):
+        if self.failed_actions:
             taken = set(feasible)
-            feasible.append(next(i for i in range(len(self.robot_acts)) if i not in taken))
+            failing = next((i for i in range(len(self.robot_acts)) if i not in taken), None)
+            if failing is not None:
+                feasible.append(failing)
         return feasible
 
     def build(self, roots: list[State]) -> None:
