@@ -58,6 +58,11 @@ class Durations:
         """The shortest duration: a lower bound on the length of a cycle."""
         return min(float(getattr(self, f.name)) for f in fields(self))
 
+    @property
+    def longest(self) -> float:
+        """The longest duration (a cycle lasts at most this, plus any charged decision time)."""
+        return max(float(getattr(self, f.name)) for f in fields(self))
+
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any], source: str = "<config>") -> Durations:
         """Build from a mapping such as a TOML table, naming any bad field (NaN and infinity are refused).
