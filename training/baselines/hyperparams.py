@@ -150,7 +150,7 @@ def load_hyperparams(
     policy = merged.pop("policy", "MlpPolicy")
     if not isinstance(policy, str):
         raise HyperparamError(f"{algo}: policy: expected a policy class name, got {policy!r}")
-    check_kwargs(merged, f"{algo}:", HyperparamError)
+    check_kwargs(merged, f"{algo} hyperparameter", HyperparamError)
     n_steps = merged.get("n_steps")
     if algo in ("ppo", "maskable_ppo") and isinstance(n_steps, int) and n_steps * n_envs < 2:
         raise HyperparamError(f"{algo}: n_steps x n_envs must be at least 2 (a rollout of one step has no advantage)")
