@@ -132,13 +132,6 @@ def load_hyperparams(
                 raise HyperparamError(f"override {item!r}: {k!r} is not a mapping")
             target = nested
         target[keys[-1]] = value
-    known = set(accepted_keys(algo))
-    unknown = sorted(k for k in merged if k not in known and k not in OWN_KEYS)
-    if unknown:
-        raise HyperparamError(
-            f"{algo}: unknown hyperparameter(s) {', '.join(unknown)}; accepted: "
-            f"{', '.join(OWN_KEYS)}, {', '.join(sorted(known))}"
-        )
     n_envs = check_int(merged.pop("n_envs", 1), f"{algo}: n_envs", minimum=1, maximum=MAX_ENVS, error=HyperparamError)
     n_timesteps = check_int(
         merged.pop("n_timesteps", 100_000),
@@ -151,6 +144,13 @@ def load_hyperparams(
     if not isinstance(policy, str):
         raise HyperparamError(f"{algo}: policy: expected a policy class name, got {policy!r}")
     check_kwargs(merged, f"{algo} hyperparameter", HyperparamError)
+    known = set(accepted_keys(algo))
+    unknown = sorted(k for k in merged if k not in known and k not in OWN_KEYS)
+    if unknown:
+        raise HyperparamError(
+            f"{algo}: unknown hyperparameter(s) {', '.join(unknown)}; accepted: "
+            f"{', '.join(OWN_KEYS)}, {', '.join(sorted(known))}"
+        )
     n_steps = merged.get("n_steps")
     if algo in ("ppo", "maskable_ppo") and isinstance(n_steps, int) and n_steps * n_envs < 2:
         raise HyperparamError(f"{algo}: n_steps x n_envs must be at least 2 (a rollout of one step has no advantage)")
