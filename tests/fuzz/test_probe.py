@@ -106,8 +106,9 @@ def _rename_facts(lines: list[dict]) -> None:
     lines[0]["fact_names"] = [n.replace("tape", "cup") for n in lines[0]["fact_names"]]
 
 
-def _raw_field(lines: list[dict]) -> None:
-    lines[-1]["clock"] = "INF_PLACEHOLDER"
+def _infinite(index: int, key: str) -> Callable[[list[dict]], None]:
+    """``1e400`` in the file (JSON has no infinity, but Python reads 1e400 as one)."""
+    return _set(index, **{key: "INF_PLACEHOLDER"})
 
 
 TRACE_EDITS: dict[str, tuple[Callable[[list[dict]], None], str]] = {
@@ -116,7 +117,9 @@ TRACE_EDITS: dict[str, tuple[Callable[[list[dict]], None], str]] = {
     "end tasks 10**6": (_set(-1, tasks_solved=10**6), "'tasks_solved'"),
     "end rewards text": (_set(-1, rewards="lots"), "'rewards'"),
     "end clock text": (_set(-1, clock="late"), "'clock'"),
-    "end clock infinite": (_raw_field, "'clock'"),
+    "end clock infinite": (_infinite(-1, "clock"), "'clock'"),
+    "end rewards infinite": (_infinite(-1, "rewards"), "'rewards'"),
+    "response time infinite": (_infinite(2, "response_time"), "'response_time'"),
     "step clock back": (_set(3, clock=-0.5), "'clock'"),
     "step tasks jump": (_set(2, tasks_solved=7), "'tasks_solved'"),
     "step tasks float": (_set(2, tasks_solved=0.5), "'tasks_solved'"),
