@@ -152,8 +152,33 @@ def test_infeasible_request_is_refused_and_hybrid_shows_its_weights(browser: Any
     weights = page.eval_on_selector_all("#weights td:first-child", "els => els.map(e => e.textContent)")
     assert "h_habit" in weights and "h_planner" in weights
     status = page.evaluate(
-        "async () => (await fetch('/act', {method: 'POST', body: JSON.stringify({action: 0})})).status"
+        """async () => (await fetch('/act', {method: 'POST', body: JSON.stringify({action: 0}), headers: {
+             'content-type': 'application/json',
+             'x-play-token': document.querySelector('meta[name="play-token"]').content}})).status"""
     )
     feasible = {c.index for c in session.choices()}
     assert (status == 409) == (0 not in feasible)
     assert len(session.response_times) == (0 if 0 not in feasible else 1)
+
+
+def test_another_origin_cannot_play_or_quit(browser: Any, game: Any) -> None:
+    """What a hostile page can make the browser send: simple (no-preflight) requests."""
+    session, page = game(browser)
+    url = page.url.split("?")[0]
+    other = browser.new_page()
+    other.goto("about:blank")
+    for path, body in (("act", '{"action": 0}'), ("act", '{"action": 17}'), ("quit", "{}")):
+        other.evaluate(
+            "async ([u, b]) => { try { await fetch(u, {method: 'POST', mode: 'no-cors', body: b,"
+            " headers: {'content-type': 'text/plain'}}); } catch (e) {} }",
+            [url + path, body],
+        )
+    # a form post navigates a frame with the cookie-less, token-less request
+    other.set_content(
+        f'<form method="post" action="{url}act" enctype="text/plain"><input name=\'{{"action":0,"x":"\' value=\'"}}\'>'
+        "</form><script>document.forms[0].submit()</script>"
+    )
+    other.wait_for_load_state()
+    assert "403" in other.content() or "refused" in other.content()
+    assert session.response_times == [] and not session.closed
+    assert page.evaluate("async () => (await fetch('/board')).status") == 200  # the own page still works

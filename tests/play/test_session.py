@@ -148,3 +148,31 @@ def test_play_command_in_the_terminal_and_bad_robot(tmp_path: Path, monkeypatch:
     with pytest.raises(SystemExit) as stop:
         main()
     assert stop.value.code == 2
+
+
+@pytest.mark.parametrize(
+    "args,message",
+    [
+        (["--port", "-1"], "--port -1: expected 0 (a free port) to 65535"),
+        (["--port", "70000"], "--port 70000: expected 0 (a free port) to 65535"),
+        (["--record", "FILE"], "--record FILE: expected a directory for the traces, not a file"),
+        (["--tui", "--record", "FILE/sub"], "not a file (FILE is a file)"),
+    ],
+)
+def test_play_bad_port_or_record_is_one_line(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str], args: list[str], message: str
+) -> None:
+    from hg_marl.training.cli import main
+
+    pytest.importorskip("starlette")
+    target = tmp_path / "taken.jsonl"
+    target.write_text("keep")
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(
+        "sys.argv", ["hg-marl", "play", "--no-browser", *[a.replace("FILE", str(target)) for a in args]]
+    )
+    with pytest.raises(SystemExit) as stop:
+        main()
+    err = capsys.readouterr().err.strip()
+    assert stop.value.code == 2 and err.count("\n") == 0 and message.replace("FILE", str(target)) in err
+    assert target.read_text() == "keep" and not (tmp_path / "runs").exists()
