@@ -118,6 +118,16 @@ def play_one_task(page: Any, session: PlaySession, by: str, shots: str | None = 
             page.keyboard.press(key)
         page.wait_for_selector(f'#status[data-moves="{n + 1}"]')
         moves.append(name)
+        why = page.text_content("#why")
+        assert why.startswith(f"{session.last_robot.name}, proposed by the planner.")
+        assert "weight amplitude" not in why, "a planner has no habit: no habit numbers"
+        expects = session.last_robot.expects
+        assert (f"Its plan expects you to {expects} next." in why) == bool(expects)
+        pending = page.text_content("#pending")
+        offer = session.state.offer_by == 0
+        assert "Your turn." in pending and ("The robot is offering you" in pending) == offer
+        handed = bool(moves) and moves[-1].startswith("give(") and session.last_robot.name == "take" + moves[-1][4:]
+        assert pending.startswith("Handover done: you gave") == handed
         if shots and name.startswith("give(") and not handover_shot:
             page.screenshot(path=str(ARTIFACTS / f"{shots}-after-handover.png"), full_page=True)
             handover_shot = True
@@ -129,14 +139,30 @@ def test_play_a_whole_task_and_replay_it(browser: Any, game: Any, by: str) -> No
     ARTIFACTS.mkdir(exist_ok=True)
     session, page = game(browser)
     assert page.title() == "hg-marl: play the human"
+    intro = page.text_content("#intro")
+    assert "every object into the bin." in intro and "colour" not in intro  # paper2015: one bin, any object
+    # the robot's locations stand under what they reach: bin_side under the trashbin
+    loc = page.eval_on_selector_all(
+        "#table g.location circle, #table g.bin rect",
+        "els => els.map(e => [e.parentElement.dataset.name, e.getBBox().x + e.getBBox().width / 2])",
+    )
+    x = dict(loc)
+    assert abs(x["bin_side"] - x["trashbin"]) < abs(x["table_left"] - x["trashbin"])
     page.screenshot(path=str(ARTIFACTS / f"play-{by}-start.png"), full_page=True)
     moves, n = play_one_task(page, session, by, shots=f"play-{by}")
     assert session.tasks_solved == 1 and len(moves) == n
     assert "give(tape3)" in moves, "paper2015's human tape only reaches the bin through the robot"
     assert page.text_content("#robot-expert") == "planner"
+    assert page.text_content("#solved").startswith("Task solved! That makes 1 task at t = ")
     page.screenshot(path=str(ARTIFACTS / f"play-{by}-solved.png"), full_page=True)
     page.click("#quit")
     page.wait_for_selector("#done")
+    summary = page.text_content("#summary")
+    assert f"played {len(moves)} moves with the robot planner on paper2015 (seed 0): 1 task solved" in summary
+    numbers = dict(page.eval_on_selector_all("#numbers tr", "rs => rs.map(r => [...r.cells].map(c => c.textContent))"))
+    assert numbers["tasks solved"] == "1" and numbers["your moves"] == str(len(moves))
+    assert numbers["handovers: you gave"] == str(moves.count("give(tape3)"))
+    page.screenshot(path=str(ARTIFACTS / f"play-{by}-finish.png"), full_page=True)
     trace = session.trace_path
     assert trace is not None and trace.exists()
     replay = replay_run(trace)
@@ -151,6 +177,14 @@ def test_infeasible_request_is_refused_and_hybrid_shows_its_weights(browser: Any
     assert page.text_content("#robot-expert") in ("planner", "habit")
     weights = page.eval_on_selector_all("#weights td:first-child", "els => els.map(e => e.textContent)")
     assert "h_habit" in weights and "h_planner" in weights
+    r = session.last_robot
+    assert r is not None
+    why = page.text_content("#why")
+    # the criterion's numbers in words: the uncertainties as percentages, the higher value wins
+    assert f"habit {100 * r.weights['h_habit']:.0f}%, planner {100 * r.weights['h_planner']:.0f}%" in why
+    winner = "planner" if r.weights["value_planner"] > r.weights["value_habit"] else "habit"
+    assert f"higher wins: {winner}" in why and r.expert == winner
+    page.screenshot(path=str(ARTIFACTS / "play-hybrid.png"), full_page=True)
     status = page.evaluate(
         """async () => (await fetch('/act', {method: 'POST', body: JSON.stringify({action: 0}), headers: {
              'content-type': 'application/json',

@@ -112,24 +112,39 @@ def test_robot_move_reads_the_typed_decision_record(paper) -> None:
         name = "random"
 
     typed = robot_move(Typed(), paper, 17, True)
-    # the non-finite stat is dropped; the weight amplitude is shown beside the criterion's numbers
+    # the non-finite stat is dropped; the habit acted, so its weight amplitude is kept
     assert (typed.expert, typed.decision_time, typed.failed) == ("habit", 0.25, True)
-    assert dict(typed.weights) == {"vpi": 0.5, "weight_amplitude": 2.0}
+    assert dict(typed.weights) == {"vpi": 0.5} and typed.weight_amplitude == 2.0
     # an actor without a record is shown under its name
     assert robot_move(Nothing(), paper, 17, False).expert == "random"
 
 
 def test_terminal_front_end_by_scripted_input(tmp_path: Path) -> None:
     session = PlaySession("planner", seed=0, record=tmp_path, frontend="terminal")
-    script = iter(["1", "w", "zz", "w", "w", "1", "q"])  # pick(tape3), ..., give(tape3)
+    keys = iter(["1", "w", "0", "w", "w", "1", "q"])  # pick(tape3), wait, (no such key), wait, wait, give(tape3)
+    feasible_at_the_bad_key: list[str] = []
+
+    def read() -> str:
+        key = next(keys)
+        if key == "0":  # what the rules allow now, read from the world's mask
+            mask = session.world.mask(session.state, Agent.HUMAN)
+            names = session.world.action_names[Agent.HUMAN]
+            feasible_at_the_bad_key.extend(n for n, ok in zip(names, mask, strict=True) if ok)
+        return key
+
     out = io.StringIO()
-    summary = play_terminal(session, Console(file=out, width=120), read=lambda prompt: next(script))
+    summary = play_terminal(session, Console(file=out, width=200, force_terminal=True), read=read)
     text = out.getvalue()
     (episode,) = read_trace(Path(str(summary["trace"])))
     names = [s["action_name"] for s in episode.steps]
     assert names == ["pick(tape3)", "wait", "wait", "wait", "give(tape3)"]
-    assert "unknown action 'zz'" in text and "robot: take(tape3)" in text
+    (answer,) = [line for line in text.splitlines() if "'0' is not a key here" in line]
+    offered = [item.split(" ", 1)[1] for item in answer.split("your moves: ")[1].split("; q")[0].split(", ")]
+    assert offered == feasible_at_the_bad_key and len(offered) < len(session.world.action_names[Agent.HUMAN])
+    assert "robot: take(tape3), proposed by the planner" in text
+    assert "\x1b[" in text, "redrawn in place (cursor control), not reprinted"
     assert episode.header["meta"]["frontend"] == "terminal" and summary["moves"] == 5
+    assert "played 5 moves with the robot planner" in text
     assert json.loads(Path(str(summary["trace"])).read_text().splitlines()[-1])["type"] == "end"
 
 
@@ -138,7 +153,7 @@ def test_play_command_in_the_terminal_and_bad_robot(tmp_path: Path, monkeypatch:
 
     from hg_marl.training.cli import app, main
 
-    result = CliRunner().invoke(app, ["play", "--tui", "--record", str(tmp_path), "--player", "cli"], input="1\nq\n")
+    result = CliRunner().invoke(app, ["play", "--tui", "--record", str(tmp_path), "--player", "cli"], input="1q")
     assert result.exit_code == 0, result.output
     assert "1 moves, 0 tasks" in result.output
     (trace,) = tmp_path.glob("*.jsonl")

@@ -71,8 +71,20 @@ class RobotMove:
     failed: bool
     """Whether its preconditions failed (no effect)."""
     weights: Mapping[str, float] = field(default_factory=dict)
-    """The MetaController's numbers behind the choice (hybrid robots), plus the habit's
-    weight amplitude; empty for robots without one."""
+    """The MetaController criterion's numbers behind the choice (hybrid robots; finite
+    values only); empty for robots without one."""
+    weight_amplitude: float | None = None
+    """The habit's weight amplitude; None for a robot without a habit."""
+    reason: str = ""
+    """Why this expert (the record's reason code, see :data:`~hg_marl.training.play.explain.REASONS`)."""
+    expects: str = ""
+    """The person's move the robot's plan expects next (its name; "" when none)."""
+    planner_consulted: bool = False
+    """Whether the planner was asked."""
+    planner_success: bool = False
+    """Whether it found a plan."""
+    planner_nodes: int = 0
+    """Search nodes it expanded."""
 
 
 def robot_move(robot: Actor, world: World, action: int, failed: bool) -> RobotMove:
@@ -80,20 +92,31 @@ def robot_move(robot: Actor, world: World, action: int, failed: bool) -> RobotMo
 
     :func:`hg_marl.policy.decision_of` gives every actor a :class:`~hg_marl.policy.Decision`
     (one naming its class if it keeps none), so any robot can be shown; the MetaController's
-    numbers are the record's ``stats``, plus the habit's weight amplitude.
+    numbers are the record's ``stats``. The habit's weight amplitude is kept only when the
+    robot has a habit (it proposed, or acted).
     """
     record = decision_of(robot)
     weights: dict[str, float] = {}
-    for key, value in (*record.stats, ("weight_amplitude", record.weight_amplitude)):
+    for key, value in record.stats:
         if isinstance(value, int | float) and not isinstance(value, bool) and np.isfinite(value):
             weights[str(key)] = float(value)
+    has_habit = record.habit_action >= 0 or record.expert == "habit"
+    amplitude = float(record.weight_amplitude)
+    expected = int(record.expected_human_action)
+    names = world.action_names
     return RobotMove(
         action=action,
-        name=world.action_names[Agent.ROBOT][action],
+        name=names[Agent.ROBOT][action],
         expert=str(record.expert),
         decision_time=float(record.decision_time),
         failed=failed,
         weights=weights,
+        weight_amplitude=amplitude if has_habit and np.isfinite(amplitude) else None,
+        reason=str(record.reason),
+        expects=names[Agent.HUMAN][expected] if 0 <= expected < len(names[Agent.HUMAN]) else "",
+        planner_consulted=bool(record.planner_consulted),
+        planner_success=bool(record.planner_success),
+        planner_nodes=int(record.planner_nodes),
     )
 
 

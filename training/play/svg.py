@@ -70,7 +70,8 @@ def table_svg(world: World, state: State) -> str:
         parts.append(
             f'<g class="object" data-name="{escape(name)}" data-place="{escape(place_name(world, state.where[o]))}">'
             f'<rect x="{x - 9}" y="{y - 9}" width="18" height="18" fill="{_rgb(object_colour(world, o))}" '
-            f'stroke="black"/><text x="{x}" y="{y + 22}" font-size="10" text-anchor="middle">{escape(name)}</text></g>'
+            f'stroke="black"/><text x="{x}" y="{y + 22}" font-size="10" text-anchor="middle" stroke="white" '
+            f'stroke-width="3" paint-order="stroke">{escape(name)}</text></g>'
         )
     if state.offer_by >= 0:
         x, y = lay.offer(state)

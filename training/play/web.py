@@ -49,6 +49,7 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from hg_marl.core import Agent
 from hg_marl.core.errors import ConfigError, HgMarlError
+from hg_marl.training.play import explain
 from hg_marl.training.play.session import PlaySession
 from hg_marl.training.play.svg import table_svg
 
@@ -183,12 +184,19 @@ async def json_body(request: Request) -> Any:
 
 
 _STYLE = """
-body{font-family:system-ui,sans-serif;margin:1em;max-width:1100px}
+body{font-family:system-ui,sans-serif;margin:1em;max-width:1150px;color:#222}
+#intro{font-size:14px;color:#333;margin:0 0 .6em 0}
 #actions button{margin:3px;padding:6px 10px;font-size:15px}
+#actions p{margin:.2em 0}
+#error{margin:.2em 0;color:#b00}
 kbd{background:#eee;border:1px solid #aaa;border-radius:3px;padding:0 4px;margin-right:4px}
-.panel{display:inline-block;vertical-align:top;margin-right:2em}
+.panel{display:inline-block;vertical-align:top;margin-right:2em;max-width:560px}
+.panel h3{margin:.3em 0;font-size:16px}
+#why{margin:.2em 0;padding-left:1.2em;font-size:14px}
 table.w td{padding:0 8px;font-family:monospace}
-#error{color:#b00}
+#pending{font-weight:bold;margin:.4em 0}
+.solved{background:#d9f2d9;border:1px solid #5a5;padding:.4em .8em;border-radius:4px;font-weight:bold}
+.bad{color:#b00}
 """
 
 _SCRIPT = """
@@ -220,40 +228,59 @@ document.addEventListener('keydown', e => {
 """
 
 
+def _lines(element_id: str, lines: list[str]) -> str:
+    items = "".join(f"<li>{escape(line)}</li>" for line in lines)
+    return f'<ul id="{element_id}">{items}</ul>'
+
+
 def board_html(session: PlaySession) -> str:
-    """The changing part of the page."""
+    """The changing part of the page: status, messages, the table, why the robot acted, choices."""
     world, state = session.world, session.state
     sc = world.scenario
     held = {a: world.holding(state, a) for a in Agent}
     holds = {a: sc.objects[o] if o >= 0 else "nothing" for a, o in held.items()}
     r = session.last_robot
-    robot = "-"
-    weights = ""
+    robot = "<p>The robot has not moved yet.</p>"
+    numbers = ""
     if r is not None:
-        failed = " (failed: no effect)" if r.failed else ""
         robot = (
-            f'<span id="robot-action">{escape(r.name)}</span>{failed}, proposed by '
-            f'<b id="robot-expert">{escape(r.expert)}</b>, decided in {r.decision_time:.2f} s'
+            f'<p>Robot: <b id="robot-action">{escape(r.name)}</b> by <b id="robot-expert">{escape(r.expert)}</b>'
+            f"{' <span class=bad>(failed)</span>' if r.failed else ''}</p>" + _lines("why", explain.why(r))
         )
         if r.weights:
             rows = "".join(f"<tr><td>{escape(k)}</td><td>{v:.3f}</td></tr>" for k, v in r.weights.items())
-            weights = f'<table class="w" id="weights"><caption>MetaController</caption>{rows}</table>'
+            numbers = (
+                "<details><summary>the criterion's raw numbers</summary>"
+                f'<table class="w" id="weights">{rows}</table></details>'
+            )
+    solved = ""
+    if session.just_solved:
+        n = session.tasks_solved
+        solved = (
+            f'<p id="solved" class="solved">Task solved! That makes {n} task{"s" if n != 1 else ""} '
+            f"at t = {session.solved_at[-1]:.1f} s. The table is laid out again for the next one.</p>"
+        )
     buttons = "".join(
         f'<button data-action="{c.index}" data-key="{c.key}"><kbd>{c.key}</kbd>{escape(c.name)}</button>'
         for c in session.choices()
     )
+    waiting = explain.pending(world, state, session.last_human, r.name if r is not None else "")
+    offer = f"{Agent(state.offer_by).label}:{sc.objects[state.offer_obj]}" if state.offer_by >= 0 else ""
     return (
         f'<div id="status" data-clock="{session.clock:.3f}" data-tasks="{session.tasks_solved}" '
         f'data-moves="{len(session.response_times)}">'
         f"<b>t = {session.clock:.1f} s</b> &nbsp; tasks solved: <b>{session.tasks_solved}</b> &nbsp; "
         f"cycle {session.cycle} &nbsp; robot: {escape(session.robot_spec)}</div>"
+        f"{solved}"
+        f'<p id="pending" data-offer="{escape(offer)}">{escape(waiting)}</p>'
         f"{table_svg(world, state)}"
-        f'<div class="panel"><p>Robot: {robot}</p>{weights}</div>'
-        f'<div class="panel"><p>You: <span id="human-action">{escape(session.last_human or "-")}</span></p>'
-        f'<p id="holding" data-robot="{escape(holds[Agent.ROBOT])}" data-human="{escape(holds[Agent.HUMAN])}">'
-        f"robot holds {escape(holds[Agent.ROBOT])}, you hold {escape(holds[Agent.HUMAN])}</p></div>"
-        f'<div id="actions"><p>Your move (click or press the key):</p>{buttons}</div>'
+        f'<div id="actions"><p>Your move (click, or press the key):</p>{buttons}</div>'
         f'<p id="error"></p>'
+        f'<div class="panel why"><h3>What the robot did and why</h3>{robot}{numbers}</div>'
+        f'<div class="panel"><h3>You</h3><p>Your last move: <span id="human-action">'
+        f"{escape(session.last_human or '-')}</span></p>"
+        f'<p id="holding" data-robot="{escape(holds[Agent.ROBOT])}" data-human="{escape(holds[Agent.HUMAN])}">'
+        f"The robot holds {escape(holds[Agent.ROBOT])}; you hold {escape(holds[Agent.HUMAN])}.</p></div>"
     )
 
 
@@ -263,9 +290,7 @@ def page_html(session: PlaySession, token: str) -> str:
         "<!doctype html><html><head><meta charset='utf-8'><title>hg-marl: play the human</title>"
         f'<meta name="play-token" content="{escape(token)}">'
         f'<style>{_STYLE}</style></head><body><div id="game"><h2>Clean the table with the robot</h2>'
-        "<p>You are the human (top). Every object must go into a bin of its colour; the robot reaches "
-        "the blue spots, you the red ones, both the purple ones. A handover is a give, then a take "
-        "on the very next turn.</p>"
+        f"{_lines('intro', explain.intro(session.world))}"
         f'<div id="board">{board_html(session)}</div>'
         '<p><button id="quit">Finish and save</button></p></div>'
         f"<script>{_SCRIPT}</script></body></html>"
@@ -273,12 +298,28 @@ def page_html(session: PlaySession, token: str) -> str:
 
 
 def finish_html(session: PlaySession) -> str:
-    """The finish page: the game summarised in words and numbers."""
+    """The finish page: the game summarised in words, then the numbers behind them."""
     s = session.summary()
+    rt = s["mean_response_time"]
+    rows = [
+        ("player", s["player"]),
+        ("robot", s["robot"]),
+        ("scenario (seed)", f"{session.world.scenario.name} ({session.seed})"),
+        ("tasks solved", s["tasks_solved"]),
+        ("simulated time", f"{s['clock']:.1f} s"),
+        ("your moves", s["moves"]),
+        ("mean response time", "-" if rt is None else f"{rt:.2f} s"),
+        ("tasks solved at", ", ".join(f"{t:.1f} s" for t in session.solved_at) or "-"),
+        *((f"handovers: {k.replace('_', ' ')}", v) for k, v in s["handovers"].items()),
+        *((f"robot moves by the {k}", v) for k, v in sorted(s["experts"].items())),
+    ]
+    table = "".join(f"<tr><td>{escape(str(k))}</td><td>{escape(str(v))}</td></tr>" for k, v in rows)
     trace = f'<p>Trace saved: <code id="trace">{escape(s["trace"])}</code></p>' if s["trace"] else ""
     return (
-        f'<h2 id="done">Game over</h2><p id="summary">{escape(session.summary_text())}</p>{trace}'
-        "<p>You can close this tab.</p>"
+        f'<h2 id="done">Game over</h2><p id="summary">{escape(session.summary_text())}</p>'
+        f'<table class="w" id="numbers">{table}</table>{trace}'
+        "<p>Replay it or clone your play with the commands in the README (Play and watch). "
+        "You can close this tab.</p>"
     )
 
 
