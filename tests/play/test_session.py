@@ -191,3 +191,46 @@ def test_play_bad_port_or_record_is_one_line(
     err = capsys.readouterr().err.strip()
     assert stop.value.code == 2 and err.count("\n") == 0 and message.replace("FILE", str(target)) in err
     assert target.read_text() == "keep" and not (tmp_path / "runs").exists()
+
+
+def test_play_tui_takes_one_key_per_move_in_a_real_terminal(tmp_path: Path) -> None:
+    """In a pseudo-terminal, keys without Enter play moves (the terminal is in cbreak mode)."""
+    import os
+    import pty
+    import select
+    import subprocess
+    import sys
+    import time
+
+    main_fd, child_fd = pty.openpty()
+    code = "from hg_marl.training.cli import main; main()"
+    args = [sys.executable, "-c", code, "play", "--tui", "--record", str(tmp_path), "--player", "pty"]
+    proc = subprocess.Popen(args, stdin=child_fd, stdout=child_fd, stderr=child_fd, close_fds=True)
+    os.close(child_fd)
+    seen = b""
+
+    def wait_for(text: bytes, timeout: float = 60.0) -> None:
+        nonlocal seen
+        end = time.monotonic() + timeout
+        while text not in seen:
+            assert time.monotonic() < end, seen[-2000:]
+            if select.select([main_fd], [], [], 0.1)[0]:
+                try:
+                    seen += os.read(main_fd, 65536)
+                except OSError:  # the child closed the terminal
+                    assert text in seen, seen[-2000:]
+
+    try:
+        wait_for(b"finish and save")
+        os.write(main_fd, b"1")  # pick(tape3): no Enter
+        wait_for(b"you:   pick(tape3)")
+        os.write(main_fd, b"q")
+        wait_for(b"trace saved")
+        assert proc.wait(timeout=30) == 0
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+        os.close(main_fd)
+    (trace,) = tmp_path.glob("*.jsonl")
+    (episode,) = read_trace(trace)
+    assert [s["action_name"] for s in episode.steps] == ["pick(tape3)"]

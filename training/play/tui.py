@@ -4,8 +4,8 @@ One screen, redrawn in place (rich's ``Live``) after every move: the scenario's 
 the table as text, what is pending (an offer, your turn), a message when a task is
 solved, what the robot did and why (the same words as the web page, from
 :mod:`~hg_marl.training.play.explain`), then the person's feasible actions with their
-keys. One key per move, no Enter (the terminal is put in cbreak mode while a key is
-read; from a pipe, characters are read one at a time and newlines skipped). A key that
+keys. One key per move, no Enter (the terminal is in cbreak mode for the whole game;
+from a pipe, characters are read one at a time and newlines skipped). A key that
 is not offered is answered with the feasible actions only. ``q`` ends the game, saves
 the trace and prints the summary.
 """
@@ -13,7 +13,8 @@ the trace and prints the summary.
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager, nullcontext
 
 from rich.console import Console, Group, RenderableType
 from rich.live import Live
@@ -28,29 +29,37 @@ QUIT = "q"
 
 
 def read_key() -> str:
-    """One key from standard input, without waiting for Enter ("" at end of input)."""
-    stream = sys.stdin
-    if stream.isatty():
-        import termios
-        import tty
-
-        fd = stream.fileno()
-        old = termios.tcgetattr(fd)
-        try:
-            tty.setcbreak(fd)
-            return stream.read(1)
-        finally:
-            termios.tcsetattr(fd, termios.TCSADRAIN, old)
+    """One key from standard input ("" at end of input); newlines are skipped, so a
+    pipe's ``1\nq\n`` plays like the keys ``1`` then ``q``."""
     while True:
-        key = stream.read(1)
+        key = sys.stdin.read(1)
         if key not in ("\n", "\r"):
             return key
+
+
+@contextmanager
+def keys_without_enter() -> Iterator[None]:
+    """Put a terminal on standard input in cbreak mode (keys arrive as typed) for the
+    whole game, so no key typed between two reads waits for Enter; restored on exit."""
+    if not sys.stdin.isatty():
+        yield
+        return
+    import termios
+    import tty
+
+    fd = sys.stdin.fileno()
+    old = termios.tcgetattr(fd)
+    try:
+        tty.setcbreak(fd)
+        yield
+    finally:
+        termios.tcsetattr(fd, termios.TCSADRAIN, old)
 
 
 def screen(session: PlaySession, message: str = "") -> RenderableType:
     """The whole screen for the current turn; ``message`` answers the last key."""
     world = session.world
-    parts: list[RenderableType] = [Text(" ".join(explain.intro(world)), style="dim")]
+    parts: list[RenderableType] = [Text(" ".join(explain.intro(world)[1:]), style="dim")]  # no "top" here
     parts.append(Text(render_ansi(world, session.state, session.clock, session.cycle, session.tasks_solved)))
     if session.just_solved:
         n = session.tasks_solved
@@ -84,11 +93,11 @@ def play_terminal(
         read: returns the next key ("" at end of input; default :func:`read_key`); tests script it.
     """
     console = console or Console()
-    read = read or read_key
     message = ""
-    with Live(screen(session), console=console, auto_refresh=False, redirect_stdout=False) as live:
+    live = Live(screen(session), console=console, auto_refresh=False, redirect_stdout=False)
+    with keys_without_enter() if read is None else nullcontext(), live:
         while True:
-            key = read()
+            key = read() if read is not None else read_key()
             if key in ("", QUIT):
                 break
             keys = {c.key: c for c in session.choices()}
@@ -103,5 +112,5 @@ def play_terminal(
     path = session.close()
     console.print(session.summary_text(), highlight=False, markup=False)
     if path is not None:
-        console.print(f"trace saved: {path}")
+        console.print(f"trace saved: {path}", highlight=False, markup=False)
     return session.summary()
