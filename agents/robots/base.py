@@ -201,6 +201,24 @@ def stall_move(turn: Turn, rng: np.random.Generator) -> int:
     return moves[int(rng.integers(len(moves)))] if moves else wait
 
 
+def habit_stall_move(turn: Turn, q: np.ndarray, rng: np.random.Generator) -> int:
+    """The habit's best *feasible* move other than ``wait``: a learning robot's way out of a stall.
+
+    Why not the habit's proposal itself: the proposal is sampled over every action, and in
+    a stall (states the habit knows little) it is mostly infeasible, a 0.2 s no-op that
+    changes nothing the partner reacts to. Restricting the argmax to the mask keeps what the
+    habit has learnt (its preferred feasible move) and guarantees a real move; ties go to a
+    seeded draw. ``wait`` only when nothing else is feasible, as for :func:`stall_move`.
+    """
+    wait = wait_index(turn.world, turn.agent)
+    moves = np.asarray([int(i) for i in np.flatnonzero(turn.mask) if i != wait], dtype=np.int64)
+    if moves.size == 0:
+        return wait
+    values = np.asarray(q, dtype=np.float64)[moves]
+    best = moves[values >= values.max()]
+    return int(best[int(rng.integers(best.size))])
+
+
 def wait_index(world: World, agent: Agent) -> int:
     """Index of ``wait`` for ``agent``."""
     return world.index(agent, WAIT)

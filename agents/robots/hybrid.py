@@ -10,7 +10,8 @@ cost plus, when it was consulted, the planner's.
 
 The planner's model of the human is revised from what the human does (see
 :mod:`hg_marl.agents.partner`); when the partner keeps not doing what the plan expects,
-the habit acts for that decision instead of the planner (``reason="partner_stalled"``).
+the habit's best *feasible* move other than ``wait`` is taken for that decision instead of
+the planner's (``reason="partner_stalled"``; never an infeasible no-op).
 With ``partner_aware=True`` the planner plans against the most probable partner type.
 """
 
@@ -22,7 +23,7 @@ from hg_marl.agents.habit import QLearner, QLearnerConfig
 from hg_marl.agents.meta.base import Criterion, HabitView, PlanProposal
 from hg_marl.agents.meta.controller import MetaController
 from hg_marl.agents.meta.cost import CostModel
-from hg_marl.agents.robots.base import LearningRobot, plan_proposal
+from hg_marl.agents.robots.base import LearningRobot, habit_stall_move, plan_proposal
 from hg_marl.agents.robots.partnering import Partnering
 from hg_marl.core import State, World
 from hg_marl.core.errors import RobotError, check_bool
@@ -106,19 +107,20 @@ class HybridRobot(LearningRobot):
             return proposal
 
         if self.partnering.monitor.stalled:
+            move = habit_stall_move(turn, q, self.rng)
             self.partnering.monitor.fell_back()
-            self.partnering.acted(turn.state, habit_action)
-            self._remember(facts, habit_action)
+            self.partnering.acted(turn.state, move)
+            self._remember(facts, move)
             self._record(
                 "habit",
-                habit_action,
+                move,
                 habit_action=habit_action,
                 decision_time=view.cost,
                 weight_amplitude=habit.weight_amplitude,
                 reason="partner_stalled",
                 partner=self.partnering.estimate,
             )
-            return habit_action
+            return move
         decision = self.meta.decide(view, plan)
         prop = decision.plan
         if prop is not None:
