@@ -62,8 +62,10 @@ def game(tmp_path: Path) -> Iterator[Any]:
 
     servers: list[Server] = []
 
-    def start(browser: Any, robot: str = "planner", seed: int = 0) -> tuple[PlaySession, Any]:
-        session = PlaySession(robot, seed=seed, record=tmp_path, player="browser-test")
+    def start(
+        browser: Any, robot: str = "planner", seed: int = 0, scenario: str = "paper2015"
+    ) -> tuple[PlaySession, Any]:
+        session = PlaySession(robot, scenario=scenario, seed=seed, record=tmp_path, player="browser-test")
         server = Server(session, 0)
         server.start_in_thread()
         servers.append(server)
@@ -216,3 +218,35 @@ def test_another_origin_cannot_play_or_quit(browser: Any, game: Any) -> None:
     assert "403" in other.content() or "refused" in other.content()
     assert session.response_times == [] and not session.closed
     assert page.evaluate("async () => (await fetch('/board')).status") == 200  # the own page still works
+
+
+def test_a_robot_offer_is_shown_and_taken_on_a_coloured_scenario(browser: Any, game: Any) -> None:
+    ARTIFACTS.mkdir(exist_ok=True)
+    session, page = game(browser, scenario="roboergosum")
+    intro = page.text_content("#intro")
+    # roboergosum.toml: two bins by colour, green_bin from ROBOT_LOC, blue_bin from SECOND_LOC and the human
+    assert "every object into a bin of its colour" in intro
+    assert "green_bin (takes green objects; reached by the robot from ROBOT_LOC)" in intro
+    rims = page.eval_on_selector_all("#table g.bin", "gs => gs.map(g => [g.dataset.name, g.dataset.colour])")
+    assert dict(rims) == {"green_bin": "green", "blue_bin": "blue"}
+    for n in range(20):
+        if session.state.offer_by == 0:
+            break
+        name = "wait"
+        page.keyboard.press(buttons(page)[name][0])
+        page.wait_for_selector(f'#status[data-moves="{n + 1}"]')
+    assert session.state.offer_by == 0, "the planner hands a blue object over within 20 moves"
+    obj = session.world.scenario.objects[session.state.offer_obj]
+    assert drawn(page)["offer"] == (obj, "robot")
+    offer_text = f"Your turn. The robot is offering you {obj}: take({obj}) now, or the offer lapses."
+    assert page.text_content("#pending") == offer_text
+    assert f"take({obj})" in buttons(page)
+    page.screenshot(path=str(ARTIFACTS / "play-robot-offers.png"), full_page=True)
+    moves = len(session.response_times)
+    page.keyboard.press(buttons(page)[f"take({obj})"][0])
+    page.wait_for_selector(f'#status[data-moves="{moves + 1}"]')
+    assert page.get_attribute("#holding", "data-human") == obj  # taken: now in your hand
+    page.click("#quit")
+    page.wait_for_selector("#done")
+    numbers = dict(page.eval_on_selector_all("#numbers tr", "rs => rs.map(r => [...r.cells].map(c => c.textContent))"))
+    assert (numbers["handovers: robot gave"], numbers["handovers: you took"]) == ("1", "1")
