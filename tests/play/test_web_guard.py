@@ -110,6 +110,7 @@ HOSTILE: dict[str, tuple[dict[str, str], int]] = {
     "missing Origin": ({"origin": ""}, 403),
     "missing token": ({TOKEN_HEADER: ""}, 403),
     "wrong token": ({TOKEN_HEADER: "guess"}, 403),
+    "non-ASCII token": ({TOKEN_HEADER: "\u00e9t\u00e9"}, 403),
     "text/plain (no preflight)": ({"content-type": "text/plain"}, 415),
     "form post": ({"content-type": "application/x-www-form-urlencoded"}, 415),
 }
@@ -135,6 +136,8 @@ def test_a_cookie_alone_does_not_make_a_move(client: Client, session: PlaySessio
     [
         ("/", {}),
         ("/?token=guess", {}),
+        ("/?token=%C3%A9", {}),
+        ("/board", {TOKEN_HEADER: "\u00e9"}),
         ("/board", {}),
         ("/?token=TOKEN", {"host": "evil.example:PORT"}),
         ("/board", {"cookie": f"{COOKIE}=TOKEN", "host": "evil.example:PORT"}),

@@ -84,6 +84,10 @@ class Guard:
         self.hosts = frozenset({f"127.0.0.1:{port}", f"localhost:{port}"})
         self.origins = frozenset(f"http://{h}" for h in self.hosts)
 
+    def is_token(self, given: str) -> bool:
+        """Whether ``given`` is the token (constant-time; any text, non-ASCII included)."""
+        return secrets.compare_digest(given.encode("utf-8", "replace"), self.token.encode())
+
     def refusal(self, scope: Scope) -> tuple[int, str] | None:
         """Why a request is refused (status, message), or None when it may proceed."""
         headers = Headers(scope=scope)
@@ -97,14 +101,14 @@ class Guard:
         if scope["method"] == "POST":
             if headers.get("origin", "") not in self.origins:
                 return 403, "cross-origin request refused: only the play page can make moves"
-            if not secrets.compare_digest(headers.get(TOKEN_HEADER, ""), self.token):
+            if not self.is_token(headers.get(TOKEN_HEADER, "")):
                 return 403, f"missing or wrong {TOKEN_HEADER} header"
             if headers.get("content-type", "").split(";")[0].strip().lower() != "application/json":
                 return 415, "expected Content-Type: application/json"
             length = headers.get("content-length")
-            if length is not None and (not length.isdigit() or int(length) > MAX_BODY):
+            if length is not None and (not (length.isascii() and length.isdigit()) or int(length) > MAX_BODY):
                 return 413, f"body larger than {MAX_BODY} bytes"
-        elif not any(secrets.compare_digest(t, self.token) for t in given if t):
+        elif not any(self.is_token(t) for t in given):
             return 403, "missing or wrong token: open the URL that `hg-marl play` printed"
         return None
 
