@@ -47,6 +47,7 @@ import hashlib
 import io
 import json
 import logging
+import math
 import os
 import shutil
 import time
@@ -59,36 +60,15 @@ from typing import Any
 import pandas as pd
 
 from hg_marl.training.io import atomic_write, write_json
+from hg_marl.training.provenance import code_fingerprint, file_digest, named_files
 
 log = logging.getLogger(__name__)
 
 CLAIM_POLL = 0.2
 """Seconds between looks at a value another process is computing."""
 
-SCHEMA = 1
-"""Version of the entry layout; part of every key."""
-
-
-@functools.cache
-def code_fingerprint() -> str:
-    """SHA-256 over the sources that decide a run's outcome (game, agents, runner).
-
-    Why not the package version alone: in a working copy the version does not move when
-    a rule, a robot or a default changes, and a store that trusted it would hand back
-    results of the old code.
-    """
-    import hg_marl
-    import hg_marl.agents
-    import hg_marl.training.runner
-
-    digest = hashlib.sha256()
-    roots = [Path(hg_marl.__file__).parent, Path(hg_marl.agents.__file__).parent]
-    files = sorted(f for r in roots for f in r.rglob("*.py") if "training" not in f.relative_to(r.parent).parts)
-    files.append(Path(hg_marl.training.runner.__file__))
-    for f in files:
-        digest.update(f.name.encode())
-        digest.update(f.read_bytes())
-    return digest.hexdigest()
+SCHEMA = 2
+"""Version of the entry layout; part of every key (2: entries carry their own hash)."""
 
 
 def scenario_content(scenario: str) -> str:
@@ -108,7 +88,7 @@ def scenario_content(scenario: str) -> str:
         path = Path(text)
         if not path.is_file():
             raise ScenarioError(f"unknown scenario {text!r}: not a built-in name and not an existing file")
-        data = path.read_bytes()
+        return file_digest(path)
     return hashlib.sha256(data).hexdigest()
 
 
@@ -132,12 +112,25 @@ def _plain_tree(value: Any) -> Any:
     return json.loads(canonical(value))
 
 
-def content_key(kind: str, fields: Mapping[str, Any]) -> str:
-    """The key of a result of ``kind`` made from ``fields`` (plus schema, version and code)."""
+def key_document(kind: str, fields: Mapping[str, Any]) -> dict[str, Any]:
+    """Everything a result of ``kind`` made from ``fields`` depends on: the fields, the content of
+    every file they name (:func:`~hg_marl.training.provenance.named_files`), the entry schema,
+    the package version and the code fingerprint."""
     import hg_marl
 
-    doc = {"kind": kind, "schema": SCHEMA, "version": hg_marl.__version__, "code": code_fingerprint(), **fields}
-    return hashlib.sha256(canonical(doc).encode()).hexdigest()
+    return {
+        "kind": kind,
+        "schema": SCHEMA,
+        "version": hg_marl.__version__,
+        "code": code_fingerprint(),
+        "files": named_files(fields),
+        **fields,
+    }
+
+
+def content_key(kind: str, fields: Mapping[str, Any]) -> str:
+    """The key of a result of ``kind`` made from ``fields``: the SHA-256 of its :func:`key_document`."""
+    return hashlib.sha256(canonical(key_document(kind, fields)).encode()).hexdigest()
 
 
 def default_cost_model() -> dict[str, Any]:
@@ -263,12 +256,12 @@ class Store:
         result, log_path = folder / "result.json", folder / "log.csv.gz"
         if not result.is_file():
             return "partial (no result.json)"
-        try:
-            data = json.loads(result.read_text())
-        except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-            return f"corrupt (result.json unreadable: {str(exc).splitlines()[0]})"
-        if not isinstance(data, dict) or data.get("key") != key or not isinstance(data.get("summary"), dict):
-            return "corrupt (result.json does not describe this key)"
+        data = _read_entry(result, key)
+        if isinstance(data, str):
+            return data
+        problem = _summary_problem(data.get("summary"))
+        if problem:
+            return problem
         if not log_path.is_file() or _sha256(log_path) != data.get("log_sha256"):
             return "corrupt (log missing or changed)"
         return StoredRun(key, data.get("job", {}), data["summary"], log_path)
@@ -284,11 +277,11 @@ class Store:
         record = {
             "key": key,
             "job": job.describe(),
-            "key_fields": job.key_fields(),
+            "key_document": key_document("run", job.key_fields()),
             "summary": result.summary,
             "log_sha256": _sha256(log_path),
         }
-        write_json(folder / "result.json", record)
+        write_json(folder / "result.json", seal(record))
         return StoredRun(key, record["job"], dict(result.summary), log_path)
 
     @contextlib.contextmanager
@@ -328,20 +321,68 @@ class Store:
                     if found is not None:
                         return found[0]
                     value = compute()
-                    write_json(path, {"key": key, "kind": kind, "fields": dict(fields), "value": value})
+                    write_json(path, seal({"key": key, "kind": kind, "fields": dict(fields), "value": value}))
                     return value
             time.sleep(CLAIM_POLL)
 
     def _read_cached(self, path: Path, key: str, repair: bool = False) -> tuple[Any] | None:
         if not path.is_file():
             return None
-        try:
-            data = json.loads(path.read_text())
-            if isinstance(data, dict) and data.get("key") == key and "value" in data:
+        data = _read_entry(path, key)
+        if isinstance(data, dict):
+            if "value" in data:
                 return (data["value"],)
-        except (OSError, UnicodeDecodeError, json.JSONDecodeError):
-            pass
+            data = "incomplete (no 'value')"
         if repair:
-            log.warning("store: cached %s %s is corrupt; computing it again", path.parent.name, key[:12])
+            log.warning("store: cached %s %s is %s; computing it again", path.parent.name, key[:12], data)
             path.unlink(missing_ok=True)
         return None
+
+
+def seal(record: Mapping[str, Any]) -> dict[str, Any]:
+    """``record`` with its integrity hash: the SHA-256 of its canonical JSON, under ``sha256``."""
+    body = {k: v for k, v in record.items() if k != "sha256"}
+    return {**body, "sha256": hashlib.sha256(canonical(body).encode()).hexdigest()}
+
+
+def _refuse_constant(name: str) -> Any:
+    raise ValueError(f"non-finite number {name}")
+
+
+def _read_entry(path: Path, key: str) -> dict[str, Any] | str:
+    """A sealed entry of ``key``, or what is wrong with it (one phrase)."""
+    try:
+        data = json.loads(path.read_text(), parse_constant=_refuse_constant)
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError, RecursionError) as exc:
+        return f"corrupt ({path.name} unreadable: {str(exc).splitlines()[0]})"
+    except ValueError as exc:  # NaN, Infinity: never written by this store
+        return f"non-finite ({path.name} holds a {str(exc).removeprefix('non-finite number ')})"
+    if not isinstance(data, dict) or data.get("key") != key:
+        return f"corrupt ({path.name} does not describe this key)"
+    if not isinstance(data.get("sha256"), str):
+        return f"incomplete ({path.name} has no sha256)"
+    if seal(data)["sha256"] != data["sha256"]:
+        return f"tampered ({path.name} does not match its sha256)"
+    return data
+
+
+@functools.cache
+def _summary_template() -> dict[str, Any]:
+    """What a run's summary holds: the runner's summary of an empty log (its one definition)."""
+    from hg_marl.training.runner import COLUMNS, summarise
+
+    return summarise(pd.DataFrame(columns=list(COLUMNS)), 1.0)
+
+
+def _summary_problem(summary: Any) -> str | None:
+    """Why a stored summary cannot be used (a missing key, a non-number where a number goes), or None."""
+    if not isinstance(summary, dict):
+        return "incomplete (no summary)"
+    for name, template in _summary_template().items():
+        if name not in summary:
+            return f"incomplete (summary lacks {name!r})"
+        value = summary[name]
+        number = isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)
+        if not number and not (template is None and value is None):
+            return f"corrupt (summary {name!r} is {value!r}, not a finite number)"
+    return None
