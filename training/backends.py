@@ -20,6 +20,7 @@ import ctypes
 import functools
 import multiprocessing
 import os
+import re
 import signal
 import threading
 import time
@@ -32,6 +33,45 @@ from hg_marl.training.store import Job
 
 PR_SET_PDEATHSIG = 1
 """Linux ``prctl`` option: the signal a process gets when its parent dies."""
+
+MAX_WORKERS_PER_CPU = 4
+MAX_WORKERS = 256
+"""``--workers`` is at most ``min(MAX_WORKERS, MAX_WORKERS_PER_CPU x cpu count)``: every worker
+is a Python process holding numpy and the game (~100 MB), and past a few per core they
+only compete for the same cores."""
+
+_ADDRESS = re.compile(r"^(ray://)?(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9.-]+):(\d{1,5})$")
+
+
+def max_workers() -> int:
+    """The largest accepted ``--workers`` on this machine."""
+    return min(MAX_WORKERS, MAX_WORKERS_PER_CPU * (os.cpu_count() or 1))
+
+
+def check_workers(workers: Any) -> int:
+    """``workers`` if it is an integer in ``[1, max_workers()]``.
+
+    Raises:
+        ConfigError: anything else, in one line naming ``--workers`` (0 would wait forever).
+    """
+    top = max_workers()
+    if isinstance(workers, bool) or not isinstance(workers, int) or not 1 <= workers <= top:
+        raise ConfigError(f"--workers: expected an integer from 1 to {top} (4 per CPU, at most 256), got {workers!r}")
+    return workers
+
+
+def check_address(address: str | None) -> str | None:
+    """``address`` if it is ``auto``, ``HOST:PORT`` or ``ray://HOST:PORT`` (port 1-65535), or None.
+
+    Raises:
+        ConfigError: anything else, in one line naming ``--address``.
+    """
+    if address is None or address == "auto":
+        return address
+    match = _ADDRESS.match(address)
+    if match is None or not 1 <= int(match.group(3)) <= 65535:
+        raise ConfigError(f"--address: expected auto, HOST:PORT or ray://HOST:PORT, got {address!r}")
+    return address
 
 
 def execute(job: Job) -> Any:
@@ -102,9 +142,7 @@ class LocalBackend:
     """This process (``workers=1``) or a pool of ``workers`` processes that die with it."""
 
     def __init__(self, workers: int = 1) -> None:
-        if workers < 1:
-            raise ConfigError(f"--workers: expected at least 1, got {workers}")
-        self.capacity = workers
+        self.capacity = check_workers(workers)
         self._inline: list[tuple[str, Job]] = []
         self._futures: dict[Future[Any], str] = {}
         self._pool: ProcessPoolExecutor | None = None
@@ -144,6 +182,9 @@ class RayBackend:
     """One Ray task per job, on a private local instance or a running cluster."""
 
     def __init__(self, address: str | None = None, workers: int | None = None) -> None:
+        check_address(address)
+        if workers is not None:
+            check_workers(workers)
         try:
             import ray
         except ImportError as exc:
@@ -161,9 +202,17 @@ class RayBackend:
                     configure_logging=False,
                 )
             else:
-                ray.init(address=address, log_to_driver=False, configure_logging=False)
-        cpus = int(ray.cluster_resources().get("CPU", 1))
-        self.capacity = 2 * max(1, cpus)
+                try:
+                    ray.init(address=address, log_to_driver=False, configure_logging=False)
+                except (ConnectionError, RuntimeError, ValueError) as exc:
+                    message = " ".join(str(exc).split())[:200]
+                    raise ConfigError(f"--address {address}: cannot join a Ray cluster there ({message})") from None
+        cpus = int(ray.cluster_resources().get("CPU", 0))
+        if cpus < 1:  # every task asks for one CPU: none would ever start
+            if address is None:
+                ray.shutdown()
+            raise ConfigError(f"--address {address or '(local)'}: the Ray cluster has no CPU, so no run could start")
+        self.capacity = 2 * cpus
         self._task = ray.remote(num_cpus=1, max_retries=2)(execute)
         self._refs: dict[Any, str] = {}
         self._started_here = address is None
@@ -192,8 +241,11 @@ def make_backend(name: str, workers: int = 1, address: str | None = None) -> Bac
     """The backend called ``name`` (``local`` or ``ray``).
 
     Raises:
-        ConfigError: an unknown name, or Ray missing.
+        ConfigError: an unknown name, Ray missing, a ``workers`` outside ``[1, max_workers()]``
+            or a malformed ``address``.
     """
+    check_workers(workers)
+    check_address(address)
     if name == "local":
         if address is not None:
             raise ConfigError("--address: only the ray backend joins a cluster")
