@@ -12,6 +12,11 @@ gives byte-identical results on every backend and any number of workers.
   Ray instance with ``workers`` CPUs; ``"auto"`` (or ``ray://host:port``) joins a
   running cluster, whose nodes need this package installed in the same Python. Ray is
   an optional extra (``pip install .[ray]``) imported only here, only by this class.
+
+:func:`make_backend` checks ``--workers`` (an integer from 1 to :func:`max_workers`:
+4 per CPU, at most 256; 0 would leave every Ray task waiting for a CPU forever) and
+``--address`` (``auto``, ``HOST:PORT`` or ``ray://HOST:PORT``) before anything starts, and
+a cluster that cannot be joined or has no CPU is one :class:`ConfigError` line too.
 """
 
 from __future__ import annotations
@@ -29,7 +34,8 @@ from concurrent.futures import wait as wait_futures
 from typing import Any, Protocol
 
 from hg_marl.core.errors import ConfigError
-from hg_marl.training.store import Job
+from hg_marl.training.provenance import named_files
+from hg_marl.training.store import Job, canonical, scenario_content
 
 PR_SET_PDEATHSIG = 1
 """Linux ``prctl`` option: the signal a process gets when its parent dies."""
@@ -85,7 +91,8 @@ def execute(job: Job) -> Any:
         from hg_marl.core.spec import format_spec
 
         human_spec = format_spec(job.human, job.human_params)
-        robot: Any = OracleRobot(_oracle_policy(job.scenario, human_spec), human=human_spec)
+        inputs = canonical({"scenario": scenario_content(job.scenario), "files": named_files({"h": human_spec})})
+        robot: Any = OracleRobot(_oracle_policy(job.scenario, human_spec, inputs), human=human_spec)
     else:
         robot = make_robot(job.robot, **job.robot_params)
     human = make_human(job.human, **job.human_params)
@@ -96,8 +103,12 @@ def execute(job: Job) -> Any:
 
 
 @functools.lru_cache(maxsize=16)
-def _oracle_policy(scenario: str, human: str) -> Any:
-    """The oracle's solution, solved once per worker process (every seed of a cell shares it)."""
+def _oracle_policy(scenario: str, human: str, inputs: str) -> Any:
+    """The oracle's solution, solved once per worker process (every seed of a cell shares it).
+
+    ``inputs`` (the content of the scenario and of every file the human's spec names) is
+    part of the cache key, so a policy file replaced while the process lives is solved again.
+    """
     from hg_marl.agents.oracle import oracle_rate
 
     return oracle_rate(scenario, human)

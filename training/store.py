@@ -1,33 +1,53 @@
 """A results store keyed by content: a finished run is reused only when every input is the same.
 
-A run's **key** is the SHA-256 of a canonical JSON document holding everything that
-determines its result (:meth:`Job.key_fields`): the robot's and the human's registry
-names and parameters, the scenario's *content* (the TOML text of a built-in or of a
-file, or the ``generated:...`` spec, never just a file name), the simulated duration,
-the seed, the decision-cost model, the runner's protocol switches, the package version
-and a fingerprint of the code that plays the game (:func:`code_fingerprint`: the
-sources of ``hg_marl``, ``hg_marl.agents`` and the runner). Any changed input gives a
-new key, so a changed setting can never pick up an old run; nothing else (a label, an
-output folder, the number of workers) enters the key.
+A run's **key** is the SHA-256 of a canonical JSON document (:func:`key_document`)
+holding everything that determines its result, as a content-addressed build cache
+(Bazel, Nix, ccache) keys an action by its inputs and its tool chain:
+
+- the settings (:meth:`Job.key_fields`): the robot's and the human's registry names and
+  parameters, the scenario's *content* (the TOML bytes of a built-in or a file, or the
+  ``generated:...`` spec, never just a name), the simulated duration, the seed, the
+  decision-cost model and the runner's protocol switches;
+- the content of every file those settings name (:func:`~hg_marl.training.provenance.named_files`):
+  any text, also inside a nested ``name:k=v`` spec, that names an existing file, folder
+  or model stem is keyed by its text and by the bytes the loaders read (a model header
+  *and* the weights it names; a trace; a scenario), so a replaced ``learned:path=``,
+  ``replay:path=`` or ``sb3:path=`` file gives a new key;
+- the code (:func:`~hg_marl.training.provenance.code_fingerprint`): the project modules a
+  run can execute, found by a static walk of the import graph from the backends, the
+  runner and every registry target (function-level imports included), hashed without
+  docstrings and comments; plus the third-party distributions' versions, the Python
+  version, the package version and the entry :data:`SCHEMA`.
+
+Any changed input gives a new key, so a changed setting, file or code can never pick up
+an old run; nothing else (a label, an output folder, the backend, the number of workers)
+enters the key. As in Bazel, inputs must not change *while* a study runs: a file replaced
+between its hashing and its reading by a worker is stored under the old content's key.
 
 API (all paths under the store's ``root``)::
 
     store = Store(root)
     job = Job(robot="hybrid", robot_params={"criterion": "vpi"}, human="lazy", seed=3)
     store.key(job)                  # 64 hex digits
-    store.get(job)                  # a StoredRun, or None (missing, incomplete or being written)
+    store.get(job)                  # a StoredRun, or None (missing, damaged or being written)
     with store.claim(job.key()) as held:   # True: this process owns the job until the block ends
-        if held and store.get(job, repair=True) is None:   # repair: corrupt -> one warning, removed
+        if held and store.get(job, repair=True) is None:   # repair: damaged -> one warning, removed
             store.put(job, run_result)     # atomic, fsynced, files 0644
     stored.summary, stored.tasks, stored.rate, stored.log()
     store.cached("oracle", {...}, compute)  # any other JSON result (oracle rates, training cells)
 
 Layout: ``root/runs/<k[:2]>/<k>/{result.json,log.csv.gz}`` and
-``root/cached/<kind>/<k>.json``; ``result.json`` is written last and holds the log's
-SHA-256, so an entry is complete exactly when ``result.json`` parses, names its own key
-and matches its log. Anything else (a truncated file, a log without its result, a
-changed byte) is reported in one warning line, removed and run again by whoever holds
-the claim (without the claim it may be an entry being written, and is only skipped).
+``root/cached/<kind>/<k>.json``. Every entry is **sealed** (:func:`seal`): it carries the
+SHA-256 of its own canonical JSON, and ``result.json`` (written last) also the log's
+SHA-256 and the whole key document, for people asking why a run was made. An entry is
+used only when it parses as strict JSON (no ``NaN``/``Infinity``), names its own key,
+matches its seal and its log, and its summary holds every field the runner writes
+(:func:`hg_marl.training.runner.summarise`), each a finite number. Anything else (a
+truncated file, a log without its result, a hand-edited count, a ``NaN``, a missing key)
+is reported in one warning line saying what is wrong, removed and run again by whoever
+holds the claim (without the claim it may be an entry being written, and is only
+skipped). The seal detects damage and edits, not an adversary who recomputes it (that
+would take a signing key; a store is as trusted as the folder it lives in).
 
 Claims: ``root/claims/<k>.lock`` held with an exclusive ``flock``. The kernel drops the
 lock when its process dies, so the claim of a killed study is taken over at once (the
@@ -164,7 +184,7 @@ class Job:
     """The runner charges decision time to the clock."""
 
     def key_fields(self) -> dict[str, Any]:
-        """Everything that determines this run's result."""
+        """The run's settings (:func:`content_key` adds the files they name and the code)."""
         return {
             "robot": {"name": self.robot, "params": dict(self.robot_params)},
             "human": {"name": self.human, "params": dict(self.human_params)},
