@@ -6,15 +6,15 @@ input files and of its tool chain rather than by their names or a version number
 
 **Files** (:func:`named_files`): every text in a key's fields is looked at, inside
 tables, lists and ``name:k=v`` specs (so ``switching:humans=[cooperative,learned:path=m]``
-is searched too). A text that names an existing file, a folder, or a model stem
-(``m`` for ``m.json``) is keyed by its text *and* its content, as Bazel keys an action
-by its inputs' paths and digests:
+is searched too). A text that names an existing file, a folder holding a model header, or
+a model stem (``m`` for ``m.json``) is keyed by its text *and* its content, as Bazel keys an
+action by its inputs' paths and digests:
 
 - a model header (``model.json``, ``policy.json``, a checkpoint's ``.json``; a folder
   holding one; its stem; its ``.npz``): the header's bytes and the bytes of the weights
   file it names (what :func:`hg_marl.agents.model_file.load_model_file` reads);
 - any other file (a replay trace, a scenario): its bytes;
-- any other folder: the sorted names of its entries (no loader reads such a folder).
+- a folder without a model header names nothing a loader reads, and is not keyed.
 
 A file's digest is remembered per (path, inode, size, mtime, ctime), Bazel's and
 ccache's stat cache, except for a file changed less than :data:`RACY_SECONDS` ago, which
@@ -54,6 +54,8 @@ from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
+from hg_marl.core.errors import HgMarlError
+
 RACY_SECONDS = 2.0
 """A file modified less than this long ago is hashed again at every look (see the module docstring)."""
 
@@ -88,47 +90,53 @@ def file_digest(path: Path) -> str:
     return _cached_sha256(str(path.resolve()), (st.st_ino, st.st_size, st.st_mtime_ns, st.st_ctime_ns))
 
 
-def _model_header(path: Path) -> Path | None:
-    """The model header ``path`` denotes (as the model loaders resolve it), or None."""
-    from hg_marl.agents.model_file import HEADER_NAMES
+def _model_header(path: Path) -> tuple[Path, Path | None] | None:
+    """The model header ``path`` denotes (as the model loaders resolve it) and its weights file, or None."""
+    from hg_marl.agents.model_file import HEADER_NAMES, weights_file
 
     if path.is_dir():
-        return next((path / n for n in HEADER_NAMES if (path / n).is_file()), None)
-    header = path.with_suffix(".json") if path.suffix in ("", ".npz") else path
-    if header.suffix != ".json" or not header.is_file():
+        header = next((path / n for n in HEADER_NAMES if (path / n).is_file()), None)
+    else:
+        header = path.with_suffix(".json") if path.suffix in ("", ".npz") else path
+    if header is None or header.suffix != ".json" or not header.is_file():
         return None
     try:
         data = json.loads(header.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, ValueError, RecursionError):
         return None
-    return header if isinstance(data, dict) and isinstance(data.get("file"), str) else None
+    if not isinstance(data, dict) or "file" not in data:
+        return None
+    try:
+        weights: Path | None = weights_file(header, data)
+    except HgMarlError:  # a header the loader refuses: its own bytes are the content
+        weights = None
+    return header, weights
 
 
 def path_content(text: str) -> dict[str, str] | None:
-    """What a path-like text names, as ``{relative file: sha256}``, or None when it names nothing."""
+    """The content a path-like text names, as ``{file name: sha256}``, or None when it names nothing.
+
+    A model (header, its folder, stem or weights) is its header and weights; any other
+    file is its bytes; a folder without a model header names nothing a loader reads.
+    """
     if not text or len(text) > 4096 or "\0" in text:
         return None
     path = Path(text)
     try:
-        header = _model_header(path)
-        if header is not None:
+        model = _model_header(path)
+        if model is not None:
+            header, weights = model
             out = {header.name: file_digest(header)}
-            weights = header.parent / str(json.loads(header.read_text(encoding="utf-8"))["file"])
-            if Path(weights.name).name == weights.name and weights.is_file():
+            if weights is not None and weights.is_file():
                 out[weights.name] = file_digest(weights)
             return out
-        if path.is_file():
-            return {path.name: file_digest(path)}
-        if path.is_dir():
-            return {"entries": hashlib.sha256("\n".join(sorted(os.listdir(path))).encode()).hexdigest()}
+        return {path.name: file_digest(path)} if path.is_file() else None
     except (OSError, ValueError):
         return None
-    return None
 
 
 def _texts(value: Any) -> Iterator[str]:
     """Every text in a JSON-like value, and the parameter values of every ``name:k=v`` spec among them."""
-    from hg_marl.core.errors import HgMarlError
     from hg_marl.core.spec import parse_spec
 
     if isinstance(value, Mapping):
