@@ -5,7 +5,7 @@ content-addressed build cache (Bazel, Nix, ccache) keys an action by the digests
 input files and of its tool chain rather than by their names or a version number.
 
 **Files** (:func:`named_files`): every text in a key's fields is looked at, inside
-tables, lists and ``name:k=v`` specs (so ``switching:humans=[cooperative,learned:path=m]``
+tables, lists and ``name:k=v`` specs (so ``switching:humans=cooperative|learned:path=m``
 is searched too). A text that names an existing file, a folder holding a model header, or
 a model stem (``m`` for ``m.json``) is keyed by its text *and* its content, as Bazel keys an
 action by its inputs' paths and digests:
@@ -61,6 +61,9 @@ RACY_SECONDS = 2.0
 
 ROOTS = ("hg_marl.training.backends", "hg_marl.training.runner")
 """The modules that play a run; the walk also starts from every registry target."""
+
+MAX_DEPTH = 32
+"""Nesting depth (tables, lists, specs inside specs) up to which texts are looked at."""
 
 PROJECT = "hg_marl"
 """Top-level package whose modules are fingerprinted by source; others by distribution version."""
@@ -135,16 +138,21 @@ def path_content(text: str) -> dict[str, str] | None:
         return None
 
 
-def _texts(value: Any) -> Iterator[str]:
-    """Every text in a JSON-like value, and the parameter values of every ``name:k=v`` spec among them."""
+def _texts(value: Any, depth: int = 0) -> Iterator[str]:
+    """Every text in a JSON-like value, and the parameter values of every ``name:k=v`` spec among them.
+
+    Specs nested deeper than :data:`MAX_DEPTH` are not opened (no registry nests so deep).
+    """
     from hg_marl.core.spec import parse_spec
 
+    if depth > MAX_DEPTH:
+        return
     if isinstance(value, Mapping):
         for item in value.values():
-            yield from _texts(item)
+            yield from _texts(item, depth + 1)
     elif isinstance(value, list | tuple):
         for item in value:
-            yield from _texts(item)
+            yield from _texts(item, depth + 1)
     elif isinstance(value, str | os.PathLike):
         text = os.fspath(value)
         yield text
@@ -155,17 +163,17 @@ def _texts(value: Any) -> Iterator[str]:
         except (ValueError, RecursionError):
             parsed = None
         if isinstance(parsed, list | dict):
-            yield from _texts(parsed)
+            yield from _texts(parsed, depth + 1)
             return
         if "|" in text:
-            yield from _texts(text.split("|"))
+            yield from _texts(text.split("|"), depth + 1)
         try:
             raw = parse_spec(text).raw
         except HgMarlError:
             return
         for item in raw.values():
             if len(item) < len(text):
-                yield from _texts(item)
+                yield from _texts(item, depth + 1)
 
 
 def named_files(fields: Mapping[str, Any]) -> dict[str, dict[str, str]]:

@@ -91,10 +91,12 @@ def test_a_file_named_inside_a_nested_spec_is_keyed_by_content(tmp_path: Path) -
         human="switching",
         human_params={"humans": ["cooperative", f"learned:path={folder},deterministic=true"], "at": [30.0]},
     )
-    before = job.key()
+    as_text = Job(robot="planner", seed=0, human=f"switching:humans=cooperative|learned:path={folder},at=[30]")
+    before = job.key(), as_text.key()
     shutil.rmtree(folder)
     _waiter(folder)
-    assert job.key() != before
+    assert job.key() != before[0]
+    assert as_text.key() != before[1]
 
 
 def test_a_cached_oracle_of_a_learned_human_is_keyed_by_its_policy(tmp_path: Path) -> None:
