@@ -160,7 +160,7 @@ def select(kernel: np.ndarray, k: int, pool: Sequence[int]) -> list[int]:
     current = spread(kernel, chosen)
     for _ in range(100 * k * len(pool)):  # each accepted swap raises the spread: this bound is never met
         improved = False
-        for pos, out_item in enumerate(list(chosen)):
+        for pos in range(len(chosen)):
             for in_item in pool:
                 if in_item in chosen:
                     continue
