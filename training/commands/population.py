@@ -74,6 +74,8 @@ def register(app: typer.Typer) -> None:
         }
         if not any(sizes.values()):
             raise ConfigError("--held-out, --train, --validation: at least one member")
+        if candidates < sum(sizes.values()):
+            raise ConfigError(f"--candidates: {candidates} is fewer than the {sum(sizes.values())} members asked for")
         config = GeneratorConfig(
             scenario=scenario,
             seed=seed,
