@@ -52,11 +52,11 @@ def test_members_by_split(tmp_path: Path) -> None:
     ("old", "new", "line", "field"),
     [
         ('name = "tiny"', 'nmae = "tiny"', 1, "nmae: unknown field"),
-        ('split = "held_out"', 'split = "heldout"', 10, "members[1].split"),
+        ('split = "held_out"', 'split = "heldout"', 11, "members[1].split"),
         ('spec = "preference"', 'spec = "preference:handovr=1"', 7, "members[0].spec"),
         ('spec = "preference"', 'spec = "switching"', 7, "not stationary"),
-        ('name = "m01"', 'name = "m00"', 9, "members[1].name: 'm00' is also members[0]"),
-        ('name = "m01"', 'name = "m 01"', 9, "members[1].name"),
+        ('name = "m01"', 'name = "m00"', 10, "members[1].name: 'm00' is also members[0]"),
+        ('name = "m01"', 'name = "m 01"', 10, "members[1].name"),
         ('split = "train"', 'split = "train"\nbehaviour = { give = nan }', 7, "members[0].behaviour"),
         ('split = "train"', 'split = "train"\ncolour = "red"', 7, "members[0].colour: unknown field"),
     ],
@@ -74,8 +74,8 @@ def test_unreadable_and_malformed_files(tmp_path: Path) -> None:
     with pytest.raises(PopulationError, match="no such population file"):
         load_population(tmp_path / "missing.toml")
     path = tmp_path / "p.toml"
-    path.write_text('name = "x"\nmembers = [\n')
-    with pytest.raises(PopulationError, match=rf"^{path}:\d+: not valid TOML"):
+    path.write_text('name = "x"\nscenario = \nmembers = []\n')
+    with pytest.raises(PopulationError, match=rf"^{path}:2: not valid TOML"):
         load_population(path)
     path.write_text('name = "x"\n')
     with pytest.raises(PopulationError, match=rf"^{path}: members: expected at least one"):

@@ -140,3 +140,28 @@ def test_the_oracle_models_it() -> None:
     hoarder = oracle_rate("paper2015", "preference:handover=-1,shared=-1,keep=1,robot_side=1", progress=False)
     assert helpful.rate_per_hour > 0
     assert hoarder.rate_per_hour == 0
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "roboergosum"])
+@pytest.mark.parametrize(
+    "spec", ["preference", "preference:temperature=0.5,accept=0.3,p_idle=0.2", "preference:keep=0.5,haste=0.2"]
+)
+def test_distributions_are_feasible_and_sum_to_one(scenario: str, spec: str) -> None:
+    import numpy as np
+
+    from hg_marl.core import Agent
+
+    world = World(scenario)
+    human = make_human(spec)
+    rng = np.random.default_rng(0)
+    state = world.initial_state(rng)
+    for _ in range(400):
+        robot = world.feasible_indices(state, Agent.ROBOT)
+        state = world.step(state, Agent.ROBOT, int(robot[rng.integers(len(robot))])).state
+        answer = human.distribution(world, state)  # type: ignore[attr-defined]
+        assert sum(p for _, p in answer) == pytest.approx(1.0)
+        assert all(p > 0 and world.table.feasible(state, Agent.HUMAN, i) for i, p in answer)
+        assert [i for i, _ in answer] == sorted({i for i, _ in answer})
+        state = world.step(state, Agent.HUMAN, answer[int(rng.integers(len(answer)))][0]).state
+        if world.is_clean(state):
+            state = world.initial_state(rng)
