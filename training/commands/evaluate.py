@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated
 
 import typer
+
+from hg_marl.training.commands.common import counting_bar
 
 
 def _names(text: str | None) -> tuple[str, ...]:
@@ -34,8 +36,6 @@ def register(app: typer.Typer) -> None:
         """Every robot with every human: scores.csv, aggregate.json, crossplay/profiles/intervals PNGs, report.md."""
         import time
 
-        from tqdm import tqdm
-
         from hg_marl.training.backends import make_backend
         from hg_marl.training.evaluate import cells, evaluate
         from hg_marl.training.report import robot_table
@@ -44,11 +44,16 @@ def register(app: typer.Typer) -> None:
         chosen = load_study(study).narrowed(seeds, _names(robots), _names(humans))
         executor = make_backend(backend, workers, address)
         start = time.perf_counter()
-        with tqdm(total=len(cells(chosen)), unit="run", desc=chosen.name) as bar:
-
-            def done(job: Any, run: Any) -> None:
-                bar.update(1)
-
+        bar, done = counting_bar(len(cells(chosen)), chosen.name)
+        try:
             agg = evaluate(chosen, out, executor, done)
+        finally:
+            bar.close()
+        wall = time.perf_counter() - start
         typer.echo(robot_table(agg))
-        typer.echo(f"wall time {time.perf_counter() - start:.1f} s; report: {out / 'report.md'}")
+        if agg["bootstrap"]["flag"]:
+            typer.echo(f"caution: {agg['bootstrap']['flag']}")
+        typer.echo(
+            f"wall time {wall:.1f} s, of which aggregation {agg['seconds']:.2f} s "
+            f"({100 * agg['seconds'] / max(wall, 1e-9):.0f}%); report: {out / 'report.md'}"
+        )
