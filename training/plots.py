@@ -207,7 +207,10 @@ def adaptation(
         title: the figure's title.
         path: PNG to write.
     """
+    from hg_marl.training.colours import colours
+
     plt = _pyplot()
+    colour = colours(curves)
     n = len(curves)
     cols = min(3, n)
     rows = -(-n // cols)
@@ -216,8 +219,8 @@ def adaptation(
     starts = [t for t, _ in phases] + [end]
     for ax, (label, table) in zip(axes.flat, curves.items(), strict=False):
         mean, low, high = _band(np.asarray(table, dtype=float))
-        ax.plot(grid / 60, mean, color="C0", label="robot (mean)")
-        ax.fill_between(grid / 60, low, high, color="C0", alpha=0.25, label="95% CI")
+        ax.plot(grid / 60, mean, color=colour[label], label="robot (mean)")
+        ax.fill_between(grid / 60, low, high, color=colour[label], alpha=0.25, label="95% CI")
         for k, (start, rate) in enumerate(phases):
             ax.hlines(
                 rate,
@@ -242,25 +245,56 @@ def adaptation(
     return _save(fig, path)
 
 
+CLIP = 4.0
+"""A bar taller than this many times the panel's median bar top is clipped (see :func:`regret_bars_figure`)."""
+
+
 def regret_bars(results: dict[str, Any], path: Path) -> Path:
-    """Tasks lost to the oracle after the last change, mean and 95% CI, one panel per switch."""
+    """:func:`regret_bars_figure` as a PNG."""
+    return _save(regret_bars_figure(results), path)
+
+
+def regret_bars_figure(results: dict[str, Any]) -> Any:
+    """Tasks lost to the oracle after the last change, mean and 95% CI, one panel per switch.
+
+    Each panel's scale fits the robots the text compares: a bar whose top exceeds
+    :data:`CLIP` times the panel's median bar top (the habit alone loses ~27 tasks, the
+    others 0-3) is cut at the top of the axis, hatched, and its value written on it, so
+    the others' differences are not slivers. Colours are the robots' own
+    (:mod:`hg_marl.training.colours`).
+    """
+    from hg_marl.training.colours import colours
+
     plt = _pyplot()
     n = len(results)
-    fig, axes = plt.subplots(1, n, figsize=(4.0 * n, 3.6), squeeze=False, sharey=True)
+    fig, axes = plt.subplots(1, n, figsize=(4.0 * n, 3.6), squeeze=False)
+    order = [r for block in results.values() for r in block["robots"]]
+    colour = colours(order)
     for ax, block in zip(axes[0], results.values(), strict=True):
         robots = list(block["robots"])
         cis = [block["robots"][r]["tasks_lost"] for r in robots]
         mean = np.array([c["mean"] for c in cis], dtype=float)
-        err = np.array(
-            [
-                [m - c["low"] for m, c in zip(mean, cis, strict=True)],
-                [c["high"] - m for m, c in zip(mean, cis, strict=True)],
-            ]
-        )
-        ax.bar(range(len(robots)), mean, yerr=err, capsize=3, color="C1")
-        ax.set_xticks(range(len(robots)), robots, rotation=60, ha="right", fontsize=7)
+        low = np.array([c["low"] for c in cis], dtype=float)
+        high = np.array([c["high"] for c in cis], dtype=float)
+        tops = np.maximum(high, mean)
+        reference = float(np.median(np.abs(tops))) if len(tops) else 0.0
+        kept = tops <= CLIP * reference if reference > 0 else np.ones(len(tops), dtype=bool)
+        limit = 1.15 * float(tops[kept].max()) if kept.any() and tops[kept].max() > 0 else float(tops.max(initial=1.0))
+        bottom = min(0.0, 1.15 * float(low.min(initial=0.0)))
+        for i, r in enumerate(robots):
+            if kept[i]:
+                ax.bar(i, mean[i], yerr=[[mean[i] - low[i]], [high[i] - mean[i]]], capsize=3, color=colour[r])
+            else:
+                ax.bar(i, limit, color=colour[r], hatch="//", edgecolor="white")
+                ax.text(
+                    i, limit * 0.5, f"{mean[i]:.1f}\n[{low[i]:.1f}, {high[i]:.1f}]\n(cut)", ha="center", va="center",
+                    fontsize=7, rotation=90, color="black",
+                )  # fmt: skip
+        ax.set_ylim(bottom, limit)
+        ax.set_xticks(range(len(robots)), robots, rotation=60, ha="right", fontsize=7, rotation_mode="anchor")
         ax.axhline(0.0, color="k", linewidth=0.8)
         ax.set_title(" -> ".join(block["humans"]), fontsize=9)
         ax.grid(alpha=0.3, axis="y")
     axes[0][0].set_ylabel("tasks lost to the oracle (mean, 95% CI)")
-    return _save(fig, path)
+    fig.tight_layout()
+    return fig

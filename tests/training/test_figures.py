@@ -162,3 +162,25 @@ def test_one_colour_per_robot_across_a_reports_figures() -> None:
         for patch in ax.patches:
             bars.setdefault(mcolors.to_hex(patch.get_facecolor()), 0)
     assert set(bars) == set(want.values())
+
+
+def test_regret_bars_scale_fits_the_compared_robots_and_cut_bars_say_their_value() -> None:
+    def ci(mean: float, half: float) -> dict[str, dict[str, float]]:
+        return {"tasks_lost": {"mean": mean, "low": mean - half, "high": mean + half}}
+
+    results = {
+        "a": {
+            "humans": ["cooperative", "lazy"],
+            "robots": {"planner": ci(1.0, 0.5), "hybrid": ci(2.0, 0.5), "habit": ci(27.0, 1.0), "vpi": ci(0.5, 0.5)},
+        }
+    }
+    fig = plots.regret_bars_figure(results)
+    ax = fig.axes[0]
+    # bar tops 1.5, 2.5, 28, 1.0: median 2.0, so only the habit (28 > 4 x 2) is cut; the
+    # axis ends 15% above the tallest kept top, 2.5 -> 2.875, and the 1-task difference
+    # between planner and hybrid spans 1 / 2.875 = 35% of it.
+    assert ax.get_ylim()[1] == pytest.approx(2.875)
+    assert [t.get_text() for t in ax.texts] == ["27.0\n[26.0, 28.0]\n(cut)"]
+    assert overlapping_texts(fig) == []
+    heights = [round(p.get_height(), 3) for p in ax.patches]
+    assert heights == [1.0, 2.0, 2.875, 0.5]
