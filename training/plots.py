@@ -58,7 +58,9 @@ def cumulative_reward_figure(logs: dict[str, list[pd.DataFrame]], duration: floa
 
     Most conditions solve within a task of the planner, so on the left panel their
     curves lie on one another; the right panel draws each mean minus the first
-    condition's (the planner), on a scale where those differences show. Curves equal
+    condition's (the planner), on a symmetric-log scale (linear within one task of the
+    planner, logarithmic beyond), so both the criteria's fractions of a task and the
+    habit's tens show. Curves equal
     everywhere are drawn once, the legend naming all of them; each condition keeps its
     colour and line style (:mod:`hg_marl.training.colours`) in both panels.
     """
@@ -77,11 +79,16 @@ def cumulative_reward_figure(logs: dict[str, list[pd.DataFrame]], duration: floa
         means[label], sds[label] = curves.mean(axis=0), curves.std(axis=0)
     both = {k: np.concatenate([means[k], sds[k]]) for k in means}
     reference = next(iter(means))
-    for first, (labels, _) in _merged(both).items():
+    groups = _merged(both)
+    for first, (labels, _) in groups.items():
         mean, sd = means[first], sds[first]
         ax.plot(grid / 60, mean, label=_name(labels), **look[first])
         ax.fill_between(grid / 60, mean - sd, mean + sd, alpha=0.12, color=look[first]["color"])
-        diff.plot(grid / 60, mean - means[reference], **look[first])
+    # the reference is the zero line of the difference panel: drawn last, so the others show where they leave it
+    for first in [*(g for g in groups if g != reference), reference]:
+        diff.plot(grid / 60, means[first] - means[reference], **look[first])
+    diff.set_yscale("symlog", linthresh=1.0, linscale=1.5)
+    diff.yaxis.set_major_formatter(plt.FuncFormatter(lambda v, _: f"{v:g}"))
     seeds = max(len(runs) for runs in logs.values())
     ax.set(
         xlabel="simulated time (min)",

@@ -91,9 +91,8 @@ def test_gantt_png_labels_are_horizontal_and_fit_their_bars() -> None:
 
 
 def test_gantt_png_has_a_legend_of_every_colour_and_arrow_off_the_bars() -> None:
-    from tests.figure_checks import legend_inside_data, legend_labels, overlapping_texts
-
     from hg_marl.agents.planner.gantt import gantt_figure
+    from tests.figure_checks import legend_inside_data, legend_labels, overlapping_texts
 
     world = World("paper2015")
     plan = Planner(world).plan(world.initial_state(np.random.default_rng(0))).plan

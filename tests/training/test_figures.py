@@ -99,7 +99,12 @@ def test_fig3_shows_every_condition_it_names() -> None:
     assert labels == ["planner = entropy (coincide)", "vpi", "habit"]
     left, right = fig.axes
     assert hidden_lines(left) == [] and hidden_lines(right) == []
-    assert len(right.get_lines()) == 3 and right.get_lines()[1].get_ydata().max() == 1.0
+    # right: vpi, habit (3 planner tasks by 70 s against none, one of its own at 90 s: -3 then -2),
+    # then the planner (the zero line) on top
+    vpi, habit, planner = right.get_lines()
+    assert vpi.get_ydata().max() == 1.0 and not planner.get_ydata().any()
+    assert habit.get_ydata().min() == -3.0 and habit.get_ydata()[-1] == -2.0
+    assert right.get_yscale() == "symlog"
     assert legend_inside_data(fig) == [] and overlapping_texts(fig) == []
 
 
