@@ -25,8 +25,7 @@ interval that says nothing), so none is computed; with fewer than
 
 from __future__ import annotations
 
-import contextlib
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from itertools import combinations
 from typing import Any
 
@@ -136,22 +135,6 @@ def stratified_bootstrap(matrices: Sequence[np.ndarray], statistic: Statistic, r
     return np.asarray(np.percentile(values, [2.5, 97.5], axis=0))
 
 
-@contextlib.contextmanager
-def _seeded_global_rng() -> Iterator[None]:
-    """Seed numpy's global generator for the block, then put its state back.
-
-    rliable 1.2's bootstrap draws its indices with ``np.random.choice`` (the global
-    generator) whatever ``random_state`` it is given, so without this the profile bands
-    would change from call to call.
-    """
-    state = np.random.get_state()
-    np.random.seed(SEED)
-    try:
-        yield
-    finally:
-        np.random.set_state(state)
-
-
 def _iqm_and_mean(x: np.ndarray) -> np.ndarray:
     return np.stack([iqm(x), mean(x)], axis=-1)
 
@@ -214,7 +197,9 @@ def aggregate(
         common = [t for t in tasks[a] if t in theirs]
         if not common:
             continue
-        x, y = score_matrix(frame, a, common), score_matrix(frame, b, common)
+        # the columns of the robots' matrices for the common tasks (no new pass over the frame)
+        x = matrices[a][:, [tasks[a].index(t) for t in common]]
+        y = matrices[b][:, [tasks[b].index(t) for t in common]]
         c = stratified_bootstrap([x, y], improvement, poi_reps) if with_ci else None
         out["improvement"][f"{a}>{b}"] = {"p": float(improvement(x, y)), "ci": _pair(c, 0)}
     if groups and {"train", "test"} <= set(groups.values()):
@@ -250,14 +235,28 @@ def generalisation_gap(frame: pd.DataFrame, groups: dict[str, str], reps: int = 
 Curves = dict[str, np.ndarray]
 
 
+def profile(x: np.ndarray, taus: np.ndarray) -> np.ndarray:
+    """Fraction of runs with score > tau, for each tau (rliable's score distribution), over the last two axes."""
+    return np.asarray((x[..., None] > taus).mean(axis=(-3, -2)))
+
+
 def profiles(frame: pd.DataFrame, taus: np.ndarray, reps: int = 200) -> tuple[Curves, Curves]:
-    """Performance profiles (fraction of runs with score > tau) and their CIs, per robot (rliable).
+    """Performance profiles (fraction of runs with score > tau) and their 95% bands, per robot.
 
-    The bands come from a bootstrap seeded like every interval here.
+    rliable's ``create_performance_profile`` (score distributions over all runs and
+    tasks, stratified-bootstrap bands), vectorised like every interval here; with one
+    seed per task the band is the curve itself (there is nothing to resample).
     """
-    from rliable import library as rly
-
-    matrices = {r: score_matrix(frame, r) for r in dict.fromkeys(frame["robot"])}
-    matrices = {r: m for r, m in matrices.items() if m.size}
-    with _seeded_global_rng():
-        return rly.create_performance_profile(matrices, taus, reps=reps)
+    taus = np.asarray(taus, dtype=float)
+    curves: Curves = {}
+    bands: Curves = {}
+    for r in dict.fromkeys(frame["robot"]):
+        m = score_matrix(frame, r)
+        if not m.size:
+            continue
+        curves[r] = profile(m, taus)
+        if len(m) > 1:
+            bands[r] = stratified_bootstrap([m], lambda x: profile(x, taus), reps)
+        else:
+            bands[r] = np.stack([curves[r], curves[r]])
+    return curves, bands

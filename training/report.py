@@ -88,8 +88,6 @@ def profiles_figure(frame: pd.DataFrame) -> Any:
     its own colour and line style (:mod:`hg_marl.training.colours`); the legend sits
     outside the axes.
     """
-    from rliable import plot_utils
-
     from hg_marl.training.colours import styles
 
     plt = _pyplot()
@@ -121,11 +119,11 @@ def profiles_figure(frame: pd.DataFrame) -> Any:
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), gridspec_kw={"width_ratios": [1, 1]})
     panels = ((axes[0], taus, curves, bands, "all scores"), (axes[1], fine, fine_curves, fine_bands, "zoom"))
     for ax, grid, c, b, name in panels:
-        plot_utils.plot_performance_profiles(
-            c, grid, performance_profile_cis=b, ax=ax, colors=colours, linestyles=dashes,
-            xlabel=r"score $\tau$", ylabel=r"fraction of runs > $\tau$", xticks=None,
-        )  # fmt: skip
-        ax.set_title(name, fontsize=10)
+        for label, curve in c.items():
+            ax.plot(grid, curve, color=colours[label], linestyle=dashes[label], linewidth=2.0, label=label)
+            ax.fill_between(grid, b[label][0], b[label][1], color=colours[label], alpha=0.15, linewidth=0)
+        ax.set(xlabel=r"score $\tau$", ylabel=r"fraction of runs > $\tau$", ylim=(-0.03, 1.03), title=name)
+        ax.grid(alpha=0.3)
     axes[1].set_ylabel("")
     axes[1].legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", frameon=False)
     fig.tight_layout()
@@ -138,28 +136,30 @@ def profiles_png(frame: pd.DataFrame, path: Path) -> Path:
 
 
 def intervals_figure(agg: dict[str, Any]) -> Any:
-    """IQM and mean per robot with their 95% stratified-bootstrap intervals (rliable's plot).
+    """IQM and mean per robot with their 95% stratified-bootstrap intervals (rliable's figure, in matplotlib).
 
-    Without intervals (one seed) the bars are points and the figure's title says so.
+    One panel per metric; a bar spans the interval, a black tick marks the point
+    estimate. Without intervals (one seed) only the ticks are drawn and the title says so.
     """
-    from rliable import plot_utils
-
     from hg_marl.training.colours import colours
 
+    plt = _pyplot()
     rows = {r: v for r, v in agg["robots"].items() if v["iqm"] is not None}
-    point = {r: np.array([v["iqm"], v["mean"]]) for r, v in rows.items()}
-    ci = {
-        r: np.array([[v["iqm_ci"][0], v["mean_ci"][0]], [v["iqm_ci"][1], v["mean_ci"][1]]])
-        if v["iqm_ci"] is not None
-        else np.array([point[r], point[r]])
-        for r, v in rows.items()
-    }
-    fig, _ = plot_utils.plot_interval_estimates(
-        point, ci, metric_names=["IQM", "Mean"], algorithms=list(rows), xlabel="score", row_height=0.6,
-        colors=colours(agg["robots"]),
-    )  # fmt: skip
+    colour = colours(agg["robots"])
+    fig, axes = plt.subplots(1, 2, figsize=(8, 0.45 * len(rows) + 1.4), sharey=True, squeeze=False)
+    for ax, (metric, key) in zip(axes[0], (("IQM", "iqm"), ("Mean", "mean")), strict=True):
+        for i, (robot, v) in enumerate(rows.items()):
+            ci = v[f"{key}_ci"]
+            if ci is not None:
+                ax.barh(i, ci[1] - ci[0], left=ci[0], height=0.6, color=colour[robot], alpha=0.8)
+            ax.vlines(v[key], i - 0.35, i + 0.35, colors="black", linewidth=1.5)
+        ax.set_yticks(range(len(rows)), list(rows))
+        ax.invert_yaxis()
+        ax.set(xlabel="score", title=metric)
+        ax.grid(alpha=0.3, axis="x")
     if agg["bootstrap"]["flag"]:
-        fig.suptitle(agg["bootstrap"]["flag"], fontsize=8, y=1.02)
+        fig.suptitle(agg["bootstrap"]["flag"], fontsize=8)
+    fig.tight_layout()
     return fig
 
 

@@ -108,3 +108,15 @@ def test_vectorised_bootstrap_matches_rliable() -> None:
         {"x": x}, lambda a: np.array([metrics.aggregate_iqm(a)]), reps=2000, random_state=np.random.RandomState(0)
     )
     assert ours_iqm == pytest.approx(theirs_iqm["x"][:, 0], abs=0.04)
+
+
+def test_profile_counts_the_runs_above_each_threshold() -> None:
+    import numpy as np
+
+    from hg_marl.training.aggregate import profiles
+
+    # A's 4 runs score 0.1, 0.4, 0.6, 0.9: above 0.0 all 4, above 0.5 two, above 0.9 none (strict)
+    frame = _table({"A": {"h": [0.1, 0.4], "k": [0.6, 0.9]}})
+    curves, bands = profiles(frame, np.array([0.0, 0.5, 0.9]), reps=100)
+    assert curves["A"].tolist() == [1.0, 0.5, 0.0]
+    assert bands["A"].shape == (2, 3) and (bands["A"][0] <= curves["A"]).all() and (curves["A"] <= bands["A"][1]).all()
