@@ -82,7 +82,8 @@ def _show_store_counts() -> None:
     """Every command that uses the store prints its ``store: N runs made, M reused`` line.
 
     The sweep logs it at INFO (library code prints nothing); the CLI shows that one
-    logger's INFO lines, and only once however often ``main`` runs in a process.
+    logger's INFO lines, once however often ``main`` runs in a process (the root's
+    handlers stay at WARNING, so the line is not printed twice).
     """
     sweep = logging.getLogger("hg_marl.training.sweep")
     if not any(isinstance(h, _AboveBars) for h in sweep.handlers):
@@ -90,7 +91,9 @@ def _show_store_counts() -> None:
         handler.setFormatter(logging.Formatter("%(message)s"))
         sweep.addHandler(handler)
     sweep.setLevel(logging.INFO)
-    sweep.propagate = False
+    for handler in logging.getLogger().handlers:  # the root's keep showing warnings only
+        if not isinstance(handler, _AboveBars):
+            handler.setLevel(logging.WARNING)
 
 
 def main() -> None:
