@@ -87,13 +87,12 @@ def _show_store_counts() -> None:
     """
     sweep = logging.getLogger("hg_marl.training.sweep")
     if not any(isinstance(h, _AboveBars) for h in sweep.handlers):
-        handler = _AboveBars()
-        handler.setFormatter(logging.Formatter("%(message)s"))
-        sweep.addHandler(handler)
+        above = _AboveBars()
+        above.setFormatter(logging.Formatter("%(message)s"))
+        sweep.addHandler(above)
     sweep.setLevel(logging.INFO)
-    for handler in logging.getLogger().handlers:  # the root's keep showing warnings only
-        if not isinstance(handler, _AboveBars):
-            handler.setLevel(logging.WARNING)
+    for root_handler in logging.getLogger().handlers:  # the root's keep showing warnings only
+        root_handler.setLevel(logging.WARNING)
 
 
 def main() -> None:
