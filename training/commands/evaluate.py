@@ -46,7 +46,7 @@ def register(app: typer.Typer) -> None:
         start = time.perf_counter()
         bar, done = counting_bar(len(cells(chosen)), chosen.name)
         try:
-            agg = evaluate(chosen, out, executor, done)
+            agg = evaluate(chosen, out, executor, done, progress=True)
         finally:
             bar.close()
         wall = time.perf_counter() - start
