@@ -8,11 +8,7 @@ from typing import Annotated
 
 import typer
 
-from hg_marl.training.commands.common import counting_bar
-
-
-def _names(text: str | None) -> tuple[str, ...]:
-    return tuple(x.strip() for x in (text or "").split(",") if x.strip())
+from hg_marl.training.commands.common import check_out_dir, check_workers, counting_bar, name_list
 
 
 def register(app: typer.Typer) -> None:
@@ -41,7 +37,9 @@ def register(app: typer.Typer) -> None:
         from hg_marl.training.report import robot_table
         from hg_marl.training.study import load_study
 
-        chosen = load_study(study).narrowed(seeds, _names(robots), _names(humans))
+        check_out_dir(out, "--out")
+        check_workers(workers)
+        chosen = load_study(study).narrowed(seeds, name_list(robots, "--robots"), name_list(humans, "--humans"))
         executor = make_backend(backend, workers, address)
         start = time.perf_counter()
         bar, done = counting_bar(len(cells(chosen)), chosen.name)

@@ -8,7 +8,7 @@ from typing import Annotated, Any
 
 import typer
 
-from hg_marl.training.commands.common import check_duration, counting_bar
+from hg_marl.training.commands.common import check_duration, check_out_dir, check_workers, counting_bar
 
 
 def register(app: typer.Typer) -> None:
@@ -35,6 +35,8 @@ def register(app: typer.Typer) -> None:
         from hg_marl.training import paper
         from hg_marl.training.reproduce import ReproduceConfig, reproduce
 
+        check_out_dir(out, "--out")
+        check_workers(workers)
         config = ReproduceConfig(
             out=out,
             seeds=seeds,
