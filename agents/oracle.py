@@ -218,6 +218,8 @@ class _Model:
         )
         try:
             self._explore(bar)
+            bar.update(len(self.states) - bar.n)  # the last, partial block of states
+            bar.set_postfix(known=len(self.states))
         finally:
             bar.close()
 
