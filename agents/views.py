@@ -301,3 +301,147 @@ class HumanView(_View):
         reward = task_reward - self.effort_weight * work
         info = self._info(robot_action, events, work=work, task_reward=task_reward)
         return self._obs(), reward, done, truncated, info
+
+
+# ---- batched seats (Gymnasium's vector entry points) -----------------------------------
+class LiveRobots:
+    """Robot actors playing the human's batched seat, one per table (the ``ArrayPartner`` protocol).
+
+    Each table has its own actor (a robot may keep state between turns); the turn it sees
+    carries the state, the facts and mask, the clock and the tasks solved, but no events
+    or reward: robots that learn from those (``habit``, ``hybrid``) do not fit a batched
+    seat, deterministic ones (``planner``, ``random``) do.
+    """
+
+    def __init__(self, world: World, robot: str | Actor | Sequence[str | Actor], num_envs: int) -> None:
+        self.world = world
+        specs = as_list(robot)
+        self.name = str(getattr(specs[0], "name", specs[0]))
+        self.specs = specs
+        # a name builds one actor per table; an instance is shared by the tables it plays
+        self.actors = [make_robot_actor(specs[i % len(specs)]) for i in range(num_envs)]
+        self._seeded = False
+
+    def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
+        """Start the actors of tables ``rows`` with generators drawn from ``rng``."""
+        for i in rows:
+            self.actors[int(i)].reset(self.world, Agent.ROBOT, np.random.default_rng(int(rng.integers(2**63 - 1))))
+
+    def act(self, batch: Any, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        """Each table's robot acts on its own turn."""
+        from hg_marl.policy import Turn
+
+        out = np.empty(len(batch), dtype=np.int64)
+        rows = getattr(batch, "rows", np.arange(len(batch)))
+        for j in range(len(batch)):
+            state = batch.state(j)
+            obs = {"observation": self.world.facts(state), "action_mask": self.world.mask(state, Agent.ROBOT)}
+            out[j] = int(
+                self.actors[int(rows[j])].act(Turn(world=self.world, state=state, agent=Agent.ROBOT, observation=obs))
+            )
+        return out
+
+
+class CompiledPopulation:
+    """Compiled humans as one partner: a member drawn per table at each of its resets (``ArrayPartner``)."""
+
+    def __init__(self, members: Sequence[Any]) -> None:
+        self.members = list(members)
+        self.name = "+".join(m.name for m in self.members)
+        self.member: np.ndarray = np.zeros(0, dtype=np.int64)
+
+    @property
+    def fallbacks(self) -> int:
+        """Live answers over all members."""
+        return sum(m.fallbacks for m in self.members)
+
+    def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
+        """Draw tables ``rows``' members uniformly."""
+        if len(self.member) <= int(rows.max(initial=-1)):
+            self.member = np.concatenate(
+                [self.member, np.zeros(int(rows.max()) + 1 - len(self.member), dtype=np.int64)]
+            )
+        self.member[rows] = rng.integers(len(self.members), size=len(rows))
+
+    def act(self, batch: Any, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        """Each table's member answers (one batched look-up per member)."""
+        from hg_marl.envs.batched import BatchState
+
+        rows = getattr(batch, "rows", np.arange(len(batch)))
+        who = self.member[rows]
+        out = np.empty(len(batch), dtype=np.int64)
+        for k, member in enumerate(self.members):
+            sel = np.flatnonzero(who == k)
+            if len(sel):
+                sub = BatchState(batch.where[sel], batch.robot_at[sel], batch.offer_by[sel], batch.offer_obj[sel])
+                out[sel] = member.act(sub, seen[sel], rng)
+        return out
+
+
+def compiled_humans(
+    world: World, human: str | Actor | Sequence[str | Actor], cache: Any = True, progress: bool = False
+) -> Any:
+    """One compiled human, or a :class:`CompiledPopulation` for a list of them."""
+    from hg_marl.agents.compiled import compile_human
+
+    members = [compile_human(world, h, cache=cache, progress=progress) for h in as_list(human)]
+    return members[0] if len(members) == 1 else CompiledPopulation(members)
+
+
+def robot_vector_env(
+    num_envs: int = 1,
+    scenario: str | Scenario = "paper2015",
+    human: str | Actor | Sequence[str | Actor] = "cooperative",
+    continuing: bool = False,
+    max_cycles: int | None = 500,
+    time_budget: float | None = None,
+    durations: Durations | None = None,
+    autoreset_mode: str = "next_step",
+    device: Any = None,
+    cache: Any = True,
+    progress: bool = False,
+) -> Any:
+    """The robot's seat batched, the human compiled.
+
+    Gymnasium reaches it as ``gymnasium.make_vec(ROBOT_VIEW_ID, num_envs=N,
+    vectorization_mode="vector_entry_point", human=...)``.
+    """
+    from hg_marl.envs.batched import BatchedTable, check_batch
+
+    world = World(scenario, durations)
+    check_batch(world, num_envs)
+    partner = compiled_humans(world, human, cache, progress)
+    return BatchedTable(
+        partner, num_envs, world, Agent.ROBOT, continuing, max_cycles, time_budget, 0.0, autoreset_mode, device=device
+    )
+
+
+def human_vector_env(
+    num_envs: int = 1,
+    scenario: str | Scenario = "paper2015",
+    robot: str | Actor | Sequence[str | Actor] = "planner",
+    effort_weight: float = 0.0,
+    continuing: bool = False,
+    max_cycles: int | None = 500,
+    time_budget: float | None = None,
+    durations: Durations | None = None,
+    autoreset_mode: str = "next_step",
+    device: Any = None,
+) -> Any:
+    """The human's seat batched, a live robot per table (see :class:`LiveRobots`)."""
+    from hg_marl.envs.batched import BatchedTable, check_batch
+
+    world = World(scenario, durations)
+    n = check_batch(world, num_envs)
+    return BatchedTable(
+        LiveRobots(world, robot, n),
+        n,
+        world,
+        Agent.HUMAN,
+        continuing,
+        max_cycles,
+        time_budget,
+        effort_weight,
+        autoreset_mode,
+        device=device,
+    )
