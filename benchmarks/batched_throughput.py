@@ -101,7 +101,8 @@ def main() -> None:
         )
         if not args.no_torch:
             torch_sps = batched(world, partner, n, args.seconds, device="cpu")
-            print(f"{scenario:12s} batched torch-cpu         : {torch_sps:12,.0f} steps/s = {torch_sps / fast:.2f}x numpy")
+            ratio = torch_sps / fast
+            print(f"{scenario:12s} batched torch-cpu         : {torch_sps:12,.0f} steps/s = {ratio:.2f}x numpy")
         print(
             f"{scenario:12s} single RobotView          : {one:12,.0f} steps/s; batched = {fast / one:,.0f}x "
             f"(goal >= 100x: {'met' if fast / one >= 100 else 'NOT met'})"

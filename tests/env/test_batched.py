@@ -283,3 +283,68 @@ def test_the_batched_env_pickles_mid_episode() -> None:
     actions = np.full(4, env.world.n_actions(Agent.ROBOT) - 1)
     a, b = env.step(actions), copy.step(actions)
     assert (a[0] == b[0]).all() and (a[1] == b[1]).all() and (env.clock == copy.clock).all()
+
+
+FILE_FREE_ROBOTS = ["planner", "habit", "hybrid", "random"]
+FILE_FREE_HUMANS = ["cooperative", "lazy", "no_handover", "adversarial", "random", "noisy", "switching"]
+
+
+@pytest.mark.parametrize(
+    ("view", "partner"), [("Human", r) for r in FILE_FREE_ROBOTS] + [("Robot", h) for h in FILE_FREE_HUMANS]
+)
+def test_every_registry_partner_view_pickles_mid_episode(view: str, partner: str) -> None:
+    """A view pickled after a few steps continues exactly as the original (same seed, same actions)."""
+    kw = {"robot": partner} if view == "Human" else {"human": partner}
+    env = gymnasium.make(f"hg_marl/{view}TableCleaning-v0", **kw)
+    env.reset(seed=5)
+    for _ in range(3):
+        env.step(int(env.unwrapped.action_masks().argmax()))
+    copy = pickle.loads(pickle.dumps(env))
+    for _ in range(4):
+        action = int(env.unwrapped.action_masks().argmax())
+        a, b = env.step(action), copy.step(action)
+        assert (a[0] == b[0]).all() and a[1:4] == b[1:4] and a[4]["clock"] == b[4]["clock"]
+
+
+def test_sb3_vec_env_adapter_answers_masks_seed_and_has_attr() -> None:
+    pytest.importorskip("stable_baselines3")
+    from hg_marl.wrappers.sb3 import BatchedVecEnv, batched_vec_env
+
+    venv = batched_vec_env(4, human="cooperative", max_cycles=2, cache=None)
+    assert venv.has_attr("action_masks")
+    venv.seed(3)
+    first = venv.reset()
+    venv.seed(3)
+    assert (venv.reset() == first).all()
+    masks = np.stack(venv.env_method("action_masks"))
+    assert masks.shape == (4, venv.action_space.n)  # type: ignore[attr-defined]
+    wait = np.full(4, venv.action_space.n - 1)  # type: ignore[attr-defined]
+    venv.step(wait)
+    _, _, dones, infos = venv.step(wait)  # max_cycles=2: every table truncated, reset in the same step
+    assert dones.all() and all(i["TimeLimit.truncated"] for i in infos)
+    assert all(i["terminal_observation"].shape == first.shape[1:] for i in infos)
+    with pytest.raises(ConfigError, match="autoreset_mode"):
+        BatchedVecEnv(robot_vector_env(num_envs=2, cache=None))
+
+
+def test_maskable_ppo_trains_on_the_batched_env_and_honours_masks() -> None:
+    """A short MaskablePPO run: every action it sends is feasible (the masks reach it)."""
+    pytest.importorskip("sb3_contrib")
+    import torch
+    from sb3_contrib import MaskablePPO
+
+    from hg_marl.wrappers.sb3 import batched_vec_env
+
+    torch.set_num_threads(1)
+    venv = batched_vec_env(16, human="cooperative", max_cycles=50, cache=None)
+    sent: list[bool] = []
+    step_async = venv.step_async
+
+    def audited(actions: np.ndarray) -> None:
+        masks = venv.action_masks()
+        sent.extend(masks[np.arange(len(actions)), actions].tolist())
+        step_async(actions)
+
+    venv.step_async = audited  # type: ignore[method-assign]
+    MaskablePPO("MlpPolicy", venv, n_steps=16, batch_size=64, n_epochs=1, seed=0, device="cpu").learn(512)
+    assert len(sent) >= 512 and all(sent)
