@@ -9,11 +9,11 @@ import pytest
 
 pytest.importorskip("sb3_contrib")
 
-from hg_marl.agents.model_file import load_model_file  # noqa: E402
-from hg_marl.agents.oracle import oracle_rate  # noqa: E402
-from hg_marl.agents.robots import make_robot  # noqa: E402
-from hg_marl.core import Agent, World  # noqa: E402
-from hg_marl.training.baselines.ppo_batched import PPOBatchedConfig, train_ppo_batched  # noqa: E402
+from hg_marl.agents.model_file import load_model_file
+from hg_marl.agents.oracle import oracle_rate
+from hg_marl.agents.robots import make_robot
+from hg_marl.core import Agent, World
+from hg_marl.training.baselines.ppo_batched import PPOBatchedConfig, train_ppo_batched
 
 
 def test_smoke_run_writes_model_checkpoint_and_tensorboard_and_the_sb3_robot_plays_it(tmp_path: Path) -> None:
