@@ -15,8 +15,10 @@ may hand any state) falls back to the live human, counted in ``fallbacks``.
 Built once per (scenario, durations, human spec) and cached on disk, keyed by the
 content of all that plus the source of every module that can change an answer (the
 core rules, the humans, the planner, this file); the entry stores its key and is
-refused if it does not match. ``HG_MARL_CACHE`` moves the cache (default
-``~/.cache/hg_marl``); ``cache=None`` disables it.
+refused if it does not match. Nothing is written outside a folder the user named:
+``cache=FOLDER`` keeps the tables there (``hg-marl train --algo ppo_batched`` uses
+``OUT/partners``), ``cache=True`` uses ``$HG_MARL_CACHE/partners`` when that variable is
+set and no disk cache otherwise, ``cache=None`` never caches on disk.
 
 Sizes (``paper2015``: 444-1,892 robot-turn states, a few thousand keys, under 2 s to
 build for every bundled human; ``roboergosum``: as the oracle's model, see
@@ -243,9 +245,10 @@ def cache_key(world: World, spec: str) -> str:
     return h.hexdigest()
 
 
-def default_cache() -> Path:
-    """``$HG_MARL_CACHE/partners`` (default ``~/.cache/hg_marl/partners``)."""
-    return Path(os.environ.get("HG_MARL_CACHE") or Path.home() / ".cache" / "hg_marl") / "partners"
+def default_cache() -> Path | None:
+    """``$HG_MARL_CACHE/partners``, or None when the variable is unset (nothing written then)."""
+    root = os.environ.get("HG_MARL_CACHE")
+    return Path(root) / "partners" if root else None
 
 
 def compile_human(
@@ -261,7 +264,7 @@ def compile_human(
     Args:
         world: the world (scenario and durations) of the batched env.
         human: ``"cooperative"``, ``"lazy:p_idle=0.5"``... or an instance with ``distribution``.
-        cache: True for :func:`default_cache`, a folder, or None/False for no disk cache
+        cache: True for :func:`default_cache` (``$HG_MARL_CACHE``), a folder, or None/False for no disk cache
             (instances are never cached on disk: only a spec string names their content).
         max_keys: the compiler's budget (:class:`CompileError` beyond it).
         progress: show a progress bar of the keys compiled.

@@ -42,3 +42,22 @@ def test_smoke_run_writes_model_checkpoint_and_tensorboard_and_the_sb3_robot_pla
 def test_reaches_095_of_the_oracle_against_the_cooperative_human(tmp_path: Path) -> None:
     result = train_ppo_batched(PPOBatchedConfig(steps=600_000, out=tmp_path, tensorboard=False, eval_seconds=1800.0))
     assert result.rate_per_hour >= 0.95 * oracle_rate("paper2015", "cooperative").rate_per_hour
+
+
+def test_compare_names_ppo_batched_like_any_algorithm(tmp_path: Path) -> None:
+    """A compare cell of ppo_batched: a learning curve from step 0 to the budget, on the runner protocol."""
+    from hg_marl.training.baselines.compare import run_cell
+    from hg_marl.training.baselines.comparison import CompareConfig
+
+    config = CompareConfig(
+        algos=("ppo_batched",),
+        humans=("cooperative",),
+        steps=8192,
+        eval_every=8192,
+        eval_seeds=(0,),
+        duration=100.0,
+        out=tmp_path,
+    )
+    record = run_cell(config, "ppo_batched", "cooperative", 0, tmp_path / "cell")
+    assert [s for s, _ in record["curve"]] == [0, 8192]
+    assert Path(record["model"]).exists() and record["algo"] == "ppo_batched"

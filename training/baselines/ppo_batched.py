@@ -14,7 +14,8 @@ The network is sb3-contrib's ``MaskableActorCriticPolicy`` (``MlpPolicy``), so t
 file is the project's ``sb3`` kind (``agents/model_file.py``): ``hg-marl run --robot sb3
 --model OUT/model.json`` plays it and ``hg-marl evaluate`` scores it like any other.
 Checkpoints (``OUT/checkpoints/ckpt_<steps>_steps.json``) and TensorBoard scalars
-(``OUT/tb``) are written as by the SB3 algorithms. Against a population (a comma list
+(``OUT/tb``) are written as by the SB3 algorithms; the compiled partners are cached in
+``OUT/partners`` (a second run in the same folder loads them). Against a population (a comma list
 of humans, or the ``train`` members of a population file) each table draws a member
 at reset, the Fictitious Co-Play protocol of training against a fixed pool.
 """
@@ -23,6 +24,7 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -124,6 +126,7 @@ def _env(config: PPOBatchedConfig, num_envs: int) -> Any:
         continuing=True,
         max_cycles=None,
         progress=config.progress,
+        cache=config.out / "partners",
     )
 
 
@@ -173,8 +176,15 @@ def evaluate_rate(model: Any, config: PPOBatchedConfig) -> float:
     return float(env.tasks_solved.sum() / env.clock.sum() * HOUR)
 
 
-def train_ppo_batched(config: PPOBatchedConfig) -> PPOBatchedResult:
-    """Train; write ``OUT/model.json`` (+ checkpoints, TensorBoard); return the greedy rate."""
+def train_ppo_batched(
+    config: PPOBatchedConfig, on_update: Callable[[int, Any], None] | None = None
+) -> PPOBatchedResult:
+    """Train; write ``OUT/model.json`` (+ checkpoints, TensorBoard); return the greedy rate.
+
+    ``on_update(steps, model)`` is called before the first update and after each one
+    (``hg-marl compare`` draws its learning curve with it; ``model`` is the MaskablePPO
+    shell whose policy is being trained, what ``runner_rate`` evaluates).
+    """
     import torch
 
     config = config.check()
@@ -198,6 +208,8 @@ def train_ppo_batched(config: PPOBatchedConfig) -> PPOBatchedResult:
     steps, checkpoints, next_ckpt = 0, [], config.checkpoint_freq or None
     bar = tqdm(total=config.steps, unit=" steps", disable=not config.progress, desc="ppo_batched")
     start = time.perf_counter()
+    if on_update is not None:
+        on_update(0, model)
     while steps < config.steps:
         for t in range(t_len):
             o = torch.as_tensor(obs, dtype=torch.float32)
@@ -241,6 +253,8 @@ def train_ppo_batched(config: PPOBatchedConfig) -> PPOBatchedResult:
                 opt.step()
         steps += size
         bar.update(size)
+        if on_update is not None:
+            on_update(steps, model)
         if writer is not None:
             rate = float(env.tasks_solved.sum() / max(env.clock.sum(), 1e-9) * HOUR)
             writer.add_scalar("rollout/tasks_per_hour_so_far", rate, steps)
