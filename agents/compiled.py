@@ -41,12 +41,13 @@ from tqdm import tqdm
 from hg_marl.agents.humans.base import HumanError
 from hg_marl.agents.humans.registry import make_human
 from hg_marl.core import Agent, State, World
-from hg_marl.envs.batched import BatchState
+from hg_marl.envs.batched import BatchedRules, BatchState
 
 MAX_KEYS = 5_000_000
 """The compiler's budget: (mid-cycle state, robot action seen) keys; beyond it, a clear error."""
 
 _KEY_LIMIT = 2**62
+OUTCOME_FIELDS = ("where", "robot_at", "offer_by", "offer_obj", "ok", "duration", "facts", "mask")
 _SOURCES = ("hg_marl/core", "agents/humans", "agents/planner", "agents/compiled.py", "agents/oracle.py")
 
 
@@ -162,13 +163,28 @@ class CompiledHuman:
         self.packer = Packer(world)
         self.keys, self.starts = arrays["keys"], arrays["starts"]
         self.actions, self.cum = arrays["actions"], arrays["cum"]
+        self.outcome = {k: arrays[k] for k in OUTCOME_FIELDS}
+        """Per entry, the human's answer already applied by ``BatchedRules``: the next state
+        (``where``, ``robot_at``, ``offer_by``, ``offer_obj``), ``ok``, ``duration``, and that
+        state's ``facts`` and robot ``mask`` (the batched env gathers them instead of
+        stepping the rules and computing observations again)."""
+        self.widest = int(np.diff(self.starts).max(initial=1))
+        """The most actions any state's distribution has (the sampler's loop length)."""
         self.fallbacks = 0
         """Tables answered by the live human because their state was not in the table."""
 
     @staticmethod
-    def arrays_of(packer: Packer, answers: dict[tuple[State, int], list[tuple[int, float]]]) -> dict[str, np.ndarray]:
-        """Sorted flat arrays of ``answers``; ``cum`` is segment index + cumulative probability."""
-        items = sorted(((packer.pack_one(s, seen), dist) for (s, seen), dist in answers.items()), key=lambda x: x[0])
+    def arrays_of(
+        world: World, packer: Packer, answers: dict[tuple[State, int], list[tuple[int, float]]]
+    ) -> dict[str, np.ndarray]:
+        """Sorted flat arrays of ``answers``; ``cum`` is segment index + cumulative probability.
+
+        Each entry's outcome is computed by ``BatchedRules`` on the whole table at once.
+        """
+        triples = sorted(
+            ((packer.pack_one(s, seen), s, dist) for (s, seen), dist in answers.items()), key=lambda x: x[0]
+        )
+        items = [(k, d) for k, _, d in triples]
         keys = np.array([k for k, _ in items], dtype=np.int64)
         sizes = np.array([len(d) for _, d in items], dtype=np.int64)
         starts = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
@@ -179,7 +195,24 @@ class CompiledHuman:
             c = np.cumsum(p) / p.sum()
             c[-1] = 1.0
             cum[starts[i] : starts[i + 1]] = i + c
-        return {"keys": keys, "starts": starts, "actions": actions, "cum": cum}
+        rules = BatchedRules(world)
+        mids = BatchState.of([s for _, s, d in triples for _ in d]) if len(actions) else BatchState.of([])
+        ok, duration, _ = rules.step(mids, Agent.HUMAN, actions)
+        small = np.int16 if world.table.n_places < 2**15 and world.n_actions(Agent.HUMAN) < 2**15 else np.int64
+        return {
+            "keys": keys,
+            "starts": starts,
+            "actions": actions,
+            "cum": cum,
+            "where": mids.where.astype(small),
+            "robot_at": mids.robot_at.astype(small),
+            "offer_by": mids.offer_by.astype(small),
+            "offer_obj": mids.offer_obj.astype(small),
+            "ok": ok,
+            "duration": duration,
+            "facts": rules.facts(mids),
+            "mask": rules.masks(mids, Agent.ROBOT),
+        }
 
     def lookup(self, b: BatchState, seen: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(segment index, found) per table."""
@@ -199,13 +232,31 @@ class CompiledHuman:
             (int(a), float(p)) for a, p in zip(self.actions[lo:hi], np.diff(np.concatenate([[0.0], c])), strict=True)
         ]
 
-    def act(self, b: BatchState, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
-        """One action per table: the compiled distribution sampled with ``rng``."""
+    def answer(self, b: BatchState, seen: np.ndarray, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+        """(entry, found) per table: the compiled distribution sampled with ``rng``.
+
+        ``actions[entry]`` is the answer and ``outcome[...][entry]`` its effect where
+        ``found``; elsewhere the entry is meaningless (see :meth:`act` for the fallback).
+        """
         idx, found = self.lookup(b, seen)
-        u = rng.random(len(b))
-        pos = np.searchsorted(self.cum, idx + u, side="right")
-        pos = np.clip(pos, self.starts[idx], self.starts[idx + 1] - 1)
+        q = idx + rng.random(len(b))
+        start, last = self.starts[idx], self.starts[idx + 1] - 1
+        pos = start.copy()
+        for j in range(self.widest - 1):  # entries before the drawn one: their cumulative sum is <= q
+            at = np.minimum(start + j, last)
+            pos += (start + j < last) & (self.cum[at] <= q)
+        return pos, found
+
+    def act(self, b: BatchState, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        """One action per table: the compiled distribution sampled with ``rng``, the live human outside it."""
+        pos, found = self.answer(b, seen, rng)
         out = self.actions[pos]
+        return self.fall_back(b, seen, rng, out, found)
+
+    def fall_back(
+        self, b: BatchState, seen: np.ndarray, rng: np.random.Generator, out: np.ndarray, found: np.ndarray
+    ) -> np.ndarray:
+        """``out`` with the tables not ``found`` answered by the live human (counted in ``fallbacks``)."""
         if not found.all():
             missing = np.flatnonzero(~found)
             self.fallbacks += len(missing)
@@ -294,12 +345,11 @@ def compile_human(
             try:
                 with np.load(path, allow_pickle=False) as data:
                     if str(data["key"]) == key:
-                        return CompiledHuman(
-                            world, live, {k: data[k] for k in ("keys", "starts", "actions", "cum")}, name
-                        )
+                        fields = ("keys", "starts", "actions", "cum", *OUTCOME_FIELDS)
+                        return CompiledHuman(world, live, {k: data[k] for k in fields}, name)
             except (OSError, ValueError, KeyError):
                 pass  # a corrupt or foreign entry is rebuilt
-    arrays = CompiledHuman.arrays_of(packer, enumerate_answers(world, live, max_keys, progress))
+    arrays = CompiledHuman.arrays_of(world, packer, enumerate_answers(world, live, max_keys, progress))
     if path is not None:
         from hg_marl.training.io import atomic_write
 

@@ -305,7 +305,10 @@ class BatchedTable(VectorEnv):
         self.state = self.rules.initial(self._rng, self.num_envs)
         self._zero_counters(np.arange(self.num_envs))
         self._autoreset = np.zeros(self.num_envs, dtype=bool)
-        self._mask: np.ndarray | None = None
+        self._obs = np.zeros((self.num_envs, n_f), dtype=np.int8)
+        self._masks = np.zeros((self.num_envs, n_a), dtype=bool)
+        self._stale = np.ones(self.num_envs, dtype=bool)
+        """Tables whose cached facts and mask must be recomputed (their state changed by the rules)."""
         n = self.num_envs
         self._robot_act, self._robot_ok = np.full(n, -1, dtype=np.int64), np.zeros(n, dtype=bool)
         self._robot_dur, self._robot_won = np.zeros(n), np.zeros(n, dtype=bool)
@@ -342,17 +345,25 @@ class BatchedTable(VectorEnv):
         partner = np.full(self.num_envs, -1, dtype=np.int64)
         if self.seat is Agent.HUMAN:
             partner = self._partner_move(rows, np.full(self.num_envs, -1, dtype=np.int64))[0]
-        self._mask = None
+        self._stale[:] = True
         info = {"clock": self.clock.copy(), "tasks_solved": self.tasks_solved.copy()}
         if self.seat is Agent.HUMAN:
             info["robot_action"] = partner
-        return self._out(self.rules.facts(self.state)), info
+        return self._out(self._view()[0].copy()), info
+
+    def _view(self) -> tuple[np.ndarray, np.ndarray]:
+        """The current facts and seat masks, recomputing the stale tables only."""
+        if self._stale.any():
+            rows = np.flatnonzero(self._stale)
+            sub = self._sub(rows)
+            self._obs[rows] = self.rules.facts(sub)
+            self._masks[rows] = self.rules.masks(sub, self.seat)
+            self._stale[:] = False
+        return self._obs, self._masks
 
     def action_masks(self) -> np.ndarray:
         """(num_envs, n_actions) booleans: the learning seat's feasible actions (sb3-contrib's hook)."""
-        if self._mask is None:
-            self._mask = self.rules.masks(self.state, self.seat)
-        return self._mask
+        return self._view()[1].copy()
 
     def step(self, actions: Any) -> tuple[Any, Any, Any, Any, dict[str, Any]]:
         """One cycle per table (see the module docstring); ``actions`` has one index per table."""
@@ -377,16 +388,15 @@ class BatchedTable(VectorEnv):
             if resetting.any():
                 self._reset_rows(np.flatnonzero(resetting))
             self._autoreset = ended
-            obs = self.rules.facts(self.state)
+            obs = self._view()[0].copy()
         else:
-            obs = self.rules.facts(self.state)
+            obs = self._view()[0].copy()
             if ended.any():
-                info["final_obs"] = obs.copy()
+                info["final_obs"] = obs
                 info["final_info"] = {k: v.copy() for k, v in info.items() if k != "final_obs"}
                 info["_final_obs"] = ended
                 self._reset_rows(np.flatnonzero(ended))
-                obs = self.rules.facts(self.state)
-        self._mask = None
+                obs = self._view()[0].copy()
         return self._out(obs), self._out(rewards), self._out(terminated), self._out(truncated), info
 
     # ---- cycles -----------------------------------------------------------------------
@@ -398,12 +408,45 @@ class BatchedTable(VectorEnv):
         """The partner's move on tables ``rows``: (actions, ok, duration)."""
         sub = self._sub(rows)
         other = self.seat.other
+        if other is Agent.HUMAN and hasattr(self.partner, "answer"):
+            return self._compiled_move(rows, sub, seen)
         acts = np.asarray(self.partner.act(sub, seen, self._partner_rng), dtype=np.int64)
         ok, duration, reward = self.rules.step(sub, other, acts)
         self.state.put(rows, sub)
+        self._stale[rows] = True
         if other is Agent.ROBOT:
             self._robot_won[rows] = self._rewarded(rows, reward)
             self._robot_act[rows], self._robot_ok[rows], self._robot_dur[rows] = acts, ok, duration
+        return acts, ok, duration
+
+    def _compiled_move(
+        self, rows: np.ndarray, sub: BatchState, seen: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """A compiled human's move: its answers' outcomes gathered from its table (``CompiledHuman.outcome``).
+
+        Tables outside the table are answered by the live human and stepped by the rules.
+        """
+        partner: Any = self.partner
+        pos, found = partner.answer(sub, seen, self._partner_rng)
+        acts = partner.actions[pos]
+        if found.all():
+            hit, p = rows, pos
+        else:
+            acts = partner.fall_back(sub, seen, self._partner_rng, acts, found)
+            hit, p = rows[found], pos[found]
+        out = partner.outcome
+        st = self.state
+        st.where[hit], st.robot_at[hit] = out["where"][p], out["robot_at"][p]
+        st.offer_by[hit], st.offer_obj[hit] = out["offer_by"][p], out["offer_obj"][p]
+        self._obs[hit], self._masks[hit] = out["facts"][p], out["mask"][p]
+        self._stale[hit] = False
+        ok, duration = out["ok"][pos], out["duration"][pos]
+        if not found.all():
+            miss = np.flatnonzero(~found)
+            slow = BatchState(sub.where[miss], sub.robot_at[miss], sub.offer_by[miss], sub.offer_obj[miss])
+            ok[miss], duration[miss], _ = self.rules.step(slow, Agent.HUMAN, acts[miss])
+            st.put(rows[miss], slow)
+            self._stale[rows[miss]] = True
         return acts, ok, duration
 
     def _rewarded(self, rows: np.ndarray, reward: np.ndarray) -> np.ndarray:
@@ -412,6 +455,7 @@ class BatchedTable(VectorEnv):
         self.tasks_solved[rows[won]] += 1
         if self.continuing and won.any():
             self.state.put(rows[won], self.rules.initial(self._rng, int(won.sum())))
+            self._stale[rows[won]] = True
         return won
 
     def _end_cycle(
@@ -440,9 +484,9 @@ class BatchedTable(VectorEnv):
 
     def _robot_cycle(self, rows: np.ndarray, actions: np.ndarray) -> tuple[Any, Any, Any, dict[str, Any]]:
         sub = self._sub(rows)
-        mask = self._mask[rows] if self._mask is not None else None
-        ok_r, d_r, reward = self.rules.step(sub, Agent.ROBOT, actions, mask)
+        ok_r, d_r, reward = self.rules.step(sub, Agent.ROBOT, actions, self._view()[1][rows])
         self.state.put(rows, sub)
+        self._stale[rows] = True
         won = self._rewarded(rows, reward)
         h_act, ok_h, d_h = self._partner_move(rows, np.where(ok_r, actions, -1))
         done, trunc = self._end_cycle(rows, (actions, h_act), (ok_r, ok_h), (d_r, d_h), won)
@@ -453,10 +497,10 @@ class BatchedTable(VectorEnv):
         r_act, ok_r, d_r = self._robot_act[rows], self._robot_ok[rows], self._robot_dur[rows]
         won = np.zeros(len(rows), dtype=bool)  # an episodic win ended the human's episode already
         sub = self._sub(rows)
-        mask = self._mask[rows] if self._mask is not None else None
         effort_before = self.effort[rows, 1].copy()
-        ok_h, d_h, _ = self.rules.step(sub, Agent.HUMAN, actions, mask)
+        ok_h, d_h, _ = self.rules.step(sub, Agent.HUMAN, actions, self._view()[1][rows])
         self.state.put(rows, sub)
+        self._stale[rows] = True
         done, trunc = self._end_cycle(rows, (r_act, actions), (ok_r, ok_h), (d_r, d_h), won)
         work = self.effort[rows, 1] - effort_before
         go_on = ~(done | trunc)
@@ -513,6 +557,7 @@ class BatchedTable(VectorEnv):
 
     def _reset_rows(self, rows: np.ndarray) -> None:
         self.state.put(rows, self.rules.initial(self._rng, len(rows)))
+        self._stale[rows] = True
         self._zero_counters(rows)
         self._reset_partner(rows)
         if self.seat is Agent.HUMAN:
