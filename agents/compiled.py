@@ -198,16 +198,15 @@ class CompiledHuman:
         rules = BatchedRules(world)
         mids = BatchState.of([s for _, s, d in triples for _ in d]) if len(actions) else BatchState.of([])
         ok, duration, _ = rules.step(mids, Agent.HUMAN, actions)
-        small = np.int16 if world.table.n_places < 2**15 and world.n_actions(Agent.HUMAN) < 2**15 else np.int64
         return {
             "keys": keys,
             "starts": starts,
             "actions": actions,
             "cum": cum,
-            "where": mids.where.astype(small),
-            "robot_at": mids.robot_at.astype(small),
-            "offer_by": mids.offer_by.astype(small),
-            "offer_obj": mids.offer_obj.astype(small),
+            "where": mids.where,
+            "robot_at": mids.robot_at,
+            "offer_by": mids.offer_by,
+            "offer_obj": mids.offer_obj,
             "ok": ok,
             "duration": duration,
             "facts": rules.facts(mids),

@@ -11,7 +11,10 @@ action sequences and requires identical trajectories.
 
 :class:`BatchedTable` is one seat's Gymnasium ``VectorEnv``: the learning seat's action
 per table, then the partner's, which reaches it as arrays through :class:`ArrayPartner`
-(``agents/compiled.py`` compiles scripted partners into one). Observations, rewards,
+(``agents/compiled.py`` compiles scripted partners into one; a partner that also has
+``answer`` and ``outcome`` tables, as a compiled human does, hands the next state, its
+facts and its robot mask, which ``BatchedRules`` computed for every entry at compile
+time, so the human's half of a cycle is a few gathers). Observations, rewards,
 clock, durations, effort, idle time, termination and truncation are those of the
 single-table views (``agents/views.py``). Autoreset follows Gymnasium 1.x: ``NEXT_STEP``
 by default (the step after an episode's last returns the reset observation with reward
@@ -20,9 +23,10 @@ observation and info go to ``info["final_obs"]``/``info["final_info"]``, the res
 observation is returned), which SB3's VecEnv adapter (``hg_marl.wrappers.sb3_vec``) uses.
 
 Backends: ``device=None`` runs on numpy (CPU); ``device="cpu"`` or ``"cuda"`` keeps the
-same code path, with the arrays converted to torch at the boundary only; the measurement
-in ``benchmarks/batched_throughput.py`` shows numpy is the faster one on this task's
-tiny per-table work, so numpy is the default.
+same code path and returns observations, rewards and flags as torch tensors (actions may
+be tensors), converted at the boundary only. ``benchmarks/batched_throughput.py``
+measures it at 0.75-1.3x numpy on CPU (no gain: the per-table work is a few integer
+gathers), so numpy is the default; no GPU was available to measure ``"cuda"``.
 """
 
 from __future__ import annotations
@@ -80,7 +84,9 @@ class BatchState:
         return len(self.robot_at)
 
     def put(self, rows: np.ndarray, other: BatchState) -> None:
-        """Overwrite tables ``rows`` with ``other``'s (same length as ``rows``)."""
+        """Overwrite tables ``rows`` with ``other``'s (same length as ``rows``; nothing to do if it is a view of self)."""
+        if other.where is self.where:
+            return
         self.where[rows] = other.where
         self.robot_at[rows] = other.robot_at
         self.offer_by[rows] = other.offer_by
@@ -401,7 +407,10 @@ class BatchedTable(VectorEnv):
 
     # ---- cycles -----------------------------------------------------------------------
     def _sub(self, rows: np.ndarray) -> BatchState:
+        """Tables ``rows`` (the state itself, not a copy, when they are all of them in order)."""
         s = self.state
+        if len(rows) == self.num_envs:
+            return BatchState(s.where, s.robot_at, s.offer_by, s.offer_obj, rows)
         return BatchState(s.where[rows], s.robot_at[rows], s.offer_by[rows], s.offer_obj[rows], rows)
 
     def _partner_move(self, rows: np.ndarray, seen: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
