@@ -84,7 +84,7 @@ class BatchState:
         return len(self.robot_at)
 
     def put(self, rows: np.ndarray, other: BatchState) -> None:
-        """Overwrite tables ``rows`` with ``other``'s (same length as ``rows``; nothing to do if it is a view of self)."""
+        """Overwrite tables ``rows`` with ``other``'s (same length; nothing to do when ``other`` is self's view)."""
         if other.where is self.where:
             return
         self.where[rows] = other.where
