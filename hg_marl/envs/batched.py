@@ -378,17 +378,17 @@ class BatchedTable(VectorEnv):
         if actions.shape != (self.num_envs,) or (actions < 0).any() or (actions >= n_a).any():
             raise ValueError(f"actions: expected {self.num_envs} indices in [0, {n_a}), got {actions!r}")
         resetting = self._autoreset.copy() if self.autoreset_mode is AutoresetMode.NEXT_STEP else None
-        live = np.flatnonzero(~resetting) if resetting is not None else np.arange(self.num_envs)
+        # Every table steps (whole arrays, no copies); the tables being autoreset are then
+        # re-drawn and their step's results discarded: the action is ignored, as Gymnasium says.
+        every = np.arange(self.num_envs)
         if self.seat is Agent.ROBOT:
-            reward, done, trunc, info = self._robot_cycle(live, actions[live])
+            rewards, terminated, truncated, info = self._robot_cycle(every, actions)
         else:
-            reward, done, trunc, info = self._human_cycle(live, actions[live])
-        rewards, terminated, truncated = (
-            np.zeros(self.num_envs),
-            np.zeros(self.num_envs, bool),
-            np.zeros(self.num_envs, bool),
-        )
-        rewards[live], terminated[live], truncated[live] = reward, done, trunc
+            rewards, terminated, truncated, info = self._human_cycle(every, actions)
+        if resetting is not None and resetting.any():
+            rewards[resetting], terminated[resetting], truncated[resetting] = 0.0, False, False
+            for key, value in info.items():
+                value[resetting] = False if key.startswith("_") else 0
         ended = terminated | truncated
         if resetting is not None:
             if resetting.any():
@@ -445,9 +445,20 @@ class BatchedTable(VectorEnv):
             hit, p = rows[found], pos[found]
         out = partner.outcome
         st = self.state
-        st.where[hit], st.robot_at[hit] = out["where"][p], out["robot_at"][p]
-        st.offer_by[hit], st.offer_obj[hit] = out["offer_by"][p], out["offer_obj"][p]
-        self._obs[hit], self._masks[hit] = out["facts"][p], out["mask"][p]
+        if len(hit) == self.num_envs:  # every table found: gather straight into the state
+            for name, target in (
+                ("where", st.where),
+                ("robot_at", st.robot_at),
+                ("offer_by", st.offer_by),
+                ("offer_obj", st.offer_obj),
+                ("facts", self._obs),
+                ("mask", self._masks),
+            ):
+                np.take(out[name], p, axis=0, out=target)
+        else:
+            st.where[hit], st.robot_at[hit] = out["where"][p], out["robot_at"][p]
+            st.offer_by[hit], st.offer_obj[hit] = out["offer_by"][p], out["offer_obj"][p]
+            self._obs[hit], self._masks[hit] = out["facts"][p], out["mask"][p]
         self._stale[hit] = False
         ok, duration = out["ok"][pos], out["duration"][pos]
         if not found.all():
@@ -553,9 +564,11 @@ class BatchedTable(VectorEnv):
         present = np.zeros(n, dtype=bool)
         present[rows] = True
         for key, value in values.items():
-            full = np.zeros(n, dtype=np.asarray(value).dtype)
-            full[rows] = value
-            info[key] = full
+            if len(rows) == n:  # fancy-indexed above, so already a fresh array
+                info[key] = np.asarray(value)
+            else:
+                info[key] = np.zeros(n, dtype=np.asarray(value).dtype)
+                info[key][rows] = value
             info[f"_{key}"] = present
         return info
 
