@@ -349,6 +349,43 @@ class CompiledPopulation:
         self.members = list(members)
         self.name = "+".join(m.name for m in self.members)
         self.member: np.ndarray = np.zeros(0, dtype=np.int64)
+        if all(hasattr(m, "answer") for m in self.members):
+            # the members' tables end to end: an entry of member k is offset by the entries before it
+            sizes = [len(m.actions) for m in self.members]
+            self.offset = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
+            self.actions = np.concatenate([m.actions for m in self.members])
+            self.outcome = {k: np.concatenate([m.outcome[k] for m in self.members]) for k in self.members[0].outcome}
+
+    def answer(self, batch: Any, seen: np.ndarray, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+        """(entry in the joined tables, found) per table: each table's member answers."""
+        who = self.member[batch.rows]
+        pos = np.zeros(len(batch), dtype=np.int64)
+        found = np.zeros(len(batch), dtype=bool)
+        for k, member in enumerate(self.members):
+            sel = np.flatnonzero(who == k)
+            if len(sel):
+                p, f = member.answer(self._part(batch, sel), seen[sel], rng)
+                pos[sel], found[sel] = p + self.offset[k], f
+        return pos, found
+
+    def fall_back(
+        self, batch: Any, seen: np.ndarray, rng: np.random.Generator, out: np.ndarray, found: np.ndarray
+    ) -> np.ndarray:
+        """The live members answer the tables not found (counted per member)."""
+        who = self.member[batch.rows]
+        for k, member in enumerate(self.members):
+            sel = np.flatnonzero((who == k) & ~found)
+            if len(sel):
+                out[sel] = member.fall_back(self._part(batch, sel), seen[sel], rng, out[sel], found[sel])
+        return out
+
+    @staticmethod
+    def _part(batch: Any, sel: np.ndarray) -> Any:
+        from hg_marl.envs.batched import BatchState
+
+        return BatchState(
+            batch.where[sel], batch.robot_at[sel], batch.offer_by[sel], batch.offer_obj[sel], batch.rows[sel]
+        )
 
     @property
     def fallbacks(self) -> int:
@@ -365,16 +402,12 @@ class CompiledPopulation:
 
     def act(self, batch: Any, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
         """Each table's member answers (one batched look-up per member)."""
-        from hg_marl.envs.batched import BatchState
-
-        rows = getattr(batch, "rows", np.arange(len(batch)))
-        who = self.member[rows]
+        who = self.member[batch.rows]
         out = np.empty(len(batch), dtype=np.int64)
         for k, member in enumerate(self.members):
             sel = np.flatnonzero(who == k)
             if len(sel):
-                sub = BatchState(batch.where[sel], batch.robot_at[sel], batch.offer_by[sel], batch.offer_obj[sel])
-                out[sel] = member.act(sub, seen[sel], rng)
+                out[sel] = member.act(self._part(batch, sel), seen[sel], rng)
         return out
 
 

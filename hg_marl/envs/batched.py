@@ -417,7 +417,7 @@ class BatchedTable(VectorEnv):
         """The partner's move on tables ``rows``: (actions, ok, duration)."""
         sub = self._sub(rows)
         other = self.seat.other
-        if other is Agent.HUMAN and hasattr(self.partner, "answer"):
+        if other is Agent.HUMAN and getattr(self.partner, "outcome", None) is not None:
             return self._compiled_move(rows, sub, seen)
         acts = np.asarray(self.partner.act(sub, seen, self._partner_rng), dtype=np.int64)
         ok, duration, reward = self.rules.step(sub, other, acts)

@@ -7,7 +7,7 @@ import pickle
 import gymnasium
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from hg_marl.agents.compiled import CompileError, compile_human
@@ -28,6 +28,8 @@ RULE_SCENARIOS = [
 ]
 ENV_SCENARIOS = ["paper2015", "generated:objects=3,seed=2", "generated:objects=2,seed=4,human_only=0.8"]
 HUMANS = ["cooperative", "lazy", "no_handover", "adversarial", "random", "noisy", "cooperative:p_idle=0.3"]
+POPULATION = "cooperative|lazy|random"
+"""A population of three compiled humans (a member per table)."""
 
 _WORLDS: dict[str, World] = {}
 _PARTNERS: dict[tuple[str, str], object] = {}
@@ -42,7 +44,8 @@ def world_of(name: str) -> World:
 def partner_of(scenario: str, human: str) -> object:
     key = (scenario, human)
     if key not in _PARTNERS:
-        _PARTNERS[key] = compile_human(world_of(scenario), human, cache=None)
+        members = [compile_human(world_of(scenario), h, cache=None) for h in human.split("|")]
+        _PARTNERS[key] = members[0] if len(members) == 1 else CompiledPopulation(members)
     return _PARTNERS[key]
 
 
@@ -79,10 +82,11 @@ def test_rules_step_every_table_as_world_step(scenario: str, seed: int, p_feasib
 @settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(
     scenario=st.sampled_from(ENV_SCENARIOS),
-    human=st.sampled_from(HUMANS),
+    human=st.sampled_from([*HUMANS, POPULATION]),
     seed=st.integers(0, 2**31),
     max_cycles=st.integers(3, 25),
 )
+@example(scenario="paper2015", human=POPULATION, seed=1, max_cycles=10)
 def test_robot_seat_trajectories_equal_the_aec_env(scenario: str, human: str, seed: int, max_cycles: int) -> None:
     """Each table replayed in the AEC env with the same robot action and the human's recorded answer.
 
@@ -94,8 +98,9 @@ def test_robot_seat_trajectories_equal_the_aec_env(scenario: str, human: str, se
     n = 6
     world = world_of(scenario)
     env = BatchedTable(partner_of(scenario, human), n, world, max_cycles=max_cycles)
-    live = make_human(human)
-    live.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    lives = [make_human(h) for h in human.split("|")]
+    for live in lives:
+        live.reset(world, Agent.HUMAN, np.random.default_rng(0))
     obs, _ = env.reset(seed=seed)
     aecs = []
     for i in range(n):
@@ -123,6 +128,7 @@ def test_robot_seat_trajectories_equal_the_aec_env(scenario: str, human: str, se
             r = aec.rewards["robot"]
             h = int(info["human_action"][i])
             ok_robot = not aec.infos["robot"]["failed"]
+            live = lives[int(env.partner.member[i])] if len(lives) > 1 else lives[0]  # type: ignore[attr-defined]
             seen = int(actions[i]) if ok_robot and live.uses_robot_action else -1
             assert dict(live.distribution(world, aec.world_state, seen)).get(h, 0.0) > 0.0
             aec.step(h)
