@@ -379,3 +379,61 @@ def test_compiled_sampling_draws_each_answer_with_its_probability() -> None:
     counts = np.bincount(drawn, minlength=world.n_actions(Agent.HUMAN)) / 20_000
     for action in range(world.n_actions(Agent.HUMAN)):
         assert counts[action] == pytest.approx(expected.get(action, 0.0), abs=0.02)
+
+
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    scenario=st.sampled_from(ENV_SCENARIOS),
+    robot=st.sampled_from(["random", "planner"]),
+    seed=st.integers(0, 2**31),
+    max_cycles=st.integers(2, 12),
+    effort_weight=st.sampled_from([0.0, 0.05]),
+)
+def test_human_seat_trajectories_equal_the_aec_env(
+    scenario: str, robot: str, seed: int, max_cycles: int, effort_weight: float
+) -> None:
+    """The human's batched seat replayed in the AEC env with the robots' recorded moves (HumanView's protocol)."""
+    from hg_marl.agents.views import human_vector_env
+
+    n = 4
+    world = world_of(scenario)
+    env = human_vector_env(
+        num_envs=n, scenario=world.scenario, robot=robot, max_cycles=max_cycles, effort_weight=effort_weight
+    )
+    rng = np.random.default_rng(seed)
+    starts = [world.initial_state(rng) for _ in range(n)]
+    obs, info = env.reset(seed=seed, options={"states": starts})
+    aecs = []
+    for i in range(n):
+        aec = raw_env(scenario=world.scenario, max_cycles=max_cycles)
+        aec.reset(options={"state": starts[i]})
+        aec.step(int(info["robot_action"][i]))
+        assert (obs[i] == aec.observe("human")["observation"]).all()
+        aecs.append(aec)
+    ended = np.zeros(n, dtype=bool)
+    for _ in range(30):
+        masks = env.action_masks()
+        actions = (rng.random(masks.shape) * masks).argmax(1)
+        obs, reward, term, trunc, info = env.step(actions)
+        for i, aec in enumerate(aecs):
+            if ended[i]:
+                continue
+            assert (masks[i] == aec.observe("human")["action_mask"].astype(bool)).all()
+            before = aec.infos["human"]["effort"]
+            aec.step(int(actions[i]))
+            work = aec.infos["human"]["effort"] - before
+            done, cut = aec.terminations["human"], aec.truncations["human"]
+            task = 0.0
+            if not (done or cut):
+                aec.step(int(info["robot_action"][i]))
+                task = aec.rewards["human"]
+                done = task > 0
+            assert reward[i] == pytest.approx(task - effort_weight * work, abs=1e-12)
+            assert (term[i], trunc[i]) == (done, cut)
+            assert info["clock"][i] == aec.clock and info["tasks_solved"][i] == aec.tasks_solved
+            assert info["work"][i] == pytest.approx(work, abs=1e-12)
+            if not (done or cut):
+                assert (obs[i] == aec.observe("human")["observation"]).all()
+            ended[i] = done or cut
+        if ended.all():
+            break
