@@ -28,6 +28,13 @@ partner's action (index and name), the cycle's events (one ``"; "``-joined strin
 solved, effort and idle time. Views charge no decision time. Seeding: ``reset(seed=s)``
 seeds the table and the partner's own generator from ``s``.
 
+Batched seats: ``gymnasium.make_vec(id, num_envs=N, vectorization_mode="vector_entry_point",
+...)`` reaches :func:`robot_vector_env` / :func:`human_vector_env`, ``N`` tables in one
+``hg_marl.envs.batched.BatchedTable``: the robot's seat with the human(s) compiled
+(``agents/compiled.py``; a list is a :class:`CompiledPopulation`), the human's seat with
+one live robot per table (:class:`LiveRobots`: the planner robot revises its model of the
+human from history, so it is not a function of the state and is not compiled).
+
 Humans: a registry name (``"lazy:p_idle=0.5"``), an Actor, or a list of them (a
 population; one is drawn per episode with the view's generator). Robots likewise, with
 names from ``hg_marl.agents.robots.make_robot`` (``planner``, ``habit``, ``hybrid``,
@@ -320,7 +327,6 @@ class LiveRobots:
         self.specs = specs
         # a name builds one actor per table; an instance is shared by the tables it plays
         self.actors = [make_robot_actor(specs[i % len(specs)]) for i in range(num_envs)]
-        self._seeded = False
 
     def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
         """Start the actors of tables ``rows`` with generators drawn from ``rng``."""
