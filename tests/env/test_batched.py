@@ -437,3 +437,20 @@ def test_human_seat_trajectories_equal_the_aec_env(
             ended[i] = done or cut
         if ended.all():
             break
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("algo", ["PPO", "DQN"])
+def test_plain_sb3_algorithms_train_on_the_batched_vec_env(algo: str) -> None:
+    """PPO and DQN learn a few hundred steps on the adapter (no masks: failed actions are legal input)."""
+    sb3 = pytest.importorskip("stable_baselines3")
+    import torch
+
+    from hg_marl.wrappers.sb3 import batched_vec_env
+
+    torch.set_num_threads(1)
+    venv = batched_vec_env(8, human="lazy", max_cycles=20, cache=None)
+    kwargs = {"n_steps": 16, "batch_size": 64} if algo == "PPO" else {"learning_starts": 64, "buffer_size": 1000}
+    model = getattr(sb3, algo)("MlpPolicy", venv, seed=0, device="cpu", **kwargs).learn(256)
+    assert model.num_timesteps >= 256
+    assert int(venv.env.cycles.max()) <= 20  # the tables were reset by the adapter as they ended
