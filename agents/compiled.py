@@ -1,6 +1,7 @@
 """Compiled partners: a stationary scripted human as an action distribution per reachable state.
 
-A stationary human (every registry human but ``switching``, ``replay`` and ``learned``)
+A stationary human (every registry human but ``switching`` and ``replay``; ``learned``
+in its numpy kinds, not SB3's)
 answers as a function of the mid-cycle state and the robot's action seen
 (``StationaryHuman.distribution``). :func:`compile_human` enumerates every mid-cycle
 state the robot-turn states of the scenario can reach, whatever the robot does (the
@@ -287,11 +288,24 @@ def source_digest(root: Path | None = None) -> str:
 
 
 def cache_key(world: World, spec: str) -> str:
-    """Content key of a compiled table: scenario, durations, human spec and code."""
+    """Content key of a compiled table: scenario, durations, human spec, the files it names, and code.
+
+    A ``path=`` parameter (a learned policy's folder or file) is keyed by the content of
+    every file under it, so retraining into the same folder compiles again.
+    """
+    from hg_marl.agents.humans.registry import parse_human
+
     h = hashlib.sha256()
     for part in (repr(world.scenario), repr(world.durations), spec, source_digest()):
         h.update(part.encode())
         h.update(b"\0")
+    _, params = parse_human(spec)
+    if "path" in params:
+        named = Path(params["path"])
+        for f in sorted(named.rglob("*")) if named.is_dir() else [named]:
+            if f.is_file():
+                h.update(f.name.encode())
+                h.update(f.read_bytes())
     return h.hexdigest()
 
 
@@ -327,7 +341,7 @@ def compile_human(
     if not callable(getattr(live, "distribution", None)):
         raise CompileError(
             f"human: {getattr(live, 'name', live)!r} cannot be compiled: it has no distribution(world, state) "
-            "(switching, replay and learned humans are not stationary scripted humans)"
+            "(switching and replay humans are not functions of the state)"
         )
     live.reset(world, Agent.HUMAN, np.random.default_rng(0))
     packer = Packer(world)
@@ -348,7 +362,13 @@ def compile_human(
                         return CompiledHuman(world, live, {k: data[k] for k in fields}, name)
             except (OSError, ValueError, KeyError):
                 pass  # a corrupt or foreign entry is rebuilt
-    arrays = CompiledHuman.arrays_of(world, packer, enumerate_answers(world, live, max_keys, progress))
+    try:
+        answers = enumerate_answers(world, live, max_keys, progress)
+    except CompileError:
+        raise
+    except ValueError as exc:  # e.g. a learned SB3 policy: no exact distribution
+        raise CompileError(f"human: {name!r} cannot be compiled: {exc}") from None
+    arrays = CompiledHuman.arrays_of(world, packer, answers)
     if path is not None:
         from hg_marl.training.io import atomic_write
 

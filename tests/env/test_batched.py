@@ -454,3 +454,39 @@ def test_plain_sb3_algorithms_train_on_the_batched_vec_env(algo: str) -> None:
     model = getattr(sb3, algo)("MlpPolicy", venv, seed=0, device="cpu", **kwargs).learn(256)
     assert model.num_timesteps >= 256
     assert int(venv.env.cycles.max()) <= 20  # the tables were reset by the adapter as they ended
+
+
+def test_a_spec_naming_a_file_is_keyed_by_the_files_content(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    from hg_marl.agents.compiled import cache_key
+
+    policy = tmp_path / "policy"
+    policy.mkdir()
+    (policy / "policy.json").write_text("{}")
+    world = world_of("paper2015")
+    spec = f"learned:path={policy}"
+    first = cache_key(world, spec)
+    assert cache_key(world, spec) == first
+    (policy / "policy.json").write_text('{"retrained": true}')
+    assert cache_key(world, spec) != first
+
+
+def test_a_learned_numpy_human_compiles_to_its_live_distribution(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """A learned (linear softmax) policy is stationary: compiled once, its answers are the live ones."""
+    from hg_marl.agents.humans.learned import save_learned_policy
+
+    world = world_of("paper2015")
+    rng = np.random.default_rng(0)
+    weights = rng.normal(size=(world.n_actions(Agent.HUMAN), world.n_facts))
+    path = save_learned_policy(tmp_path / "policy", world, weights=weights)
+    spec = f"learned:path={path}"
+    compiled = compile_human(world, spec, cache=tmp_path / "cache")
+    live = make_human(spec)
+    live.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    rules = BatchedRules(world)
+    batch = rules.initial(np.random.default_rng(2), 8)
+    seen = np.full(8, -1)
+    for i in range(8):
+        expected = [(a, p) for a, p in live.distribution(world, batch.state(i), -1) if p > 0]
+        got = compiled.distribution(batch, seen, i)
+        assert [a for a, _ in got] == [a for a, _ in expected]
+        assert [p for _, p in got] == pytest.approx([p for _, p in expected], abs=1e-12)
