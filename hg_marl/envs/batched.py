@@ -176,7 +176,11 @@ class BatchedRules:
         ok = mask[rows, actions]
         take_reply = (kind == Kind.TAKE) & (o == b.offer_obj)
         lapse = (b.offer_by == 1 - agent) & ~(take_reply & ok)
-        clean_before = self.is_clean(b) if agent == Agent.ROBOT else None
+        reward = np.zeros(len(b))
+        if agent == Agent.ROBOT:  # a successful wait on a clean table (only the waits need the check)
+            waits = np.flatnonzero(ok & (kind == Kind.WAIT))
+            if len(waits):
+                reward[waits] = self.is_clean(BatchState(b.where[waits], b.robot_at, b.offer_by, b.offer_obj))
         b.offer_by[lapse] = -1
         b.offer_obj[lapse] = -1
         where, at = b.where, b.robot_at
@@ -204,10 +208,6 @@ class BatchedRules:
             to_static = self.goto_static[at[g], np.maximum(t - n, 0)]
             at[g] = np.where(t < n, to_obj, to_static)
         duration = np.where(ok, self.duration[agent][actions], self.failed)
-        if clean_before is None:
-            reward = np.zeros(len(b))
-        else:
-            reward = (ok & (kind == Kind.WAIT) & clean_before).astype(np.float64)
         return ok, duration, reward
 
     def facts(self, b: BatchState) -> np.ndarray:
