@@ -401,6 +401,14 @@ def oracle_rate(
 class OracleRobot:
     """A robot that plays the oracle's optimal policy (greedy in its values).
 
+    Off its model (a state the model never reaches: the partner is not the human the
+    policy was solved against) it does not wait for a state it knows: it asks the
+    planner (cooperative model) for the robot's next move; when that move is a ``wait``
+    on an unfinished table at the state of its previous off-model decision (nothing
+    changed: the partner does not do what the plan waits for), it tries the feasible
+    non-wait actions in turn, so it never waits forever. ``off_model`` counts these
+    decisions in the current run.
+
     Args:
         result: a computed :class:`OracleResult`; or None to compute one at the first reset
             from ``human`` and the world it is reset in.
@@ -413,7 +421,12 @@ class OracleRobot:
         self.result = result
         self.human = human
         self.last_decision: Decision | None = None
-        self._missing = 0
+        self.off_model = 0
+        """Decisions taken at states outside the model in the current run (0 when the
+        partner is the human the policy was solved against)."""
+        self._planner: Any = None
+        self._stalled: State | None = None
+        self._stalls = 0
 
     def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
         """Compute the policy if needed (``rng`` unused: the policy is deterministic)."""
@@ -422,16 +435,51 @@ class OracleRobot:
         if self.result is None or self.result.scenario != world.scenario.name:
             self.result = oracle_rate(world, self.human)
         self._wait = world.n_actions(Agent.ROBOT) - 1
+        self.off_model, self._stalled, self._stalls = 0, None, 0
+        self._planner = None
 
     def act(self, turn: Turn) -> int:
-        """The optimal action at the turn's state (``wait`` for a state outside the model)."""
+        """The optimal action at the turn's state (the planner's move outside the model)."""
         assert self.result is not None
         action = self.result.policy.get(turn.state)
-        if action is None:
-            self._missing += 1
-            if self._missing == 1:
-                logger.warning("oracle policy has no entry for state %s; waiting", turn.state)
-            action = self._wait
-        seconds = self.result.values.get(turn.state, math.inf)
-        self.last_decision = Decision("oracle", int(action), stats=(("expected_seconds", float(seconds)),))
-        return action
+        if action is not None:
+            seconds = self.result.values.get(turn.state, math.inf)
+            self.last_decision = Decision("oracle", int(action), stats=(("expected_seconds", float(seconds)),))
+            return int(action)
+        self.off_model += 1
+        if self.off_model == 1:
+            logger.warning("oracle policy has no entry for state %s; falling back to the planner", turn.state)
+        return self._fallback(turn)
+
+    def _fallback(self, turn: Turn) -> int:
+        """The planner's move; a feasible non-wait action instead of a wait that changes nothing."""
+        world, state = turn.world, turn.state
+        if self._planner is None or self._planner.world is not world:
+            from hg_marl.agents.planner import Planner
+
+            self._planner = Planner(world)
+        start = time.perf_counter()
+        intent = self._planner.intent(state, Agent.ROBOT)
+        action = intent.robot_action if intent.success else self._wait
+        reason = "off model: the planner's move"
+        if action == self._wait and not world.is_clean(state):
+            if state == self._stalled:
+                options = [i for i in world.feasible_indices(state, Agent.ROBOT) if i != self._wait]
+                if options:
+                    action = options[self._stalls % len(options)]
+                    self._stalls += 1
+                    reason = "off model: the planner waits and nothing changed; a feasible move instead"
+            self._stalled = state
+        else:
+            self._stalled = None  # the stall count runs on: a loop through a stall tries the next move
+        self.last_decision = Decision(
+            "planner",
+            int(action),
+            planner_action=int(intent.robot_action) if intent.success else -1,
+            planning_time=time.perf_counter() - start,
+            planner_success=intent.success,
+            planner_consulted=True,
+            expected_human_action=int(intent.human_action) if intent.success else -1,
+            reason=reason,
+        )
+        return int(action)
