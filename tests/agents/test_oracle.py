@@ -151,7 +151,7 @@ def test_oracle_robot_achieves_the_predicted_rate_in_the_env(cooperative_oracle)
         assert measured_rate(OracleRobot(result), human, hours=5) == pytest.approx(result.rate_per_hour, rel=0.03)
     robot = OracleRobot(cooperative_oracle)
     assert measured_rate(robot, "cooperative", hours=3) == pytest.approx(cooperative_oracle.rate_per_hour, rel=0.03)
-    assert robot._missing == 0
+    assert robot.off_model == 0
 
 
 def test_planner_robot_reaches_95_percent_and_nobody_beats_the_oracle(cooperative_oracle) -> None:  # type: ignore[no-untyped-def]
