@@ -42,6 +42,7 @@ from __future__ import annotations
 import itertools
 import logging
 import math
+import os
 import sys
 import time
 from collections.abc import Iterator
@@ -53,7 +54,9 @@ from tqdm import tqdm
 
 from hg_marl.agents.humans.base import HumanError
 from hg_marl.agents.humans.registry import make_human
+from hg_marl.agents.planner.space import Relabel
 from hg_marl.core import Agent, Durations, Scenario, State, World
+from hg_marl.core.scenario import layout_count
 from hg_marl.policy import Decision, Turn
 
 logger = logging.getLogger(__name__)
@@ -93,6 +96,26 @@ class OracleResult:
     """The human's name."""
     seconds: float = 0.0
     """Wall time of the build and solve."""
+    reduced: bool = False
+    """Whether the model holds canonical states only (interchangeable objects in canonical
+    order, :class:`~hg_marl.agents.planner.space.Relabel`): then ``policy`` and ``values``
+    are keyed by canonical states and the policy's actions are in canonical labelling;
+    :meth:`action_at` and :meth:`value_at` answer for any state."""
+
+    def action_at(self, world: World, state: State, relabel: Relabel | None = None) -> int | None:
+        """The optimal robot action at ``state`` (any labelling), or None outside the model."""
+        if not self.reduced:
+            return self.policy.get(state)
+        relabel = relabel or Relabel(world)
+        key, orig = relabel.canonical(state)
+        action = self.policy.get(key)
+        return None if action is None else relabel.action_back(Agent.ROBOT, action, orig)
+
+    def value_at(self, world: World, state: State, relabel: Relabel | None = None) -> float:
+        """Optimal expected seconds to the next success from ``state`` (inf outside the model)."""
+        if self.reduced:
+            state = (relabel or Relabel(world)).canonical(state)[0]
+        return self.values.get(state, math.inf)
 
 
 def layout_distribution(world: World) -> list[tuple[State, float]]:
@@ -126,6 +149,99 @@ def layout_distribution(world: World) -> list[tuple[State, float]]:
     return sorted(out.items())
 
 
+def canonical_layouts(world: World) -> list[tuple[State, float]]:
+    """:func:`layout_distribution` up to interchangeable objects, without enumerating every deal.
+
+    Each state is :meth:`Relabel.canonical` of the tables it stands for, with their total
+    probability. Per layout group: the class make-up of the dealt subset is
+    multivariate-hypergeometric, and given it every assignment of the classes to disjoint
+    spot sets is equally likely (``prod n_c! (m - c)! / m!`` each, ``m`` spots, ``c``
+    objects). On ``generated:objects=8,bins=2`` that is 3,150 states instead of 1.8M deals.
+    """
+    sc = world.scenario
+    members: dict[tuple[int, ...], list[int]] = {}
+    for o, bins in enumerate(world.bins_of):
+        members.setdefault(bins, []).append(o)
+    classes = list(members.values())
+    out: dict[State, float] = {}
+
+    def assignments(spots: tuple[int, ...], sizes: tuple[int, ...]) -> Iterator[tuple[tuple[int, ...], ...]]:
+        if not sizes:
+            yield ()
+            return
+        for chosen in itertools.combinations(spots, sizes[0]):
+            rest = tuple(x for x in spots if x not in chosen)
+            for tail in assignments(rest, sizes[1:]):
+                yield (chosen, *tail)
+
+    def compositions(c: int, left: tuple[int, ...]) -> Iterator[tuple[int, ...]]:
+        if not left:
+            if c == 0:
+                yield ()
+            return
+        for n in range(min(c, left[0]) + 1):
+            for tail in compositions(c - n, left[1:]):
+                yield (n, *tail)
+
+    def deal(
+        k: int, left: tuple[int, ...], places: tuple[tuple[int, ...], ...], p: float
+    ) -> Iterator[tuple[tuple[tuple[int, ...], ...], float]]:
+        if k == len(sc.layout):
+            yield places, p
+            return
+        group = sc.layout[k]
+        c, m = group.count, len(group.spots)
+        for comp in compositions(c, left):
+            q = math.prod(math.comb(n_left, n) for n_left, n in zip(left, comp, strict=True)) / math.comb(sum(left), c)
+            q *= math.prod(math.factorial(n) for n in comp) * math.factorial(m - c) / math.factorial(m)
+            rest = tuple(n_left - n for n_left, n in zip(left, comp, strict=True))
+            for assign in assignments(group.spots, comp):
+                yield from deal(k + 1, rest, tuple(a + b for a, b in zip(places, assign, strict=True)), p * q)
+
+    for places, p in deal(0, tuple(len(m) for m in classes), tuple(() for _ in classes), 1.0):
+        where = [0] * world.n_objects
+        for objs, spots in zip(classes, places, strict=True):
+            for o, spot in zip(objs, sorted(spots), strict=True):
+                where[o] = spot
+        for start in sc.robot_start:
+            state = State(tuple(where), start)
+            out[state] = out.get(state, 0.0) + p / len(sc.robot_start)
+    return sorted(out.items())
+
+
+def canonical_layout_count(world: World) -> int:
+    """How many (class make-up, spot assignment) deals :func:`canonical_layouts` enumerates, times starts.
+
+    Computed without allocating, so a caller can refuse before enumerating.
+    """
+    sizes: dict[tuple[int, ...], int] = {}
+    for bins in world.bins_of:
+        sizes[bins] = sizes.get(bins, 0) + 1
+    sc = world.scenario
+
+    def count(k: int, left: tuple[int, ...]) -> int:
+        if k == len(sc.layout):
+            return 1
+        group = sc.layout[k]
+        c, m = group.count, len(group.spots)
+        total = 0
+
+        def comps(i: int, c_left: int, comp: tuple[int, ...]) -> None:
+            nonlocal total
+            if i == len(left):
+                if c_left == 0:
+                    ways = math.perm(m, c) // math.prod(math.factorial(n) for n in comp)
+                    total += ways * count(k + 1, tuple(a - b for a, b in zip(left, comp, strict=True)))
+                return
+            for n in range(min(c_left, left[i]) + 1):
+                comps(i + 1, c_left - n, (*comp, n))
+
+        comps(0, c, ())
+        return total
+
+    return len(sc.robot_start) * count(0, tuple(sizes.values()))
+
+
 def _human_policy(human: Any, world: World) -> Any:
     if isinstance(human, str):
         human = make_human(human)
@@ -138,11 +254,67 @@ def _human_policy(human: Any, world: World) -> Any:
     return human
 
 
+DEFAULT_SECONDS = 60.0
+"""The default wall-time budget of one oracle build and solve."""
+DEFAULT_MEMORY = 4 * 2**30
+"""The default resident memory budget (bytes) of the process during a solve."""
+
+
+def _rss() -> int:
+    """This process's resident memory in bytes (``/proc/self/statm``; peak ``ru_maxrss`` elsewhere)."""
+    try:
+        with open("/proc/self/statm", encoding="ascii") as f:
+            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        import resource
+
+        return int(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss) * 1024
+
+
+@dataclass(frozen=True)
+class Budget:
+    """What one oracle solve may spend: wall seconds and resident memory (None: no limit).
+
+    Beyond either it stops with :class:`OracleTooLarge` naming the budget, so a caller
+    (a study) can fall back to another reference instead of waiting or swapping.
+    """
+
+    seconds: float | None = DEFAULT_SECONDS
+    memory: int | None = DEFAULT_MEMORY
+    start: float = field(default_factory=time.perf_counter)
+
+    def check(self, world: World, n_states: int) -> None:
+        """Raise :class:`OracleTooLarge` if the solve is over its budget."""
+        spent = time.perf_counter() - self.start
+        if self.seconds is not None and spent > self.seconds:
+            raise OracleTooLarge(
+                f"the oracle for {world.scenario.name!r} is over its budget of {self.seconds:g} s "
+                f"({n_states} states after {spent:.0f} s); raise --max-seconds or use the best robot as reference"
+            )
+        if self.memory is not None and _rss() > self.memory:
+            raise OracleTooLarge(
+                f"the oracle for {world.scenario.name!r} is over its budget of {self.memory / 2**30:g} GB "
+                f"of memory ({n_states} states); raise --max-memory or use the best robot as reference"
+            )
+
+
 class _Model:
     """The explored semi-MDP in flat arrays (pairs = (state, robot action), contiguous per state)."""
 
-    def __init__(self, world: World, human: Any, failed_actions: bool, max_states: int, progress: bool = False) -> None:
+    def __init__(
+        self,
+        world: World,
+        human: Any,
+        failed_actions: bool,
+        max_states: int,
+        progress: bool = False,
+        relabel: Relabel | None = None,
+        budget: Budget | None = None,
+    ) -> None:
         self.world, self.human = world, human
+        self.relabel = relabel
+        """Set when states are kept in canonical order (an equivariant human)."""
+        self.budget = budget or Budget()
         self.progress = progress
         self.failed_actions, self.max_states = failed_actions, max_states
         self.robot_acts, self.human_acts = world.actions(Agent.ROBOT), world.actions(Agent.HUMAN)
@@ -161,7 +333,13 @@ class _Model:
         ids point at states the index holds anyway, so nothing is stored twice."""
         self._uses_robot_action = bool(getattr(human, "uses_robot_action", False))
 
+    def canonical(self, state: State) -> State:
+        """The state the model keeps for ``state`` (itself without symmetry reduction)."""
+        return state if self.relabel is None else self.relabel.canonical(state)[0]
+
     def _id(self, state: State) -> int:
+        if self.relabel is not None:
+            state = self.relabel.canonical(state)[0]
         k = self.index.get(state)
         if k is None:
             if len(self.states) >= self.max_states:
@@ -230,6 +408,7 @@ class _Model:
             if k % 2048 == 0:
                 bar.update(k - bar.n)
                 bar.set_postfix(known=len(self.states), refresh=False)
+                self.budget.check(self.world, len(self.states))
                 if k and k % 16384 == 0:
                     _check_memory(self.world, len(self.states))
             state = self.states[k]
@@ -308,6 +487,9 @@ def oracle_rate(
     tolerance: float = 1e-9,
     max_iterations: int = 200_000,
     progress: bool = False,
+    symmetry: bool | None = None,
+    max_seconds: float | None = DEFAULT_SECONDS,
+    max_memory: int | None = DEFAULT_MEMORY,
 ) -> OracleResult:
     """The optimal tasks per simulated hour against ``human``, and the policy achieving it.
 
@@ -322,22 +504,42 @@ def oracle_rate(
         tolerance: value-iteration stopping threshold (seconds).
         max_iterations: cap on sweeps (``converged`` says whether it was hit).
         progress: show a progress bar on stderr with the states explored and known.
+        symmetry: keep states up to interchangeable objects (canonical order). None: when
+            the human says it is ``equivariant`` (its answer at a relabelled state is its
+            answer relabelled), the only case where this is exact.
+        max_seconds: wall-time budget of the build and solve (None: unlimited).
+        max_memory: resident-memory budget in bytes (None: unlimited).
 
     Raises:
         HumanError: the human is not stationary.
-        OracleTooLarge: the model exceeds ``max_states``.
+        OracleTooLarge: the model exceeds ``max_states`` or the time or memory budget.
     """
     start = time.perf_counter()
+    budget = Budget(max_seconds, max_memory, start)
     world = scenario if isinstance(scenario, World) else World(scenario, durations)
     policy_human = _human_policy(human, world)
-    layouts = layout_distribution(world)
-    model = _Model(world, policy_human, failed_actions, max_states, progress)
+    relabel = Relabel(world)
+    if symmetry is None:
+        symmetry = bool(getattr(policy_human, "equivariant", False))
+    if not (symmetry and relabel.active):
+        relabel = None
+    deals = layout_count(world.scenario) if relabel is None else canonical_layout_count(world)
+    if deals > max_states:  # checked before enumerating them (which would take the memory first)
+        raise OracleTooLarge(
+            f"the oracle's model of {world.scenario.name!r}: {deals} initial layouts to enumerate, over "
+            f"max_states={max_states}; raise max_states or use a smaller scenario"
+        )
+    layouts = layout_distribution(world) if relabel is None else canonical_layouts(world)
+    model = _Model(world, policy_human, failed_actions, max_states, progress, relabel, budget)
     wait = world.durations.wait
     wait_index = world.n_actions(Agent.ROBOT) - 1
     first_replies = tqdm(
         layouts, desc=f"oracle {world.scenario.name}: layouts", unit=" layouts", disable=not progress, file=sys.stderr
     )
-    regen = [(nxt, q * p, tau) for table, q in first_replies for nxt, p, tau in model.replies(table, wait, wait_index)]
+    regen: list[tuple[State, float, float]] = []
+    for table, q in first_replies:
+        budget.check(world, len(regen))
+        regen += [(nxt, q * p, tau) for nxt, p, tau in model.replies(table, wait, wait_index)]
     model.build([s for s, _ in layouts] + [s for s, _, _ in regen])
     n = len(model.states)
     pair_state = np.repeat(np.arange(n), np.diff([*model.pair_start, len(model.pair_action)]))
@@ -351,7 +553,7 @@ def oracle_rate(
     values = np.zeros(n)
     iterations, converged = 0, False
     if alive.any():
-        for iterations in range(1, max_iterations + 1):  # noqa: B007
+        for iterations in range(1, max_iterations + 1):
             q = cost + np.bincount(
                 t_pair, weights=t_prob * np.where(alive[t_next], values[t_next], 0.0), minlength=n_pairs
             )
@@ -359,6 +561,8 @@ def oracle_rate(
             new = np.where(alive, np.minimum.reduceat(q, starts), 0.0)
             delta = float(np.max(np.abs(new - values)))
             values = new
+            if iterations % 64 == 0:
+                budget.check(world, n)
             if delta < tolerance:
                 converged = True
                 break
@@ -370,7 +574,7 @@ def oracle_rate(
         for s in range(n)
     ]
     index = model.index
-    expected = sum(p * (tau + values[index[s]]) for s, p, tau in regen)
+    expected = sum(p * (tau + values[index[model.canonical(s)]]) for s, p, tau in regen)
     rate = 0.0 if math.isinf(expected) else HOUR / expected
     result = OracleResult(
         rate_per_hour=rate,
@@ -385,6 +589,7 @@ def oracle_rate(
         scenario=world.scenario.name,
         human=str(getattr(policy_human, "name", type(policy_human).__name__)),
         seconds=time.perf_counter() - start,
+        reduced=relabel is not None,
     )
     logger.info(
         "oracle %s vs %s: %.2f tasks/h, %d states, %d iterations, %.1f s",
@@ -425,6 +630,7 @@ class OracleRobot:
         """Decisions taken at states outside the model in the current run (0 when the
         partner is the human the policy was solved against)."""
         self._planner: Any = None
+        self._relabel: Relabel | None = None
         self._stalled: State | None = None
         self._stalls = 0
 
@@ -437,13 +643,14 @@ class OracleRobot:
         self._wait = world.n_actions(Agent.ROBOT) - 1
         self.off_model, self._stalled, self._stalls = 0, None, 0
         self._planner = None
+        self._relabel = Relabel(world)
 
     def act(self, turn: Turn) -> int:
         """The optimal action at the turn's state (the planner's move outside the model)."""
         assert self.result is not None
-        action = self.result.policy.get(turn.state)
+        action = self.result.action_at(turn.world, turn.state, self._relabel)
         if action is not None:
-            seconds = self.result.values.get(turn.state, math.inf)
+            seconds = self.result.value_at(turn.world, turn.state, self._relabel)
             self.last_decision = Decision("oracle", int(action), stats=(("expected_seconds", float(seconds)),))
             return int(action)
         self.off_model += 1

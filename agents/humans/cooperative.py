@@ -42,6 +42,7 @@ class CooperativeHuman(StationaryHuman):
 
     name = "cooperative"
     uses_robot_action = True
+    equivariant = True  # the planner answers for the canonical state and maps the actions back
 
     def __init__(self, p_idle: float = 0.0, planner_config: Any = None) -> None:
         super().__init__()

@@ -29,7 +29,9 @@ from hg_marl.core import Agent, State, World
 from hg_marl.policy import Turn
 from hg_marl.training.runner import RunConfig, run
 
-STATIONARY = tuple(n for n, s in HUMANS.items() if s.stationary and not any(p.default is None for p in s.params.values()))
+STATIONARY = tuple(
+    n for n, s in HUMANS.items() if s.stationary and not any(p.default is None for p in s.params.values())
+)
 """Every stationary registry human that needs no file (``learned`` needs a saved policy)."""
 RUNS = (("planner", "cooperative"), ("hybrid", "noisy"), ("oracle", "cooperative"), ("planner", "lazy"))
 
