@@ -23,18 +23,29 @@ certain (e.g. an adversarial human hid an object) are found first by the standar
 almost-sure-reachability fixpoint and get ``V = inf``; if the re-drawn table can lead
 there, the rate is 0.
 
-Size (``hg-marl oracle --scenario S --human H`` on the 2-core machine, wall time of the
-whole command). ``paper2015``: 36 layouts, 444-1,892 states, under 1.5 s for every
-bundled human. ``roboergosum`` (6 objects, 7 placemats, 5,040 layouts): 65k states and
-4 s against ``no_handover``; 116k and 5 s against ``adversarial`` (rate 0); 251k
-states, 3.2M transitions and 16 s against ``lazy``; 192k states and 49 s against the
-planner-driven ``cooperative`` human (one planner call per distinct mid-cycle state up
-to the relabelling of interchangeable objects); 530k states and 15M transitions against
-``random`` (47 s, 2.1 GB) and ``noisy`` (353-396 s, 4.5 GB: one planner call per human
-action of each mid-cycle state, the A* searches taking most of it). The build is pure Python and
-shows a progress bar with the states explored and known (``progress=True``, the CLI's
-default); ``max_states`` stops it with a clear :class:`OracleTooLarge` message, and so
-does the kernel's available memory falling under 512 MB, rather than exhausting memory.
+Symmetry. Objects accepted by the same bins are interchangeable. When the human is
+``equivariant`` (relabelling them in the state relabels its answer: the planner-driven
+``cooperative`` and ``noisy``, ``random``), the model keeps one canonical state per
+relabelling class (:class:`~hg_marl.agents.planner.space.Relabel`) and draws the
+canonical layouts directly (:func:`canonical_layouts`); the rate is the full model's
+(tests), the policy is keyed by canonical states (:meth:`OracleResult.action_at` maps
+an action back). Humans whose rule picks "the first object" by index (``lazy``,
+``no_handover``, ``adversarial``) are not equivariant and get the full model.
+
+Size and budget (``python benchmarks/oracle_budget.py``, each solve in a fresh process
+on the shared 2-core machine, wall and CPU seconds). ``paper2015``: under 1 s for every
+bundled human. ``roboergosum`` (6 objects, 5,040 layouts, 140 canonical): ``random``
+17k states, 3 s; ``cooperative`` 6.5k states, 27 s (20 s CPU; 49 s and 192k states
+without the reduction); ``noisy`` 17k states, 58 s (27 s CPU; 353-396 s and 4.5 GB
+before); ``no_handover`` 6 s, ``adversarial`` 7 s, ``lazy`` 17 s (251k states, 0.6 GB).
+Generated 8-object tables (``generated:objects=8``, 1.8M layouts): ``random`` in 2-3 s;
+the planner-driven humans need one A* search per mid-cycle state (tens of ms each with 8
+objects) and exceed the budget; the non-equivariant humans' 1.8M layouts are refused
+before enumeration. A solve stops with a one-line :class:`OracleTooLarge` naming the
+budget beyond ``max_seconds`` (default 60 s), ``max_memory`` (4 GB resident),
+``max_states`` or the kernel's available memory falling under 512 MB, so a study falls
+back to the best robot as reference. The build is pure Python and shows a progress bar
+with the states explored and known (``progress=True``, the CLI's default).
 """
 
 from __future__ import annotations
@@ -283,15 +294,15 @@ class Budget:
     memory: int | None = DEFAULT_MEMORY
     start: float = field(default_factory=time.perf_counter)
 
-    def check(self, world: World, n_states: int) -> None:
-        """Raise :class:`OracleTooLarge` if the solve is over its budget."""
+    def check(self, world: World, n_states: int, memory: bool = True) -> None:
+        """Raise :class:`OracleTooLarge` if the solve is over its budget (``memory``: check it too)."""
         spent = time.perf_counter() - self.start
         if self.seconds is not None and spent > self.seconds:
             raise OracleTooLarge(
                 f"the oracle for {world.scenario.name!r} is over its budget of {self.seconds:g} s "
                 f"({n_states} states after {spent:.0f} s); raise --max-seconds or use the best robot as reference"
             )
-        if self.memory is not None and _rss() > self.memory:
+        if memory and self.memory is not None and _rss() > self.memory:
             raise OracleTooLarge(
                 f"the oracle for {world.scenario.name!r} is over its budget of {self.memory / 2**30:g} GB "
                 f"of memory ({n_states} states); raise --max-memory or use the best robot as reference"
@@ -405,10 +416,11 @@ class _Model:
         wait = table.wait[Agent.ROBOT]
         k = 0
         while k < len(self.states):
+            if k % 64 == 0:  # a state may cost planner searches: the clock is read often
+                self.budget.check(self.world, len(self.states), memory=k % 2048 == 0)
             if k % 2048 == 0:
                 bar.update(k - bar.n)
                 bar.set_postfix(known=len(self.states), refresh=False)
-                self.budget.check(self.world, len(self.states))
                 if k and k % 16384 == 0:
                     _check_memory(self.world, len(self.states))
             state = self.states[k]
@@ -537,8 +549,8 @@ def oracle_rate(
         layouts, desc=f"oracle {world.scenario.name}: layouts", unit=" layouts", disable=not progress, file=sys.stderr
     )
     regen: list[tuple[State, float, float]] = []
-    for table, q in first_replies:
-        budget.check(world, len(regen))
+    for i, (table, q) in enumerate(first_replies):
+        budget.check(world, i, memory=i % 2048 == 0)
         regen += [(nxt, q * p, tau) for nxt, p, tau in model.replies(table, wait, wait_index)]
     model.build([s for s, _ in layouts] + [s for s, _, _ in regen])
     n = len(model.states)

@@ -1,6 +1,6 @@
 """Oracle budget: wall time and peak memory of value iteration per (scenario, human).
 
-Run: ``python benchmarks/oracle_budget.py [--scenarios paper2015,roboergosum,...]
+Run: ``python benchmarks/oracle_budget.py [--scenarios "paper2015;roboergosum;..."]
 [--humans cooperative,...] [--max-seconds 60]``. Each solve runs in a fresh process
 (nothing cached, its own peak resident memory), with the oracle's default budget (60 s,
 4 GB); a solve over its budget prints the oracle's one-line refusal instead of a rate.
@@ -59,7 +59,7 @@ def row(scenario: str, human: str, what: str, r: dict[str, object]) -> str:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--scenarios", default=",".join(SCENARIOS))
+    parser.add_argument("--scenarios", default=";".join(SCENARIOS), help="separated by ;")
     parser.add_argument("--humans", default=",".join(STATIONARY))
     parser.add_argument("--max-seconds", type=float, default=60.0)
     args = parser.parse_args()
@@ -67,7 +67,7 @@ def main() -> None:
     print(f"{'scenario':32s} {'human':12s} {'model':9s} cost and result")
     for human in humans:  # the reference: no symmetry reduction, on the paper's table
         print(row("paper2015", human, "full", solve("paper2015", human, False, args.max_seconds)), flush=True)
-    for scenario in args.scenarios.split(","):
+    for scenario in args.scenarios.split(";"):
         for human in humans:
             print(row(scenario, human, "default", solve(scenario, human, None, args.max_seconds)), flush=True)
 

@@ -203,17 +203,6 @@ def test_roboergosum_no_handover() -> None:
     assert result.converged and result.n_layouts == 5040 and result.rate_per_hour > 100
 
 
-def test_oracle_robot_waits_outside_its_model(cooperative_oracle) -> None:  # type: ignore[no-untyped-def]
-    from types import SimpleNamespace
-
-    world = World("paper2015")
-    robot = OracleRobot(cooperative_oracle)
-    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
-    outside = State((7, 7, 7), 3)  # three tapes in the robot's one hand: no such state in the model
-    action = robot.act(SimpleNamespace(state=outside))  # type: ignore[arg-type]
-    assert world.action_names[Agent.ROBOT][action] == "wait" and action == 17
-
-
 # One tape on the robot's mat; the human reaches nothing, so its only move is wait.
 ALONE = parse_scenario(
     {
