@@ -33,15 +33,15 @@ an action back). Humans whose rule picks "the first object" by index (``lazy``,
 ``no_handover``, ``adversarial``) are not equivariant and get the full model.
 
 Size and budget (``python benchmarks/oracle_budget.py``, each solve in a fresh process
-on the shared 2-core machine, wall and CPU seconds). ``paper2015``: under 1 s for every
+on the shared, loaded 2-core machine, wall seconds). ``paper2015``: under 1 s for every
 bundled human. ``roboergosum`` (6 objects, 5,040 layouts, 140 canonical): ``random``
-17k states, 3 s; ``cooperative`` 6.5k states, 27 s (20 s CPU; 49 s and 192k states
-without the reduction); ``noisy`` 17k states, 58 s (27 s CPU; 353-396 s and 4.5 GB
-before); ``no_handover`` 6 s, ``adversarial`` 7 s, ``lazy`` 17 s (251k states, 0.6 GB).
-Generated 8-object tables (``generated:objects=8``, 1.8M layouts): ``random`` in 2-3 s;
-the planner-driven humans need one A* search per mid-cycle state (tens of ms each with 8
-objects) and exceed the budget; the non-equivariant humans' 1.8M layouts are refused
-before enumeration. A solve stops with a one-line :class:`OracleTooLarge` naming the
+17k states, 3 s; ``cooperative`` 6.5k states, 20-27 s (58 s and 192k states without the
+reduction); ``noisy`` 17k states, 48-58 s (353-396 s and 4.5 GB before); ``no_handover``
+6 s, ``adversarial`` 7 s, ``lazy`` 17-23 s (251k states, 0.6 GB). Generated 8-object
+tables (1.8M layouts): ``random`` 2-3 s with one bin, 40-63 s with two (428k states);
+the planner-driven humans need one A* search per mid-cycle state (tens of ms each) and
+exceed the budget; the non-equivariant humans' 1.8M layouts are refused before
+enumeration. A solve stops with a one-line :class:`OracleTooLarge` naming the
 budget beyond ``max_seconds`` (default 60 s), ``max_memory`` (4 GB resident),
 ``max_states`` or the kernel's available memory falling under 512 MB, so a study falls
 back to the best robot as reference. The build is pure Python and shows a progress bar
@@ -550,7 +550,7 @@ def oracle_rate(
     )
     regen: list[tuple[State, float, float]] = []
     for i, (table, q) in enumerate(first_replies):
-        budget.check(world, i, memory=i % 2048 == 0)
+        budget.check(world, 0, memory=i % 2048 == 0)  # no state explored yet
         regen += [(nxt, q * p, tau) for nxt, p, tau in model.replies(table, wait, wait_index)]
     model.build([s for s, _ in layouts] + [s for s, _, _ in regen])
     n = len(model.states)
@@ -619,8 +619,8 @@ class OracleRobot:
     """A robot that plays the oracle's optimal policy (greedy in its values).
 
     Off its model (a state the model never reaches: the partner is not the human the
-    policy was solved against) it does not wait for a state it knows: it asks the
-    planner (cooperative model) for the robot's next move; when that move is a ``wait``
+    policy was solved against) it does not wait for a known state to come back: it asks
+    the planner (cooperative model) for the robot's next move; when that move is a ``wait``
     on an unfinished table at the state of its previous off-model decision (nothing
     changed: the partner does not do what the plan waits for), it tries the feasible
     non-wait actions in turn, so it never waits forever. ``off_model`` counts these
