@@ -42,7 +42,8 @@ tables (1.8M layouts): ``random`` 2-3 s with one bin, 40-63 s with two (428k sta
 the planner-driven humans need one A* search per mid-cycle state (tens of ms each) and
 exceed the budget; the non-equivariant humans' 1.8M layouts are refused before
 enumeration. A solve stops with a one-line :class:`OracleTooLarge` naming the
-budget beyond ``max_seconds`` (default 60 s), ``max_memory`` (4 GB resident),
+budget beyond ``max_seconds`` (default 60 s of CPU time: a loaded machine does not
+change the verdict), ``max_memory`` (4 GB resident),
 ``max_states`` or the kernel's available memory falling under 512 MB, so a study falls
 back to the best robot as reference. The build is pure Python and shows a progress bar
 with the states explored and known (``progress=True``, the CLI's default).
@@ -266,7 +267,9 @@ def _human_policy(human: Any, world: World) -> Any:
 
 
 DEFAULT_SECONDS = 60.0
-"""The default wall-time budget of one oracle build and solve."""
+"""The default CPU-time budget (seconds) of one oracle build and solve: CPU, not wall time,
+so that whether a solve is refused (and a study stores the refusal) does not depend on
+what else the machine runs."""
 DEFAULT_MEMORY = 4 * 2**30
 """The default resident memory budget (bytes) of the process during a solve."""
 
@@ -284,7 +287,7 @@ def _rss() -> int:
 
 @dataclass(frozen=True)
 class Budget:
-    """What one oracle solve may spend: wall seconds and resident memory (None: no limit).
+    """What one oracle solve may spend: CPU seconds and resident memory (None: no limit).
 
     Beyond either it stops with :class:`OracleTooLarge` naming the budget, so a caller
     (a study) can fall back to another reference instead of waiting or swapping.
@@ -292,14 +295,14 @@ class Budget:
 
     seconds: float | None = DEFAULT_SECONDS
     memory: int | None = DEFAULT_MEMORY
-    start: float = field(default_factory=time.perf_counter)
+    start: float = field(default_factory=time.process_time)
 
     def check(self, world: World, n_states: int, memory: bool = True) -> None:
         """Raise :class:`OracleTooLarge` if the solve is over its budget (``memory``: check it too)."""
-        spent = time.perf_counter() - self.start
+        spent = time.process_time() - self.start
         if self.seconds is not None and spent > self.seconds:
             raise OracleTooLarge(
-                f"the oracle for {world.scenario.name!r} is over its budget of {self.seconds:g} s "
+                f"the oracle for {world.scenario.name!r} is over its budget of {self.seconds:g} s of CPU time "
                 f"({n_states} states after {spent:.0f} s); raise --max-seconds or use the best robot as reference"
             )
         if memory and self.memory is not None and _rss() > self.memory:
@@ -519,7 +522,7 @@ def oracle_rate(
         symmetry: keep states up to interchangeable objects (canonical order). None: when
             the human says it is ``equivariant`` (its answer at a relabelled state is its
             answer relabelled), the only case where this is exact.
-        max_seconds: wall-time budget of the build and solve (None: unlimited).
+        max_seconds: CPU-time budget of the build and solve in seconds (None: unlimited).
         max_memory: resident-memory budget in bytes (None: unlimited).
 
     Raises:
@@ -527,7 +530,7 @@ def oracle_rate(
         OracleTooLarge: the model exceeds ``max_states`` or the time or memory budget.
     """
     start = time.perf_counter()
-    budget = Budget(max_seconds, max_memory, start)
+    budget = Budget(max_seconds, max_memory)
     world = scenario if isinstance(scenario, World) else World(scenario, durations)
     policy_human = _human_policy(human, world)
     relabel = Relabel(world)
