@@ -38,7 +38,7 @@ bundled human. ``roboergosum`` (6 objects, 5,040 layouts, 140 canonical): ``rand
 17k states, 3 s; ``cooperative`` 6.5k states, 20-27 s (58 s and 192k states without the
 reduction); ``noisy`` 17k states, 48-58 s (353-396 s and 4.5 GB before); ``no_handover``
 6 s, ``adversarial`` 7 s, ``lazy`` 17-23 s (251k states, 0.6 GB). Generated 8-object
-tables (1.8M layouts): ``random`` 2-3 s with one bin, 40-63 s with two (428k states);
+tables (1.8M layouts): ``random`` 2-3 s with one bin, 36-47 s CPU with two (428k states);
 the planner-driven humans need one A* search per mid-cycle state (tens of ms each) and
 exceed the budget; the non-equivariant humans' 1.8M layouts are refused before
 enumeration. A solve stops with a one-line :class:`OracleTooLarge` naming the
