@@ -145,6 +145,7 @@ class LearningRobot(Robot):
     def _to_robot_actions(self, values: np.ndarray) -> np.ndarray:
         """Per-action habit values (canonical labelling) in the original labelling."""
         return values if self._to_canonical is None else values[self._to_canonical]
+
     @property
     def habit(self) -> QLearner:
         """The Q-learner (available after :meth:`reset`)."""
