@@ -33,7 +33,14 @@ out["peak_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 print(json.dumps(out))
 """
 
-STATIONARY = ("cooperative", "lazy", "no_handover", "adversarial", "random", "noisy")
+
+def stationary_humans() -> tuple[str, ...]:
+    """Every stationary registry human that needs no file (``learned`` needs a saved policy)."""
+    from hg_marl.agents.humans.registry import HUMANS
+
+    return tuple(n for n, s in HUMANS.items() if s.stationary and all(p.default is not None for p in s.params.values()))
+
+
 SCENARIOS = ("paper2015", "roboergosum", "generated:objects=8,bins=2", "generated:objects=8,bins=1")
 
 
@@ -63,7 +70,7 @@ def row(scenario: str, human: str, what: str, r: dict[str, object]) -> str:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scenarios", default=";".join(SCENARIOS), help="separated by ;")
-    parser.add_argument("--humans", default=",".join(STATIONARY))
+    parser.add_argument("--humans", default=",".join(stationary_humans()))
     parser.add_argument("--max-seconds", type=float, default=60.0)
     args = parser.parse_args()
     humans = args.humans.split(",")
