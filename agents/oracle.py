@@ -23,18 +23,30 @@ certain (e.g. an adversarial human hid an object) are found first by the standar
 almost-sure-reachability fixpoint and get ``V = inf``; if the re-drawn table can lead
 there, the rate is 0.
 
-Size (``hg-marl oracle --scenario S --human H`` on the 2-core machine, wall time of the
-whole command). ``paper2015``: 36 layouts, 444-1,892 states, under 1.5 s for every
-bundled human. ``roboergosum`` (6 objects, 7 placemats, 5,040 layouts): 65k states and
-4 s against ``no_handover``; 116k and 5 s against ``adversarial`` (rate 0); 251k
-states, 3.2M transitions and 16 s against ``lazy``; 192k states and 49 s against the
-planner-driven ``cooperative`` human (one planner call per distinct mid-cycle state up
-to the relabelling of interchangeable objects); 530k states and 15M transitions against
-``random`` (47 s, 2.1 GB) and ``noisy`` (353-396 s, 4.5 GB: one planner call per human
-action of each mid-cycle state, the A* searches taking most of it). The build is pure Python and
-shows a progress bar with the states explored and known (``progress=True``, the CLI's
-default); ``max_states`` stops it with a clear :class:`OracleTooLarge` message, and so
-does the kernel's available memory falling under 512 MB, rather than exhausting memory.
+Symmetry. Objects accepted by the same bins are interchangeable. When the human is
+``equivariant`` (relabelling them in the state relabels its answer: the planner-driven
+``cooperative`` and ``noisy``, ``random``), the model keeps one canonical state per
+relabelling class (:class:`~hg_marl.agents.planner.space.Relabel`) and draws the
+canonical layouts directly (:func:`canonical_layouts`); the rate is the full model's
+(tests), the policy is keyed by canonical states (:meth:`OracleResult.action_at` maps
+an action back). Humans whose rule picks "the first object" by index (``lazy``,
+``no_handover``, ``adversarial``) are not equivariant and get the full model.
+
+Size and budget (``python benchmarks/oracle_budget.py``, each solve in a fresh process
+on the shared, loaded 2-core machine, wall seconds). ``paper2015``: under 1 s for every
+bundled human. ``roboergosum`` (6 objects, 5,040 layouts, 140 canonical): ``random``
+17k states, 3 s; ``cooperative`` 6.5k states, 20-27 s (58 s and 192k states without the
+reduction); ``noisy`` 17k states, 48-58 s (353-396 s and 4.5 GB before); ``no_handover``
+6 s, ``adversarial`` 7 s, ``lazy`` 17-23 s (251k states, 0.6 GB). Generated 8-object
+tables (1.8M layouts): ``random`` 2-3 s with one bin, 36-47 s CPU with two (428k states);
+the planner-driven humans need one A* search per mid-cycle state (tens of ms each) and
+exceed the budget; the non-equivariant humans' 1.8M layouts are refused before
+enumeration. A solve stops with a one-line :class:`OracleTooLarge` naming the
+budget beyond ``max_seconds`` (default 60 s of CPU time: a loaded machine does not
+change the verdict), ``max_memory`` (4 GB resident),
+``max_states`` or the kernel's available memory falling under 512 MB, so a study falls
+back to the best robot as reference. The build is pure Python and shows a progress bar
+with the states explored and known (``progress=True``, the CLI's default).
 """
 
 from __future__ import annotations
@@ -42,6 +54,7 @@ from __future__ import annotations
 import itertools
 import logging
 import math
+import os
 import sys
 import time
 from collections.abc import Iterator
@@ -53,7 +66,9 @@ from tqdm import tqdm
 
 from hg_marl.agents.humans.base import HumanError
 from hg_marl.agents.humans.registry import make_human
+from hg_marl.agents.planner.space import Relabel
 from hg_marl.core import Agent, Durations, Scenario, State, World
+from hg_marl.core.scenario import layout_count
 from hg_marl.policy import Decision, Turn
 
 logger = logging.getLogger(__name__)
@@ -93,6 +108,26 @@ class OracleResult:
     """The human's name."""
     seconds: float = 0.0
     """Wall time of the build and solve."""
+    reduced: bool = False
+    """Whether the model holds canonical states only (interchangeable objects in canonical
+    order, :class:`~hg_marl.agents.planner.space.Relabel`): then ``policy`` and ``values``
+    are keyed by canonical states and the policy's actions are in canonical labelling;
+    :meth:`action_at` and :meth:`value_at` answer for any state."""
+
+    def action_at(self, world: World, state: State, relabel: Relabel | None = None) -> int | None:
+        """The optimal robot action at ``state`` (any labelling), or None outside the model."""
+        if not self.reduced:
+            return self.policy.get(state)
+        relabel = relabel or Relabel(world)
+        key, orig = relabel.canonical(state)
+        action = self.policy.get(key)
+        return None if action is None else relabel.action_back(Agent.ROBOT, action, orig)
+
+    def value_at(self, world: World, state: State, relabel: Relabel | None = None) -> float:
+        """Optimal expected seconds to the next success from ``state`` (inf outside the model)."""
+        if self.reduced:
+            state = (relabel or Relabel(world)).canonical(state)[0]
+        return self.values.get(state, math.inf)
 
 
 def layout_distribution(world: World) -> list[tuple[State, float]]:
@@ -126,6 +161,99 @@ def layout_distribution(world: World) -> list[tuple[State, float]]:
     return sorted(out.items())
 
 
+def canonical_layouts(world: World) -> list[tuple[State, float]]:
+    """:func:`layout_distribution` up to interchangeable objects, without enumerating every deal.
+
+    Each state is :meth:`Relabel.canonical` of the tables it stands for, with their total
+    probability. Per layout group: the class make-up of the dealt subset is
+    multivariate-hypergeometric, and given it every assignment of the classes to disjoint
+    spot sets is equally likely (``prod n_c! (m - c)! / m!`` each, ``m`` spots, ``c``
+    objects). On ``generated:objects=8,bins=2`` that is 3,150 states instead of 1.8M deals.
+    """
+    sc = world.scenario
+    members: dict[tuple[int, ...], list[int]] = {}
+    for o, bins in enumerate(world.bins_of):
+        members.setdefault(bins, []).append(o)
+    classes = list(members.values())
+    out: dict[State, float] = {}
+
+    def assignments(spots: tuple[int, ...], sizes: tuple[int, ...]) -> Iterator[tuple[tuple[int, ...], ...]]:
+        if not sizes:
+            yield ()
+            return
+        for chosen in itertools.combinations(spots, sizes[0]):
+            rest = tuple(x for x in spots if x not in chosen)
+            for tail in assignments(rest, sizes[1:]):
+                yield (chosen, *tail)
+
+    def compositions(c: int, left: tuple[int, ...]) -> Iterator[tuple[int, ...]]:
+        if not left:
+            if c == 0:
+                yield ()
+            return
+        for n in range(min(c, left[0]) + 1):
+            for tail in compositions(c - n, left[1:]):
+                yield (n, *tail)
+
+    def deal(
+        k: int, left: tuple[int, ...], places: tuple[tuple[int, ...], ...], p: float
+    ) -> Iterator[tuple[tuple[tuple[int, ...], ...], float]]:
+        if k == len(sc.layout):
+            yield places, p
+            return
+        group = sc.layout[k]
+        c, m = group.count, len(group.spots)
+        for comp in compositions(c, left):
+            q = math.prod(math.comb(n_left, n) for n_left, n in zip(left, comp, strict=True)) / math.comb(sum(left), c)
+            q *= math.prod(math.factorial(n) for n in comp) * math.factorial(m - c) / math.factorial(m)
+            rest = tuple(n_left - n for n_left, n in zip(left, comp, strict=True))
+            for assign in assignments(group.spots, comp):
+                yield from deal(k + 1, rest, tuple(a + b for a, b in zip(places, assign, strict=True)), p * q)
+
+    for places, p in deal(0, tuple(len(m) for m in classes), tuple(() for _ in classes), 1.0):
+        where = [0] * world.n_objects
+        for objs, spots in zip(classes, places, strict=True):
+            for o, spot in zip(objs, sorted(spots), strict=True):
+                where[o] = spot
+        for start in sc.robot_start:
+            state = State(tuple(where), start)
+            out[state] = out.get(state, 0.0) + p / len(sc.robot_start)
+    return sorted(out.items())
+
+
+def canonical_layout_count(world: World) -> int:
+    """How many (class make-up, spot assignment) deals :func:`canonical_layouts` enumerates, times starts.
+
+    Computed without allocating, so a caller can refuse before enumerating.
+    """
+    sizes: dict[tuple[int, ...], int] = {}
+    for bins in world.bins_of:
+        sizes[bins] = sizes.get(bins, 0) + 1
+    sc = world.scenario
+
+    def count(k: int, left: tuple[int, ...]) -> int:
+        if k == len(sc.layout):
+            return 1
+        group = sc.layout[k]
+        c, m = group.count, len(group.spots)
+        total = 0
+
+        def comps(i: int, c_left: int, comp: tuple[int, ...]) -> None:
+            nonlocal total
+            if i == len(left):
+                if c_left == 0:
+                    ways = math.perm(m, c) // math.prod(math.factorial(n) for n in comp)
+                    total += ways * count(k + 1, tuple(a - b for a, b in zip(left, comp, strict=True)))
+                return
+            for n in range(min(c_left, left[i]) + 1):
+                comps(i + 1, c_left - n, (*comp, n))
+
+        comps(0, c, ())
+        return total
+
+    return len(sc.robot_start) * count(0, tuple(sizes.values()))
+
+
 def _human_policy(human: Any, world: World) -> Any:
     if isinstance(human, str):
         human = make_human(human)
@@ -138,11 +266,69 @@ def _human_policy(human: Any, world: World) -> Any:
     return human
 
 
+DEFAULT_SECONDS = 60.0
+"""The default CPU-time budget (seconds) of one oracle build and solve: CPU, not wall time,
+so that whether a solve is refused (and a study stores the refusal) does not depend on
+what else the machine runs."""
+DEFAULT_MEMORY = 4 * 2**30
+"""The default resident memory budget (bytes) of the process during a solve."""
+
+
+def _rss() -> int:
+    """This process's resident memory in bytes (``/proc/self/statm``; peak ``ru_maxrss`` elsewhere)."""
+    try:
+        with open("/proc/self/statm", encoding="ascii") as f:
+            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        import resource
+
+        return int(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss) * 1024
+
+
+@dataclass(frozen=True)
+class Budget:
+    """What one oracle solve may spend: CPU seconds and resident memory (None: no limit).
+
+    Beyond either it stops with :class:`OracleTooLarge` naming the budget, so a caller
+    (a study) can fall back to another reference instead of waiting or swapping.
+    """
+
+    seconds: float | None = DEFAULT_SECONDS
+    memory: int | None = DEFAULT_MEMORY
+    start: float = field(default_factory=time.process_time)
+
+    def check(self, world: World, n_states: int, memory: bool = True) -> None:
+        """Raise :class:`OracleTooLarge` if the solve is over its budget (``memory``: check it too)."""
+        spent = time.process_time() - self.start
+        if self.seconds is not None and spent > self.seconds:
+            raise OracleTooLarge(
+                f"the oracle for {world.scenario.name!r} is over its budget of {self.seconds:g} s of CPU time "
+                f"({n_states} states after {spent:.0f} s); raise --max-seconds or use the best robot as reference"
+            )
+        if memory and self.memory is not None and _rss() > self.memory:
+            raise OracleTooLarge(
+                f"the oracle for {world.scenario.name!r} is over its budget of {self.memory / 2**30:g} GB "
+                f"of memory ({n_states} states); raise --max-memory or use the best robot as reference"
+            )
+
+
 class _Model:
     """The explored semi-MDP in flat arrays (pairs = (state, robot action), contiguous per state)."""
 
-    def __init__(self, world: World, human: Any, failed_actions: bool, max_states: int, progress: bool = False) -> None:
+    def __init__(
+        self,
+        world: World,
+        human: Any,
+        failed_actions: bool,
+        max_states: int,
+        progress: bool = False,
+        relabel: Relabel | None = None,
+        budget: Budget | None = None,
+    ) -> None:
         self.world, self.human = world, human
+        self.relabel = relabel
+        """Set when states are kept in canonical order (an equivariant human)."""
+        self.budget = budget or Budget()
         self.progress = progress
         self.failed_actions, self.max_states = failed_actions, max_states
         self.robot_acts, self.human_acts = world.actions(Agent.ROBOT), world.actions(Agent.HUMAN)
@@ -161,7 +347,13 @@ class _Model:
         ids point at states the index holds anyway, so nothing is stored twice."""
         self._uses_robot_action = bool(getattr(human, "uses_robot_action", False))
 
+    def canonical(self, state: State) -> State:
+        """The state the model keeps for ``state`` (itself without symmetry reduction)."""
+        return state if self.relabel is None else self.relabel.canonical(state)[0]
+
     def _id(self, state: State) -> int:
+        if self.relabel is not None:
+            state = self.relabel.canonical(state)[0]
         k = self.index.get(state)
         if k is None:
             if len(self.states) >= self.max_states:
@@ -229,6 +421,8 @@ class _Model:
         wait = table.wait[Agent.ROBOT]
         k = 0
         while k < len(self.states):
+            if k % 64 == 0:  # a state may cost planner searches: the clock is read often
+                self.budget.check(self.world, len(self.states), memory=k % 2048 == 0)
             if k % 2048 == 0:
                 bar.update(k - bar.n)
                 bar.set_postfix(known=len(self.states), refresh=False)
@@ -310,6 +504,9 @@ def oracle_rate(
     tolerance: float = 1e-9,
     max_iterations: int = 200_000,
     progress: bool = False,
+    symmetry: bool | None = None,
+    max_seconds: float | None = DEFAULT_SECONDS,
+    max_memory: int | None = DEFAULT_MEMORY,
 ) -> OracleResult:
     """The optimal tasks per simulated hour against ``human``, and the policy achieving it.
 
@@ -324,22 +521,42 @@ def oracle_rate(
         tolerance: value-iteration stopping threshold (seconds).
         max_iterations: cap on sweeps (``converged`` says whether it was hit).
         progress: show a progress bar on stderr with the states explored and known.
+        symmetry: keep states up to interchangeable objects (canonical order). None: when
+            the human says it is ``equivariant`` (its answer at a relabelled state is its
+            answer relabelled), the only case where this is exact.
+        max_seconds: CPU-time budget of the build and solve in seconds (None: unlimited).
+        max_memory: resident-memory budget in bytes (None: unlimited).
 
     Raises:
         HumanError: the human is not stationary.
-        OracleTooLarge: the model exceeds ``max_states``.
+        OracleTooLarge: the model exceeds ``max_states`` or the time or memory budget.
     """
     start = time.perf_counter()
+    budget = Budget(max_seconds, max_memory)
     world = scenario if isinstance(scenario, World) else World(scenario, durations)
     policy_human = _human_policy(human, world)
-    layouts = layout_distribution(world)
-    model = _Model(world, policy_human, failed_actions, max_states, progress)
+    relabel = Relabel(world)
+    if symmetry is None:
+        symmetry = bool(getattr(policy_human, "equivariant", False))
+    if not (symmetry and relabel.active):
+        relabel = None
+    deals = layout_count(world.scenario) if relabel is None else canonical_layout_count(world)
+    if deals > max_states:  # checked before enumerating them (which would take the memory first)
+        raise OracleTooLarge(
+            f"the oracle's model of {world.scenario.name!r}: {deals} initial layouts to enumerate, over "
+            f"max_states={max_states}; raise max_states or use a smaller scenario"
+        )
+    layouts = layout_distribution(world) if relabel is None else canonical_layouts(world)
+    model = _Model(world, policy_human, failed_actions, max_states, progress, relabel, budget)
     wait = world.durations.wait
     wait_index = world.n_actions(Agent.ROBOT) - 1
     first_replies = tqdm(
         layouts, desc=f"oracle {world.scenario.name}: layouts", unit=" layouts", disable=not progress, file=sys.stderr
     )
-    regen = [(nxt, q * p, tau) for table, q in first_replies for nxt, p, tau in model.replies(table, wait, wait_index)]
+    regen: list[tuple[State, float, float]] = []
+    for i, (table, q) in enumerate(first_replies):
+        budget.check(world, 0, memory=i % 2048 == 0)  # no state explored yet
+        regen += [(nxt, q * p, tau) for nxt, p, tau in model.replies(table, wait, wait_index)]
     model.build([s for s, _ in layouts] + [s for s, _, _ in regen])
     n = len(model.states)
     pair_state = np.repeat(np.arange(n), np.diff([*model.pair_start, len(model.pair_action)]))
@@ -353,7 +570,7 @@ def oracle_rate(
     values = np.zeros(n)
     iterations, converged = 0, False
     if alive.any():
-        for iterations in range(1, max_iterations + 1):  # noqa: B007
+        for iterations in range(1, max_iterations + 1):
             q = cost + np.bincount(
                 t_pair, weights=t_prob * np.where(alive[t_next], values[t_next], 0.0), minlength=n_pairs
             )
@@ -361,6 +578,8 @@ def oracle_rate(
             new = np.where(alive, np.minimum.reduceat(q, starts), 0.0)
             delta = float(np.max(np.abs(new - values)))
             values = new
+            if iterations % 64 == 0:
+                budget.check(world, n)
             if delta < tolerance:
                 converged = True
                 break
@@ -372,7 +591,7 @@ def oracle_rate(
         for s in range(n)
     ]
     index = model.index
-    expected = sum(p * (tau + values[index[s]]) for s, p, tau in regen)
+    expected = sum(p * (tau + values[index[model.canonical(s)]]) for s, p, tau in regen)
     rate = 0.0 if math.isinf(expected) else HOUR / expected
     result = OracleResult(
         rate_per_hour=rate,
@@ -387,6 +606,7 @@ def oracle_rate(
         scenario=world.scenario.name,
         human=str(getattr(policy_human, "name", type(policy_human).__name__)),
         seconds=time.perf_counter() - start,
+        reduced=relabel is not None,
     )
     logger.info(
         "oracle %s vs %s: %.2f tasks/h, %d states, %d iterations, %.1f s",
@@ -403,6 +623,14 @@ def oracle_rate(
 class OracleRobot:
     """A robot that plays the oracle's optimal policy (greedy in its values).
 
+    Off its model (a state the model never reaches: the partner is not the human the
+    policy was solved against) it does not wait for a known state to come back: it asks
+    the planner (cooperative model) for the robot's next move; when that move is a ``wait``
+    on an unfinished table at the state of its previous off-model decision (nothing
+    changed: the partner does not do what the plan waits for), it tries the feasible
+    non-wait actions in turn, so it never waits forever. ``off_model`` counts these
+    decisions in the current run.
+
     Args:
         result: a computed :class:`OracleResult`; or None to compute one at the first reset
             from ``human`` and the world it is reset in.
@@ -415,7 +643,13 @@ class OracleRobot:
         self.result = result
         self.human = human
         self.last_decision: Decision | None = None
-        self._missing = 0
+        self.off_model = 0
+        """Decisions taken at states outside the model in the current run (0 when the
+        partner is the human the policy was solved against)."""
+        self._planner: Any = None
+        self._relabel: Relabel | None = None
+        self._stalled: State | None = None
+        self._stalls = 0
 
     def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
         """Compute the policy if needed (``rng`` unused: the policy is deterministic)."""
@@ -424,16 +658,52 @@ class OracleRobot:
         if self.result is None or self.result.scenario != world.scenario.name:
             self.result = oracle_rate(world, self.human)
         self._wait = world.n_actions(Agent.ROBOT) - 1
+        self.off_model, self._stalled, self._stalls = 0, None, 0
+        self._planner = None
+        self._relabel = Relabel(world)
 
     def act(self, turn: Turn) -> int:
-        """The optimal action at the turn's state (``wait`` for a state outside the model)."""
+        """The optimal action at the turn's state (the planner's move outside the model)."""
         assert self.result is not None
-        action = self.result.policy.get(turn.state)
-        if action is None:
-            self._missing += 1
-            if self._missing == 1:
-                logger.warning("oracle policy has no entry for state %s; waiting", turn.state)
-            action = self._wait
-        seconds = self.result.values.get(turn.state, math.inf)
-        self.last_decision = Decision("oracle", int(action), stats=(("expected_seconds", float(seconds)),))
-        return action
+        action = self.result.action_at(turn.world, turn.state, self._relabel)
+        if action is not None:
+            seconds = self.result.value_at(turn.world, turn.state, self._relabel)
+            self.last_decision = Decision("oracle", int(action), stats=(("expected_seconds", float(seconds)),))
+            return int(action)
+        self.off_model += 1
+        if self.off_model == 1:
+            logger.warning("oracle policy has no entry for state %s; falling back to the planner", turn.state)
+        return self._fallback(turn)
+
+    def _fallback(self, turn: Turn) -> int:
+        """The planner's move; a feasible non-wait action instead of a wait that changes nothing."""
+        world, state = turn.world, turn.state
+        if self._planner is None or self._planner.world is not world:
+            from hg_marl.agents.planner import Planner
+
+            self._planner = Planner(world)
+        start = time.perf_counter()
+        intent = self._planner.intent(state, Agent.ROBOT)
+        action = intent.robot_action if intent.success else self._wait
+        reason = "off model: the planner's move"
+        if action == self._wait and not world.is_clean(state):
+            if state == self._stalled:
+                options = [i for i in world.feasible_indices(state, Agent.ROBOT) if i != self._wait]
+                if options:
+                    action = options[self._stalls % len(options)]
+                    self._stalls += 1
+                    reason = "off model: the planner waits and nothing changed; a feasible move instead"
+            self._stalled = state
+        else:
+            self._stalled = None  # the stall count runs on: a loop through a stall tries the next move
+        self.last_decision = Decision(
+            "planner",
+            int(action),
+            planner_action=int(intent.robot_action) if intent.success else -1,
+            planning_time=time.perf_counter() - start,
+            planner_success=intent.success,
+            planner_consulted=True,
+            expected_human_action=int(intent.human_action) if intent.success else -1,
+            reason=reason,
+        )
+        return int(action)

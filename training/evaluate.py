@@ -90,10 +90,14 @@ def oracle_rate(store: Store, human: Actor, scenario: str, max_states: int, prog
     """
     if not stationary(human):
         return None
+    from hg_marl.agents.oracle import DEFAULT_MEMORY, DEFAULT_SECONDS
+
     fields = {
         "human": {"name": human.name, "params": dict(human.params)},
         "scenario": scenario_content(scenario),
         "max_states": max_states,
+        # the budget decides whether a refusal (None) is stored: a changed budget recomputes
+        "budget": {"seconds": DEFAULT_SECONDS, "memory": DEFAULT_MEMORY},
     }
 
     def compute() -> float | None:

@@ -35,6 +35,11 @@ class StationaryHuman(ABC):
     """Registry name (overridden by subclasses)."""
     uses_robot_action = False
     """Whether :meth:`distribution` depends on the robot's action under way this cycle."""
+    equivariant = False
+    """Whether relabelling interchangeable objects (same bins) in the state relabels the
+    answer the same way and changes nothing else. The oracle then keeps one state per
+    relabelling class (exact only in that case). A rule that picks "the first object"
+    by index is not: it picks another object once the labels are swapped."""
 
     def __init__(self) -> None:
         self.world: World | None = None

@@ -8,10 +8,14 @@ human, it waits.
 
 The plan depends on the state only, so the human is stationary; answers are memoised
 per state (the planner is deterministic), which keeps the oracle's model build cheap.
+Every cache behind an answer (this memo, the planner's intents, the shared search
+space's bounds and expansions) holds a pure function of its key, so a warm instance
+answers exactly as a fresh one: the human never depends on what it was asked before.
 """
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 from hg_marl.agents.humans.base import (
@@ -38,6 +42,7 @@ class CooperativeHuman(StationaryHuman):
 
     name = "cooperative"
     uses_robot_action = True
+    equivariant = True  # the planner answers for the canonical state and maps the actions back
 
     def __init__(self, p_idle: float = 0.0, planner_config: Any = None) -> None:
         super().__init__()
@@ -57,15 +62,16 @@ class CooperativeHuman(StationaryHuman):
             # break ties differently; caching exact repeats only keeps every answer equal to a
             # cold search's, a function of the state alone, so the oracle's model and the live
             # human agree exactly.
-            config = self.planner_config or PlannerConfig(cache_suffixes=False)
+            config = replace(self.planner_config or PlannerConfig(), cache_suffixes=False)
             self._planner = Planner(world, config=config, human_model=None)
             self._planner_world = world
             self._memo = {}
-            # The planner only uses the robot action's duration and whether it is a wait:
-            # one representative per class multiplies memo and planner-cache hits.
-            classes: dict[tuple[float, bool], int] = {}
+            # The planner only uses the robot action's duration and whether it is a wait or a
+            # give (an unanswered give is no robot activity): one representative per class
+            # multiplies memo and planner-cache hits without changing an answer.
+            classes: dict[tuple[float, bool, bool], int] = {}
             self._canonical = [
-                classes.setdefault((world.durations.of(a.kind), a.kind is Kind.WAIT), i)
+                classes.setdefault((world.durations.of(a.kind), a.kind is Kind.WAIT, a.kind is Kind.GIVE), i)
                 for i, a in enumerate(world.actions(Agent.ROBOT))
             ]
         return self._planner

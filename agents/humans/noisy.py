@@ -28,6 +28,7 @@ class NoisyHuman(StationaryHuman):
 
     name = "noisy"
     uses_robot_action = True
+    equivariant = True  # scores from the planner's equivariant intents, normalised with fsum (order-free)
 
     def __init__(self, temperature: float = 1.0) -> None:
         super().__init__()
@@ -66,7 +67,7 @@ class NoisyHuman(StationaryHuman):
             if math.isinf(best):
                 return self._cooperative.distribution(world, state, robot_action)
             weights = {i: math.exp(-(c - best) / self.temperature) for i, c in scores.items() if not math.isinf(c)}
-            total = sum(weights.values())
+            total = math.fsum(weights.values())
             dist = [(i, w / total) for i, w in sorted(weights.items()) if w > 0.0] or deterministic(
                 self._cooperative.planned_action(world, state, robot_action)
             )

@@ -20,6 +20,7 @@ class RandomHuman(StationaryHuman):
     """
 
     name = "random"
+    equivariant = True  # uniform over a set that relabelling maps onto itself
 
     def __init__(self, feasible_only: bool = True) -> None:
         super().__init__()

@@ -14,6 +14,13 @@ core's) and memoised per state (states are hashable ``NamedTuple`` s):
   same up to those symmetries (they have the same cost-to-go);
 - ``bound(state)``: an admissible lower bound on the cost-to-go from a cycle boundary.
 
+Every cache here holds a pure function of its key, so a search's answer never depends
+on which searches ran before it (the planner-driven humans rely on this to be
+stationary). The bound is cached per canonical key, so it must be *exactly* equal for
+all states of a key: its per-object sums are added with ``math.fsum`` (exactly rounded,
+hence independent of the objects' order), not ``sum`` (whose last bits follow the order
+and, via A*'s ``f`` ties, chose between interchangeable objects by cache history).
+
 The bound. With ``a = w_time + w_idle`` and ``b = w_effort - w_idle`` the cost of the rest
 of the plan is at least ``a T + b E_h`` (``T`` the remaining time, ``E_h`` the human's
 work, since idle = T - E_h); the final cycle (the robot's completing ``wait``) costs at
@@ -32,7 +39,7 @@ one back when the robot stands, empty-handed, where it could acquire something.
 from __future__ import annotations
 
 import math
-import weakref
+from math import fsum
 from operator import getitem
 from typing import NamedTuple
 
@@ -50,7 +57,9 @@ Entry = tuple[Kind, int, object, int]
 """A tabulated candidate: (kind, action index, symmetry signature or None, PLACE spot or -1)."""
 
 
-_SHARED: weakref.WeakKeyDictionary[World, dict[tuple[object, CostWeights], Space]] = weakref.WeakKeyDictionary()
+_SPACES = "_planner_spaces"
+"""Attribute of a :class:`World` holding its spaces: they live and die with the world (a
+``WeakKeyDictionary`` keyed by the world cannot, as each space refers to its world)."""
 
 
 def shared_space(world: World, human_model: HumanModel, weights: CostWeights) -> Space:
@@ -65,7 +74,7 @@ def shared_space(world: World, human_model: HumanModel, weights: CostWeights) ->
         hash(key)
     except TypeError:
         return Space(Domain(world, human_model), weights)
-    per_world = _SHARED.setdefault(world, {})
+    per_world: dict[tuple[object, CostWeights], Space] = world.__dict__.setdefault(_SPACES, {})
     space = per_world.get(key)
     if space is None:
         space = per_world[key] = Space(Domain(world, human_model), weights)
@@ -305,7 +314,7 @@ class Space:
         if state.offer_obj >= 0:
             statuses[state.offer_obj] = d.human_offer if state.offer_by == 1 else d.robot_offer
         tabs = self.tables if state.offer_by != 0 else self.offer_tables
-        vals = [sum(map(getitem, tab[at], statuses)) for tab in tabs]
+        vals = [fsum(map(getitem, tab[at], statuses)) for tab in tabs]  # exactly rounded: order-free
         if math.inf in vals:
             return None
         if d.robot_hand not in where:

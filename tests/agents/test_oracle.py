@@ -151,7 +151,7 @@ def test_oracle_robot_achieves_the_predicted_rate_in_the_env(cooperative_oracle)
         assert measured_rate(OracleRobot(result), human, hours=5) == pytest.approx(result.rate_per_hour, rel=0.03)
     robot = OracleRobot(cooperative_oracle)
     assert measured_rate(robot, "cooperative", hours=3) == pytest.approx(cooperative_oracle.rate_per_hour, rel=0.03)
-    assert robot._missing == 0
+    assert robot.off_model == 0
 
 
 def test_planner_robot_reaches_95_percent_and_nobody_beats_the_oracle(cooperative_oracle) -> None:  # type: ignore[no-untyped-def]
@@ -201,17 +201,6 @@ def test_cli_command_prints_rate_and_size() -> None:
 def test_roboergosum_no_handover() -> None:
     result = oracle_rate("roboergosum", "no_handover")
     assert result.converged and result.n_layouts == 5040 and result.rate_per_hour > 100
-
-
-def test_oracle_robot_waits_outside_its_model(cooperative_oracle) -> None:  # type: ignore[no-untyped-def]
-    from types import SimpleNamespace
-
-    world = World("paper2015")
-    robot = OracleRobot(cooperative_oracle)
-    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
-    outside = State((7, 7, 7), 3)  # three tapes in the robot's one hand: no such state in the model
-    action = robot.act(SimpleNamespace(state=outside))  # type: ignore[arg-type]
-    assert world.action_names[Agent.ROBOT][action] == "wait" and action == 17
 
 
 # One tape on the robot's mat; the human reaches nothing, so its only move is wait.

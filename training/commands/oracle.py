@@ -14,21 +14,26 @@ def register(app: typer.Typer) -> None:
         human: str = typer.Option("cooperative", help="stationary human, e.g. lazy or lazy:p_idle=0.5"),
         max_states: int = typer.Option(1_500_000, help="stop if the model grows beyond this many states"),
         failed_actions: bool = typer.Option(True, help="let the robot use infeasible actions (0.2 s no-ops)"),
+        max_seconds: float = typer.Option(60.0, help="CPU-time budget in seconds (over it: refused, exit 2)"),
+        max_memory: float = typer.Option(4.0, help="resident-memory budget in GB (over it: refused, exit 2)"),
     ) -> None:
         """Optimal tasks per simulated hour by value iteration on the exact model."""
         from hg_marl.agents.humans import HumanError
         from hg_marl.agents.oracle import OracleTooLarge, oracle_rate
-        from hg_marl.core.errors import ConfigError
-        from hg_marl.core.scenario import layout_count, load_scenario
+        from hg_marl.core.errors import check_finite
 
-        layouts = layout_count(load_scenario(scenario))
-        if layouts > max_states:
-            # Checked before the oracle enumerates them (which would take memory first).
-            raise ConfigError(
-                f"scenario {scenario}: {layouts} initial layouts, over --max-states {max_states} (raise it to try)"
-            )
+        check_finite(max_seconds, "--max-seconds", positive=True)
+        check_finite(max_memory, "--max-memory", positive=True)
         try:
-            result = oracle_rate(scenario, human, max_states=max_states, failed_actions=failed_actions, progress=True)
+            result = oracle_rate(
+                scenario,
+                human,
+                max_states=max_states,
+                failed_actions=failed_actions,
+                progress=True,
+                max_seconds=max_seconds,
+                max_memory=int(max_memory * 2**30),
+            )
         except (HumanError, OracleTooLarge, ValueError) as exc:
             typer.echo(f"error: {exc}", err=True)
             raise typer.Exit(2) from exc
