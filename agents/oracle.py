@@ -407,6 +407,7 @@ class _Model:
             disable=not self.progress,
             file=sys.stderr,
             dynamic_ncols=True,
+            leave=False,  # transient: the result (or a refusal) is the one line that stays
         )
         try:
             self._explore(bar)
@@ -551,7 +552,12 @@ def oracle_rate(
     wait = world.durations.wait
     wait_index = world.n_actions(Agent.ROBOT) - 1
     first_replies = tqdm(
-        layouts, desc=f"oracle {world.scenario.name}: layouts", unit=" layouts", disable=not progress, file=sys.stderr
+        layouts,
+        desc=f"oracle {world.scenario.name}: layouts",
+        unit=" layouts",
+        disable=not progress,
+        file=sys.stderr,
+        leave=False,
     )
     regen: list[tuple[State, float, float]] = []
     for i, (table, q) in enumerate(first_replies):

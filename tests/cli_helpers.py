@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import re
 import sys
 
 
@@ -25,7 +26,17 @@ def run_main(args: list[str]) -> tuple[int, str, str]:
     return code, out.getvalue(), err.getvalue()
 
 
+_BAR_FRAME = re.compile(r"\[\d+:\d+(?::\d+)?(?:<[^\]]*)?(?:, [^\]]*)?\]\s*$")
+"""The tail of a tqdm frame: ``[elapsed<remaining, rate, postfix]``."""
+
+
 def error_lines(err: str) -> list[str]:
-    """The non-empty lines of stderr (a progress bar's carriage-return frames excluded)."""
+    """The non-empty lines of stderr that are not progress-bar frames.
+
+    A long command shows progress before it refuses (an oracle over its budget); outside
+    a terminal tqdm may leave a frame on a line of its own. What the user is told is the
+    rest, which must be one line.
+    """
     # split on newlines only: str.splitlines() also splits at "\r", keeping a bar's frame as a line
-    return [line.split("\r")[-1] for line in err.split("\n") if line.split("\r")[-1].strip()]
+    tails = [line.split("\r")[-1] for line in err.split("\n")]
+    return [t for t in tails if t.strip() and not _BAR_FRAME.search(t)]

@@ -278,7 +278,7 @@ NASTY = [
     ["run", "--scenario", "generated:objects=10000", "--duration", "10"],
     ["run", "--scenario", "generated:bins=1000000", "--duration", "10"],
     ["run", "--duration", "nan"],
-    ["oracle", "--scenario", "generated:objects=12,spots=14"],
+    ["oracle", "--scenario", "generated:objects=12,spots=14", "--max-seconds", "5"],  # refused at its budget
     ["plan", "--scenario", "generated:objects=10000"],
 ]
 
