@@ -31,18 +31,20 @@ SEED = 0
 """Seed of the bootstrap's RandomState."""
 
 
-def score_matrix(frame: pd.DataFrame, robot: str, tasks: Sequence[tuple[str, str]] | None = None) -> np.ndarray:
+def score_matrix(
+    frame: pd.DataFrame, robot: str, tasks: Sequence[tuple[str, str]] | None = None, column: str = "score"
+) -> np.ndarray:
     """A robot's scores as a (seeds x tasks) matrix; tasks are (human, scenario) pairs in table order.
 
     Rows with no score (no reference rate) are left out; a task must have every seed.
     """
-    mine = frame[(frame["robot"] == robot) & frame["score"].notna()]
+    mine = frame[(frame["robot"] == robot) & frame[column].notna()]
     if tasks is None:
         tasks = list(dict.fromkeys(zip(mine["human"], mine["scenario"], strict=True)))
     columns = []
     for human, scenario in tasks:
         cell = mine[(mine["human"] == human) & (mine["scenario"] == scenario)].sort_values("seed")
-        columns.append(cell["score"].to_numpy(dtype=float))
+        columns.append(cell[column].to_numpy(dtype=float))
     if not columns:
         return np.zeros((0, 0))
     return np.stack(columns, axis=1)
@@ -133,6 +135,7 @@ def aggregate(
             out["improvement"][name] = {"p": float(p_point[name][0]), "ci": [float(low), float(high)]}
     if groups and {"train", "test"} <= set(groups.values()):
         out["generalisation"] = generalisation_gap(frame, groups, reps)
+    out["br_prox"] = br_prox(frame, groups, reps)
     return out
 
 
@@ -164,6 +167,44 @@ def generalisation_gap(frame: pd.DataFrame, groups: dict[str, str], reps: int = 
         }
         for r in data
     }
+
+
+def br_prox(frame: pd.DataFrame, groups: dict[str, str] | None = None, reps: int = REPS) -> list[dict[str, Any]]:
+    """BR-Prox per robot, scenario and partner split: IQM with its 95% stratified-bootstrap CI (rliable).
+
+    BR-Prox is ``min(1, rate / exact best-response rate)`` (``scores.csv``'s ``br_prox``);
+    a split is a partner group (``train``, ``validation``, ``test``; ``all`` when the study
+    has none). Only runs against partners with an exact best response count.
+    """
+    if "br_prox" not in frame or not frame["br_prox"].notna().any():
+        return []
+    split = frame["human"].map(groups or {}).fillna("all") if groups else pd.Series("all", index=frame.index)
+    data: dict[str, np.ndarray] = {}
+    keys: dict[str, tuple[str, str, str]] = {}
+    for scenario in dict.fromkeys(frame["scenario"]):
+        for group in dict.fromkeys(split):
+            part = frame[(frame["scenario"] == scenario) & (split == group)]
+            for robot in dict.fromkeys(part["robot"]):
+                m = score_matrix(part, robot, column="br_prox")
+                if m.size:
+                    name = f"{robot}|{scenario}|{group}"
+                    data[name], keys[name] = m, (robot, str(scenario), str(group))
+    if not data:
+        return []
+    from rliable import metrics
+
+    point, ci = _interval(data, lambda x: np.array([metrics.aggregate_iqm(x)]), reps)
+    return [
+        {
+            "robot": keys[n][0],
+            "scenario": keys[n][1],
+            "split": keys[n][2],
+            "iqm": float(point[n][0]),
+            "ci": [float(ci[n][0, 0]), float(ci[n][1, 0])],
+            "runs": int(data[n].size),
+        }
+        for n in data
+    ]
 
 
 Curves = dict[str, np.ndarray]
