@@ -193,7 +193,7 @@ def headroom_of(store: Store, study: Study, scenario: str) -> float | None:
 
         try:
             value = module.headroom(
-                scenario, [(h.label, h.spec()) for h in test], max_states=study.oracle_max_states, max_seconds=None
+                scenario, [(h.label, h.spec()) for h in test], max_states=study.oracle_max_states
             ).headroom
         except OracleTooLarge as exc:
             log.warning("headroom of %s is over its budget (%s)", scenario, exc)

@@ -62,8 +62,7 @@ def heatmap_png(result: HeadroomResult, path: Path) -> Path:
 
     values = result.ratio
     fig, ax = plt.subplots(figsize=(1.0 * len(result.true) + 3.5, 0.5 * len(result.assumed) + 2.2))
-    cmap = matplotlib.colormaps["viridis"].copy()
-    cmap.set_bad("lightgrey")
+    cmap = matplotlib.colormaps["viridis"].with_extremes(bad="lightgrey")
     image = ax.imshow(np.ma.masked_invalid(values), cmap=cmap, vmin=0.0, vmax=1.0, aspect="auto")
     ax.set_xticks(range(len(result.true)), result.true, rotation=35, ha="right")
     ax.set_yticks(range(len(result.assumed)), result.assumed)
