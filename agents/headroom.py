@@ -150,7 +150,9 @@ class JointModel:
     def _explore(self, progress: bool) -> None:
         table = self.world.table
         wait = table.wait[Agent.ROBOT]
-        bar = tqdm(desc=f"headroom {self.world.scenario.name}: states", unit=" states", disable=not progress, file=sys.stderr)
+        bar = tqdm(
+            desc=f"headroom {self.world.scenario.name}: states", unit=" states", disable=not progress, file=sys.stderr
+        )
         k = 0
         try:
             while k < len(self.states):
@@ -251,7 +253,9 @@ class JointModel:
             inner = certain[rows] & certain[cols] & ~done[rows]
             m = len(idx)
             p = sparse.csr_matrix((probs[inner], (pos[rows[inner]], pos[cols[inner]])), shape=(m, m))
-            c = np.bincount(pos[rows[certain[rows] & ~done[rows]]], weights=(probs * taus)[certain[rows] & ~done[rows]], minlength=m)
+            c = np.bincount(
+                pos[rows[certain[rows] & ~done[rows]]], weights=(probs * taus)[certain[rows] & ~done[rows]], minlength=m
+            )
             values[idx] = np.atleast_1d(spsolve((sparse.identity(m, format="csr") - p).tocsc(), c))
         d = self.dynamics[i]
         expected = math.fsum(p * (tau + values[s]) for s, p, tau in d.regen)

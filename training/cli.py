@@ -18,7 +18,20 @@ from typer.exceptions import Abort, TyperException
 
 from hg_marl.core.errors import HgMarlError
 
-COMMANDS = ("run", "plan", "oracle", "reproduce", "train", "compare", "convert", "play", "replay", "traces", "evaluate", "headroom")
+COMMANDS = (
+    "run",
+    "plan",
+    "oracle",
+    "reproduce",
+    "train",
+    "compare",
+    "convert",
+    "play",
+    "replay",
+    "traces",
+    "evaluate",
+    "headroom",
+)
 """Subcommand modules, in the order ``--help`` lists them."""
 
 app = typer.Typer(

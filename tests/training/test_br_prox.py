@@ -104,7 +104,7 @@ def test_a_cells_reference_changes_with_every_human_parameter(tmp_path: Path, pa
 @pytest.mark.parametrize(
     ("extra", "members", "line", "field"),
     [
-        ('population = 3\n', None, 7, "population"),
+        ("population = 3\n", None, 7, "population"),
         ('splits = ["heldout"]\n', None, 7, "splits"),
     ],
 )
@@ -126,7 +126,12 @@ def test_a_bad_member_names_the_population_file_and_line(tmp_path: Path) -> None
     with pytest.raises(StudyError) as err:
         load_study(study)
     message = str(err.value)
-    assert message.startswith(f"{study}:6: population: ") and f"{tmp_path / 'pop.toml'}:15" in message and "members[2].split" in message and "\n" not in message
+    assert (
+        message.startswith(f"{study}:6: population: ")
+        and f"{tmp_path / 'pop.toml'}:15" in message
+        and "members[2].split" in message
+        and "\n" not in message
+    )
 
 
 def test_bundled_adaptation_study_is_valid() -> None:

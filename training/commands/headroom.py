@@ -37,7 +37,7 @@ def register(app: typer.Typer) -> None:
         max_states: Annotated[int, typer.Option(min=1, help="Refuse beyond this many model states.")] = 1_500_000,
         max_seconds: Annotated[float, typer.Option(help="Wall-time budget in seconds (over it: exit 2).")] = 600.0,
     ) -> None:
-        """Policy optimal against partner A played with partner T, over the optimum with T; 1 - IQM of the cooperative row."""
+        """Policy optimal against A played with T over the optimum with T; 1 - IQM of the cooperative row."""
         from hg_marl.agents.humans import HumanError
         from hg_marl.agents.oracle import OracleTooLarge
         from hg_marl.core.errors import ConfigError, check_finite
@@ -60,6 +60,13 @@ def register(app: typer.Typer) -> None:
         typer.echo(f"{corner:<{width}}  " + "  ".join(result.true))
         for label, row in zip(result.assumed, result.ratio, strict=True):
             typer.echo(f"{label:<{width}}  " + "  ".join("n/a" if v != v else f"{v:.2f}" for v in row))
-        typer.echo("optimal rates (tasks/h): " + ", ".join(f"{t} {r:.1f}" for t, r in zip(result.true, result.optimum, strict=True)))
-        typer.echo(f"adaptation headroom {result.headroom:.3f} (1 - IQM of the cooperative row over {', '.join(held_out)})")
-        typer.echo(f"model {result.n_states} states, {result.seconds:.1f} s; wrote {out}/headroom.csv, headroom.png, headroom.json")
+        typer.echo(
+            "optimal rates (tasks/h): "
+            + ", ".join(f"{t} {r:.1f}" for t, r in zip(result.true, result.optimum, strict=True))
+        )
+        typer.echo(
+            f"adaptation headroom {result.headroom:.3f} (1 - IQM of the cooperative row over {', '.join(held_out)})"
+        )
+        typer.echo(
+            f"model {result.n_states} states, {result.seconds:.1f} s; wrote headroom.csv, .png, .json in {out}"
+        )
