@@ -67,6 +67,4 @@ def register(app: typer.Typer) -> None:
         typer.echo(
             f"adaptation headroom {result.headroom:.3f} (1 - IQM of the cooperative row over {', '.join(held_out)})"
         )
-        typer.echo(
-            f"model {result.n_states} states, {result.seconds:.1f} s; wrote headroom.csv, .png, .json in {out}"
-        )
+        typer.echo(f"model {result.n_states} states, {result.seconds:.1f} s; wrote headroom.csv, .png, .json in {out}")
