@@ -28,6 +28,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import re
 import zipfile
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -37,7 +38,8 @@ from typing import Any
 import gymnasium
 import numpy as np
 
-from hg_marl.core.errors import ModelFileError
+from hg_marl.agents.sb3_limits import check_policy_kwargs
+from hg_marl.core.errors import ModelFileError, output_error
 
 FORMAT = "hg_marl.model"
 VERSION = 2
@@ -47,6 +49,9 @@ HEADER_NAMES = ("model.json", "policy.json")
 """Headers looked for, in order, when a folder is given."""
 ACTIVATIONS = {"tanh": "Tanh", "relu": "ReLU", "elu": "ELU", "leaky_relu": "LeakyReLU", "gelu": "GELU"}
 """``policy_kwargs.activation_fn`` names and their torch.nn classes (the only classes a file may name)."""
+MAX_HEADER_BYTES = 1 << 20
+"""A model header may be at most 1 MiB (its arrays live in the ``.npz``)."""
+
 MAX_ARRAY_BYTES = 1 << 30
 """A weights file may hold at most this many bytes of arrays (1 GiB) once loaded."""
 
@@ -66,13 +71,17 @@ def convert_hint(path: Path | str) -> str:
 
 def atomic_write_bytes(path: Path, data: bytes) -> None:
     """Write ``data`` to ``path`` through a temp file, fsync and rename (never a half file)."""
-    path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_name(f".{path.name}.tmp")
-    with open(tmp, "wb") as handle:
-        handle.write(data)
-        handle.flush()
-        os.fsync(handle.fileno())
-    tmp.replace(path)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with open(tmp, "wb") as handle:
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
+        tmp.replace(path)
+    except OSError as exc:
+        tmp.unlink(missing_ok=True)
+        raise (output_error(exc, path) or exc) from None
 
 
 def write_arrays(path: Path, arrays: Mapping[str, np.ndarray], *, compress: bool = False) -> str:
@@ -162,6 +171,8 @@ def read_header(path: Path) -> dict[str, Any]:
         ModelFileError: unreadable, malformed, an old format, or a weights file outside the folder.
     """
     try:
+        if path.stat().st_size > MAX_HEADER_BYTES:
+            raise ModelFileError(f"{path}: larger than {MAX_HEADER_BYTES} bytes (a model header is a few KB)")
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError:
         raise ModelFileError(f"{path}: not UTF-8 text") from None
@@ -261,7 +272,16 @@ def load_model_file(path: str | Path, *, what: str = "--model", seat: str | None
     if seat is not None and header["seat"] != seat:
         raise ModelFileError(f"{header_path}: trained in the {header['seat']} seat, not the {seat}'s")
     sha = header.get("sha256")
-    arrays = read_arrays(weights_file(header_path, header), sha if isinstance(sha, str) else None)
+    if not isinstance(sha, str) or not re.fullmatch(r"[0-9a-f]{64}", sha):
+        raise ModelFileError(
+            f"{header_path}: field 'sha256': expected the 64 hex digits of the weights file's sha256, got {sha!r}"
+        )
+    arrays = read_arrays(weights_file(header_path, header), sha)
+    for key, value in arrays.items():
+        if value.dtype.kind == "f" and not np.isfinite(value).all():
+            raise ModelFileError(
+                f"{weights_file(header_path, header)}: array {key!r} holds NaN or infinity (weights must be finite)"
+            )
     return ModelFile(header_path, header, arrays)
 
 
@@ -492,6 +512,7 @@ def policy_kwargs_from_json(kwargs: Any, where: str) -> dict[str, Any]:
         return {}
     if not isinstance(kwargs, dict):
         raise ModelFileError(f"{where}: field 'policy_kwargs' must be an object")
+    check_policy_kwargs(kwargs, f"{where}: field 'policy_kwargs'", ModelFileError)
     out = dict(kwargs)
     if isinstance(out.get("activation_fn"), str):
         try:

@@ -27,4 +27,5 @@ def run_main(args: list[str]) -> tuple[int, str, str]:
 
 def error_lines(err: str) -> list[str]:
     """The non-empty lines of stderr (a progress bar's carriage-return frames excluded)."""
-    return [line.split("\r")[-1] for line in err.splitlines() if line.split("\r")[-1].strip()]
+    # split on newlines only: str.splitlines() also splits at "\r", keeping a bar's frame as a line
+    return [line.split("\r")[-1] for line in err.split("\n") if line.split("\r")[-1].strip()]

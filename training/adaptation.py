@@ -64,7 +64,7 @@ ROBOTS: dict[str, tuple[str, dict[str, Any]]] = {
     "planner": ("planner", {}),
     "planner_partner_aware": ("planner", {"partner_aware": True}),
     "habit": ("habit", {"q_config": dict(PAPER_HABIT)}),
-    "random": ("hybrid", {"criterion": "random", "q_config": dict(PAPER_HABIT)}),
+    "random": ("hybrid", {"criterion": "random", "q_config": dict(PAPER_HABIT), "share_objects": False}),
     **{c: ("hybrid", {"criterion": c}) for c in FURTHER_CRITERIA if c != "entropy"},
     "hybrid_partner_aware": ("hybrid", {"partner_aware": True}),
 }

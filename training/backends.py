@@ -12,6 +12,11 @@ gives byte-identical results on every backend and any number of workers.
   Ray instance with ``workers`` CPUs; ``"auto"`` (or ``ray://host:port``) joins a
   running cluster, whose nodes need this package installed in the same Python. Ray is
   an optional extra (``pip install .[ray]``) imported only here, only by this class.
+
+:func:`make_backend` checks ``--workers`` (an integer from 1 to :func:`max_workers`:
+4 per CPU, at most 256; 0 would leave every Ray task waiting for a CPU forever) and
+``--address`` (``auto``, ``HOST:PORT`` or ``ray://HOST:PORT``) before anything starts, and
+a cluster that cannot be joined or has no CPU is one :class:`ConfigError` line too.
 """
 
 from __future__ import annotations
@@ -20,6 +25,7 @@ import ctypes
 import functools
 import multiprocessing
 import os
+import re
 import signal
 import threading
 import time
@@ -28,10 +34,50 @@ from concurrent.futures import wait as wait_futures
 from typing import Any, Protocol
 
 from hg_marl.core.errors import ConfigError
-from hg_marl.training.store import Job
+from hg_marl.training.provenance import named_files
+from hg_marl.training.store import Job, canonical, scenario_content
 
 PR_SET_PDEATHSIG = 1
 """Linux ``prctl`` option: the signal a process gets when its parent dies."""
+
+MAX_WORKERS_PER_CPU = 4
+MAX_WORKERS = 256
+"""``--workers`` is at most ``min(MAX_WORKERS, MAX_WORKERS_PER_CPU x cpu count)``: every worker
+is a Python process holding numpy and the game (~100 MB), and past a few per core they
+only compete for the same cores."""
+
+_ADDRESS = re.compile(r"^(ray://)?(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9.-]+):(\d{1,5})$")
+
+
+def max_workers() -> int:
+    """The largest accepted ``--workers`` on this machine."""
+    return min(MAX_WORKERS, MAX_WORKERS_PER_CPU * (os.cpu_count() or 1))
+
+
+def check_workers(workers: Any) -> int:
+    """``workers`` if it is an integer in ``[1, max_workers()]``.
+
+    Raises:
+        ConfigError: anything else, in one line naming ``--workers`` (0 would wait forever).
+    """
+    top = max_workers()
+    if isinstance(workers, bool) or not isinstance(workers, int) or not 1 <= workers <= top:
+        raise ConfigError(f"--workers: expected an integer from 1 to {top} (4 per CPU, at most 256), got {workers!r}")
+    return workers
+
+
+def check_address(address: str | None) -> str | None:
+    """``address`` if it is ``auto``, ``HOST:PORT`` or ``ray://HOST:PORT`` (port 1-65535), or None.
+
+    Raises:
+        ConfigError: anything else, in one line naming ``--address``.
+    """
+    if address is None or address == "auto":
+        return address
+    match = _ADDRESS.match(address)
+    if match is None or not 1 <= int(match.group(3)) <= 65535:
+        raise ConfigError(f"--address: expected auto, HOST:PORT or ray://HOST:PORT, got {address!r}")
+    return address
 
 
 def execute(job: Job) -> Any:
@@ -45,7 +91,8 @@ def execute(job: Job) -> Any:
         from hg_marl.core.spec import format_spec
 
         human_spec = format_spec(job.human, job.human_params)
-        robot: Any = OracleRobot(_oracle_policy(job.scenario, human_spec), human=human_spec)
+        inputs = canonical({"scenario": scenario_content(job.scenario), "files": named_files({"h": human_spec})})
+        robot: Any = OracleRobot(_oracle_policy(job.scenario, human_spec, inputs), human=human_spec)
     else:
         robot = make_robot(job.robot, **job.robot_params)
     human = make_human(job.human, **job.human_params)
@@ -56,8 +103,12 @@ def execute(job: Job) -> Any:
 
 
 @functools.lru_cache(maxsize=16)
-def _oracle_policy(scenario: str, human: str) -> Any:
-    """The oracle's solution, solved once per worker process (every seed of a cell shares it)."""
+def _oracle_policy(scenario: str, human: str, inputs: str) -> Any:
+    """The oracle's solution, solved once per worker process (every seed of a cell shares it).
+
+    ``inputs`` (the content of the scenario and of every file the human's spec names) is
+    part of the cache key, so a policy file replaced while the process lives is solved again.
+    """
     from hg_marl.agents.oracle import oracle_rate
 
     return oracle_rate(scenario, human)
@@ -102,9 +153,7 @@ class LocalBackend:
     """This process (``workers=1``) or a pool of ``workers`` processes that die with it."""
 
     def __init__(self, workers: int = 1) -> None:
-        if workers < 1:
-            raise ConfigError(f"--workers: expected at least 1, got {workers}")
-        self.capacity = workers
+        self.capacity = check_workers(workers)
         self._inline: list[tuple[str, Job]] = []
         self._futures: dict[Future[Any], str] = {}
         self._pool: ProcessPoolExecutor | None = None
@@ -144,6 +193,9 @@ class RayBackend:
     """One Ray task per job, on a private local instance or a running cluster."""
 
     def __init__(self, address: str | None = None, workers: int | None = None) -> None:
+        check_address(address)
+        if workers is not None:
+            check_workers(workers)
         try:
             import ray
         except ImportError as exc:
@@ -161,9 +213,17 @@ class RayBackend:
                     configure_logging=False,
                 )
             else:
-                ray.init(address=address, log_to_driver=False, configure_logging=False)
-        cpus = int(ray.cluster_resources().get("CPU", 1))
-        self.capacity = 2 * max(1, cpus)
+                try:
+                    ray.init(address=address, log_to_driver=False, configure_logging=False)
+                except (ConnectionError, RuntimeError, ValueError) as exc:
+                    message = " ".join(str(exc).split())[:200]
+                    raise ConfigError(f"--address {address}: cannot join a Ray cluster there ({message})") from None
+        cpus = int(ray.cluster_resources().get("CPU", 0))
+        if cpus < 1:  # every task asks for one CPU: none would ever start
+            if address is None:
+                ray.shutdown()
+            raise ConfigError(f"--address {address or '(local)'}: the Ray cluster has no CPU, so no run could start")
+        self.capacity = 2 * cpus
         self._task = ray.remote(num_cpus=1, max_retries=2)(execute)
         self._refs: dict[Any, str] = {}
         self._started_here = address is None
@@ -192,8 +252,11 @@ def make_backend(name: str, workers: int = 1, address: str | None = None) -> Bac
     """The backend called ``name`` (``local`` or ``ray``).
 
     Raises:
-        ConfigError: an unknown name, or Ray missing.
+        ConfigError: an unknown name, Ray missing, a ``workers`` outside ``[1, max_workers()]``
+            or a malformed ``address``.
     """
+    check_workers(workers)
+    check_address(address)
     if name == "local":
         if address is not None:
             raise ConfigError("--address: only the ray backend joins a cluster")

@@ -16,7 +16,7 @@ from typing import Any
 import typer
 from typer.exceptions import Abort, TyperException
 
-from hg_marl.core.errors import HgMarlError
+from hg_marl.core.errors import HgMarlError, output_error
 
 COMMANDS = (
     "run",
@@ -30,6 +30,7 @@ COMMANDS = (
     "replay",
     "traces",
     "evaluate",
+    "population",
     "headroom",
 )
 """Subcommand modules, in the order ``--help`` lists them."""
@@ -51,8 +52,9 @@ def _root() -> None:
 def one_line_errors(callback: Callable[..., Any]) -> Callable[..., Any]:
     """Wrap a command so bad input (HgMarlError) prints one line and exits 2, wherever it is invoked.
 
-    ``functools.wraps`` keeps the signature typer reads the options from. Any other
-    exception is a bug and keeps its traceback.
+    ``functools.wraps`` keeps the signature typer reads the options from. An OSError a
+    user can fix (:data:`~hg_marl.core.errors.WRITE_ERRNOS`: a full disk, a forbidden
+    folder) is one line too. Any other exception is a bug and keeps its traceback.
     """
 
     @functools.wraps(callback)
@@ -61,6 +63,14 @@ def one_line_errors(callback: Callable[..., Any]) -> Callable[..., Any]:
             return callback(*args, **kwargs)
         except HgMarlError as exc:
             typer.secho(f"error: {exc}", fg=typer.colors.RED, err=True)
+            raise typer.Exit(2) from None
+        except OSError as exc:
+            # A full disk or a forbidden folder met by a writer outside atomic_write
+            # (SB3's zip, a trace being recorded): still one line naming the file.
+            error = output_error(exc)
+            if error is None:
+                raise
+            typer.secho(f"error: {error}", fg=typer.colors.RED, err=True)
             raise typer.Exit(2) from None
 
     return wrapper

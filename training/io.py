@@ -17,6 +17,8 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from hg_marl.core.errors import output_error
+
 FILE_MODE = 0o644
 """Permissions of every result file: the owner writes, everyone reads."""
 
@@ -34,10 +36,18 @@ def _fsync_dir(directory: Path) -> None:
 
 
 def atomic_write(path: str | Path, write: Callable[[Path], object]) -> Path:
-    """Call ``write(tmp_path)``, flush it to disk, then move it onto ``path`` (mode 0644)."""
+    """Call ``write(tmp_path)``, flush it to disk, then move it onto ``path`` (mode 0644).
+
+    Raises:
+        OutputError: a full disk, a forbidden or read-only folder (the temporary file is
+            removed: nothing half-written is left behind).
+    """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    except OSError as exc:
+        raise (output_error(exc, path) or exc) from None
     os.close(fd)
     try:
         write(Path(tmp))
@@ -49,6 +59,12 @@ def atomic_write(path: str | Path, write: Callable[[Path], object]) -> Path:
         os.chmod(tmp, FILE_MODE)
         os.replace(tmp, path)
         _fsync_dir(path.parent)
+    except OSError as exc:
+        Path(tmp).unlink(missing_ok=True)
+        error = output_error(exc, path)
+        if error is None:
+            raise
+        raise error from None
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise

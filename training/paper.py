@@ -32,7 +32,7 @@ PAPER_HABIT: dict[str, Any] = {"features": "facts"}
 PAPER_CONDITIONS: dict[str, tuple[str, dict[str, Any]]] = {
     "planner": ("planner", {}),
     "habit": ("habit", {"q_config": dict(PAPER_HABIT)}),
-    "random": ("hybrid", {"criterion": "random", "q_config": dict(PAPER_HABIT)}),
+    "random": ("hybrid", {"criterion": "random", "q_config": dict(PAPER_HABIT), "share_objects": False}),
 }
 """The paper's three conditions: label -> (robot name, robot params)."""
 

@@ -22,7 +22,7 @@ import pandas as pd
 
 import hg_marl
 from hg_marl.core import Agent
-from hg_marl.core.errors import check_bool, check_finite, check_int
+from hg_marl.core.errors import ConfigError, check_bool, check_finite, check_int
 from hg_marl.policy import Actor, decision_of, log_fields
 from hg_marl.training.io import atomic_write
 
@@ -43,6 +43,21 @@ COLUMNS = (
 )
 """Columns of the per-decision log: the run's own, then every field of the robot's
 :class:`~hg_marl.policy.Decision` (see :func:`~hg_marl.policy.log_fields`), then the outcome."""
+
+
+MAX_CYCLES = 50_000_000
+"""Most cycles a run may need: ``duration / shortest action duration`` is checked against it
+before the run starts: the longest `--duration` at the default durations (1e7 s at 0.2 s)
+fits; durations near the 0.01 s floor shorten the longest run accordingly."""
+
+
+def check_cycles(duration: float, shortest: float, what: str = "--duration") -> None:
+    """Refuse a run whose duration, at the scenario's shortest action, needs over :data:`MAX_CYCLES` cycles."""
+    if duration / shortest > MAX_CYCLES:
+        raise ConfigError(
+            f"{what} {duration:g}: up to {duration / shortest:.3g} cycles at the shortest action duration "
+            f"({shortest:g} s), over the limit {MAX_CYCLES:,}"
+        )
 
 
 @dataclass(frozen=True)
@@ -119,6 +134,7 @@ def run(
     """
     env = hg_marl.env(scenario=config.scenario, continuing=True, max_cycles=None, time_budget=config.duration)
     raw = env.unwrapped
+    check_cycles(config.duration, raw.world.durations.shortest)
     env_seed, robot_seq, human_seq = np.random.SeedSequence(config.seed).spawn(3)
     env.reset(seed=int(env_seed.generate_state(1)[0]))
     robot.reset(raw.world, Agent.ROBOT, np.random.default_rng(robot_seq))

@@ -1,33 +1,53 @@
 """A results store keyed by content: a finished run is reused only when every input is the same.
 
-A run's **key** is the SHA-256 of a canonical JSON document holding everything that
-determines its result (:meth:`Job.key_fields`): the robot's and the human's registry
-names and parameters, the scenario's *content* (the TOML text of a built-in or of a
-file, or the ``generated:...`` spec, never just a file name), the simulated duration,
-the seed, the decision-cost model, the runner's protocol switches, the package version
-and a fingerprint of the code that plays the game (:func:`code_fingerprint`: the
-sources of ``hg_marl``, ``hg_marl.agents`` and the runner). Any changed input gives a
-new key, so a changed setting can never pick up an old run; nothing else (a label, an
-output folder, the number of workers) enters the key.
+A run's **key** is the SHA-256 of a canonical JSON document (:func:`key_document`)
+holding everything that determines its result, as a content-addressed build cache
+(Bazel, Nix, ccache) keys an action by its inputs and its tool chain:
+
+- the settings (:meth:`Job.key_fields`): the robot's and the human's registry names and
+  parameters, the scenario's *content* (the TOML bytes of a built-in or a file, or the
+  ``generated:...`` spec, never just a name), the simulated duration, the seed, the
+  decision-cost model and the runner's protocol switches;
+- the content of every file those settings name (:func:`~hg_marl.training.provenance.named_files`):
+  any text, also inside a nested ``name:k=v`` spec, that names an existing file, folder
+  or model stem is keyed by its text and by the bytes the loaders read (a model header
+  *and* the weights it names; a trace; a scenario), so a replaced ``learned:path=``,
+  ``replay:path=`` or ``sb3:path=`` file gives a new key;
+- the code (:func:`~hg_marl.training.provenance.code_fingerprint`): the project modules a
+  run can execute, found by a static walk of the import graph from the backends, the
+  runner and every registry target (function-level imports included), hashed without
+  docstrings and comments; plus the third-party distributions' versions, the Python
+  version, the package version and the entry :data:`SCHEMA`.
+
+Any changed input gives a new key, so a changed setting, file or code can never pick up
+an old run; nothing else (a label, an output folder, the backend, the number of workers)
+enters the key. As in Bazel, inputs must not change *while* a study runs: a file replaced
+between its hashing and its reading by a worker is stored under the old content's key.
 
 API (all paths under the store's ``root``)::
 
     store = Store(root)
     job = Job(robot="hybrid", robot_params={"criterion": "vpi"}, human="lazy", seed=3)
     store.key(job)                  # 64 hex digits
-    store.get(job)                  # a StoredRun, or None (missing, incomplete or being written)
+    store.get(job)                  # a StoredRun, or None (missing, damaged or being written)
     with store.claim(job.key()) as held:   # True: this process owns the job until the block ends
-        if held and store.get(job, repair=True) is None:   # repair: corrupt -> one warning, removed
+        if held and store.get(job, repair=True) is None:   # repair: damaged -> one warning, removed
             store.put(job, run_result)     # atomic, fsynced, files 0644
     stored.summary, stored.tasks, stored.rate, stored.log()
     store.cached("oracle", {...}, compute)  # any other JSON result (oracle rates, training cells)
 
 Layout: ``root/runs/<k[:2]>/<k>/{result.json,log.csv.gz}`` and
-``root/cached/<kind>/<k>.json``; ``result.json`` is written last and holds the log's
-SHA-256, so an entry is complete exactly when ``result.json`` parses, names its own key
-and matches its log. Anything else (a truncated file, a log without its result, a
-changed byte) is reported in one warning line, removed and run again by whoever holds
-the claim (without the claim it may be an entry being written, and is only skipped).
+``root/cached/<kind>/<k>.json``. Every entry is **sealed** (:func:`seal`): it carries the
+SHA-256 of its own canonical JSON, and ``result.json`` (written last) also the log's
+SHA-256 and the whole key document, for people asking why a run was made. An entry is
+used only when it parses as strict JSON (no ``NaN``/``Infinity``), names its own key,
+matches its seal and its log, and its summary holds every field the runner writes
+(:func:`hg_marl.training.runner.summarise`), each a finite number. Anything else (a
+truncated file, a log without its result, a hand-edited count, a ``NaN``, a missing key)
+is reported in one warning line saying what is wrong, removed and run again by whoever
+holds the claim (without the claim it may be an entry being written, and is only
+skipped). The seal detects damage and edits, not an adversary who recomputes it (that
+would take a signing key; a store is as trusted as the folder it lives in).
 
 Claims: ``root/claims/<k>.lock`` held with an exclusive ``flock``. The kernel drops the
 lock when its process dies, so the claim of a killed study is taken over at once (the
@@ -47,6 +67,7 @@ import hashlib
 import io
 import json
 import logging
+import math
 import os
 import shutil
 import time
@@ -59,36 +80,15 @@ from typing import Any
 import pandas as pd
 
 from hg_marl.training.io import atomic_write, write_json
+from hg_marl.training.provenance import code_fingerprint, file_digest, named_files
 
 log = logging.getLogger(__name__)
 
 CLAIM_POLL = 0.2
 """Seconds between looks at a value another process is computing."""
 
-SCHEMA = 1
-"""Version of the entry layout; part of every key."""
-
-
-@functools.cache
-def code_fingerprint() -> str:
-    """SHA-256 over the sources that decide a run's outcome (game, agents, runner).
-
-    Why not the package version alone: in a working copy the version does not move when
-    a rule, a robot or a default changes, and a store that trusted it would hand back
-    results of the old code.
-    """
-    import hg_marl
-    import hg_marl.agents
-    import hg_marl.training.runner
-
-    digest = hashlib.sha256()
-    roots = [Path(hg_marl.__file__).parent, Path(hg_marl.agents.__file__).parent]
-    files = sorted(f for r in roots for f in r.rglob("*.py") if "training" not in f.relative_to(r.parent).parts)
-    files.append(Path(hg_marl.training.runner.__file__))
-    for f in files:
-        digest.update(f.name.encode())
-        digest.update(f.read_bytes())
-    return digest.hexdigest()
+SCHEMA = 2
+"""Version of the entry layout; part of every key (2: entries carry their own hash)."""
 
 
 def scenario_content(scenario: str) -> str:
@@ -108,7 +108,7 @@ def scenario_content(scenario: str) -> str:
         path = Path(text)
         if not path.is_file():
             raise ScenarioError(f"unknown scenario {text!r}: not a built-in name and not an existing file")
-        data = path.read_bytes()
+        return file_digest(path)
     return hashlib.sha256(data).hexdigest()
 
 
@@ -132,12 +132,25 @@ def _plain_tree(value: Any) -> Any:
     return json.loads(canonical(value))
 
 
-def content_key(kind: str, fields: Mapping[str, Any]) -> str:
-    """The key of a result of ``kind`` made from ``fields`` (plus schema, version and code)."""
+def key_document(kind: str, fields: Mapping[str, Any]) -> dict[str, Any]:
+    """Everything a result of ``kind`` made from ``fields`` depends on: the fields, the content of
+    every file they name (:func:`~hg_marl.training.provenance.named_files`), the entry schema,
+    the package version and the code fingerprint."""
     import hg_marl
 
-    doc = {"kind": kind, "schema": SCHEMA, "version": hg_marl.__version__, "code": code_fingerprint(), **fields}
-    return hashlib.sha256(canonical(doc).encode()).hexdigest()
+    return {
+        "kind": kind,
+        "schema": SCHEMA,
+        "version": hg_marl.__version__,
+        "code": code_fingerprint(),
+        "files": named_files(fields),
+        **fields,
+    }
+
+
+def content_key(kind: str, fields: Mapping[str, Any]) -> str:
+    """The key of a result of ``kind`` made from ``fields``: the SHA-256 of its :func:`key_document`."""
+    return hashlib.sha256(canonical(key_document(kind, fields)).encode()).hexdigest()
 
 
 def default_cost_model() -> dict[str, Any]:
@@ -171,7 +184,7 @@ class Job:
     """The runner charges decision time to the clock."""
 
     def key_fields(self) -> dict[str, Any]:
-        """Everything that determines this run's result."""
+        """The run's settings (:func:`content_key` adds the files they name and the code)."""
         return {
             "robot": {"name": self.robot, "params": dict(self.robot_params)},
             "human": {"name": self.human, "params": dict(self.human_params)},
@@ -263,12 +276,12 @@ class Store:
         result, log_path = folder / "result.json", folder / "log.csv.gz"
         if not result.is_file():
             return "partial (no result.json)"
-        try:
-            data = json.loads(result.read_text())
-        except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-            return f"corrupt (result.json unreadable: {str(exc).splitlines()[0]})"
-        if not isinstance(data, dict) or data.get("key") != key or not isinstance(data.get("summary"), dict):
-            return "corrupt (result.json does not describe this key)"
+        data = _read_entry(result, key)
+        if isinstance(data, str):
+            return data
+        problem = _summary_problem(data.get("summary"))
+        if problem:
+            return problem
         if not log_path.is_file() or _sha256(log_path) != data.get("log_sha256"):
             return "corrupt (log missing or changed)"
         return StoredRun(key, data.get("job", {}), data["summary"], log_path)
@@ -284,11 +297,11 @@ class Store:
         record = {
             "key": key,
             "job": job.describe(),
-            "key_fields": job.key_fields(),
+            "key_document": key_document("run", job.key_fields()),
             "summary": result.summary,
             "log_sha256": _sha256(log_path),
         }
-        write_json(folder / "result.json", record)
+        write_json(folder / "result.json", seal(record))
         return StoredRun(key, record["job"], dict(result.summary), log_path)
 
     @contextlib.contextmanager
@@ -328,20 +341,68 @@ class Store:
                     if found is not None:
                         return found[0]
                     value = compute()
-                    write_json(path, {"key": key, "kind": kind, "fields": dict(fields), "value": value})
+                    write_json(path, seal({"key": key, "kind": kind, "fields": dict(fields), "value": value}))
                     return value
             time.sleep(CLAIM_POLL)
 
     def _read_cached(self, path: Path, key: str, repair: bool = False) -> tuple[Any] | None:
         if not path.is_file():
             return None
-        try:
-            data = json.loads(path.read_text())
-            if isinstance(data, dict) and data.get("key") == key and "value" in data:
+        data = _read_entry(path, key)
+        if isinstance(data, dict):
+            if "value" in data:
                 return (data["value"],)
-        except (OSError, UnicodeDecodeError, json.JSONDecodeError):
-            pass
+            data = "incomplete (no 'value')"
         if repair:
-            log.warning("store: cached %s %s is corrupt; computing it again", path.parent.name, key[:12])
+            log.warning("store: cached %s %s is %s; computing it again", path.parent.name, key[:12], data)
             path.unlink(missing_ok=True)
         return None
+
+
+def seal(record: Mapping[str, Any]) -> dict[str, Any]:
+    """``record`` with its integrity hash: the SHA-256 of its canonical JSON, under ``sha256``."""
+    body = {k: v for k, v in record.items() if k != "sha256"}
+    return {**body, "sha256": hashlib.sha256(canonical(body).encode()).hexdigest()}
+
+
+def _refuse_constant(name: str) -> Any:
+    raise ValueError(f"non-finite number {name}")
+
+
+def _read_entry(path: Path, key: str) -> dict[str, Any] | str:
+    """A sealed entry of ``key``, or what is wrong with it (one phrase)."""
+    try:
+        data = json.loads(path.read_text(), parse_constant=_refuse_constant)
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError, RecursionError) as exc:
+        return f"corrupt ({path.name} unreadable: {str(exc).splitlines()[0]})"
+    except ValueError as exc:  # NaN, Infinity: never written by this store
+        return f"non-finite ({path.name} holds a {str(exc).removeprefix('non-finite number ')})"
+    if not isinstance(data, dict) or data.get("key") != key:
+        return f"corrupt ({path.name} does not describe this key)"
+    if not isinstance(data.get("sha256"), str):
+        return f"incomplete ({path.name} has no sha256)"
+    if seal(data)["sha256"] != data["sha256"]:
+        return f"tampered ({path.name} does not match its sha256)"
+    return data
+
+
+@functools.cache
+def _summary_template() -> dict[str, Any]:
+    """What a run's summary holds: the runner's summary of an empty log (its one definition)."""
+    from hg_marl.training.runner import COLUMNS, summarise
+
+    return summarise(pd.DataFrame(columns=list(COLUMNS)), 1.0)
+
+
+def _summary_problem(summary: Any) -> str | None:
+    """Why a stored summary cannot be used (a missing key, a non-number where a number goes), or None."""
+    if not isinstance(summary, dict):
+        return "incomplete (no summary)"
+    for name, template in _summary_template().items():
+        if name not in summary:
+            return f"incomplete (summary lacks {name!r})"
+        value = summary[name]
+        number = isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)
+        if not number and not (template is None and value is None):
+            return f"corrupt (summary {name!r} is {value!r}, not a finite number)"
+    return None

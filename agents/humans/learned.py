@@ -101,6 +101,14 @@ def save_sb3_policy(
     return out
 
 
+MAX_WEIGHT = 1e6
+"""Largest weight magnitude of a ``linear_softmax`` policy."""
+MIN_TEMPERATURE, MAX_TEMPERATURE = 1e-3, 1e3
+"""Accepted softmax temperatures. With the weight bound, every logit stays below about
+1e11, so the softmax never overflows to ``inf - inf`` (a NaN probability that would stop a
+run mid-way and divide the oracle by zero)."""
+
+
 def _numpy_policy(mf: ModelFile) -> tuple[np.ndarray, np.ndarray]:
     """Check a numpy kind's arrays against its header's names; return them."""
     n_a, n_f = len(mf.header["action_names"]), len(mf.header["fact_names"])
@@ -111,7 +119,15 @@ def _numpy_policy(mf: ModelFile) -> tuple[np.ndarray, np.ndarray]:
             raise ModelFileError(f"{where}: linear_softmax needs arrays W ({n_a}, {n_f}) and b ({n_a},)")
         if not (np.isfinite(w).all() and np.isfinite(b).all()):
             raise ModelFileError(f"{where}: W and b must be finite")
-        check_finite(mf.header.get("temperature"), f"{where}: field 'temperature'", positive=True, error=ModelFileError)
+        if max(float(np.abs(w).max(initial=0.0)), float(np.abs(b).max(initial=0.0))) > MAX_WEIGHT:
+            raise ModelFileError(f"{where}: W and b must lie in [-{MAX_WEIGHT:g}, {MAX_WEIGHT:g}]")
+        check_finite(
+            mf.header.get("temperature"),
+            f"{where}: field 'temperature'",
+            minimum=MIN_TEMPERATURE,
+            maximum=MAX_TEMPERATURE,
+            error=ModelFileError,
+        )
         return w.astype(np.float64), b.astype(np.float64)
     facts, actions = arrays.get("facts"), arrays.get("actions")
     if facts is None or actions is None or facts.ndim != 2 or facts.shape[1] != n_f or actions.shape != facts.shape[:1]:

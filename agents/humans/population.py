@@ -164,7 +164,9 @@ def _read(path: Path) -> tuple[str, dict[str, Any]]:
     except tomllib.TOMLDecodeError as exc:
         found = re.search(r"\(at line (\d+), column (\d+)\)", str(exc))
         message = re.sub(r"\s*\(at line \d+, column \d+\)", "", str(exc))
-        raise PopulationError(f"{where(path, found.group(1) if found else None)}: not valid TOML: {message}") from None
+        raise PopulationError(
+            f"{where(path, int(found.group(1)) if found else None)}: not valid TOML: {message}"
+        ) from None
     except RecursionError:
         raise PopulationError(f"{path}: nested too deeply") from None
 

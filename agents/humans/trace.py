@@ -49,6 +49,8 @@ class Episode:
     """The step lines, in order."""
     end: dict[str, Any] = field(default_factory=dict)
     """The optional end line (final ``clock``, ``tasks_solved``, ``rewards``); empty if absent."""
+    lines: list[int] = field(default_factory=list)
+    """File line numbers of the header, each step and the end line (for ``path:line`` messages)."""
 
     @property
     def actions(self) -> list[int]:
@@ -63,6 +65,20 @@ def _is_int(value: Any) -> bool:
 def _check_header(record: dict[str, Any], at: str, line: str) -> None:
     if record.get("format") != FORMAT or record.get("version") != VERSION:
         raise ModelFileError(f"{at}: not a {FORMAT} v{VERSION} header: {line.strip()[:80]}")
+    scenario = record.get("scenario")
+    if not isinstance(scenario, str) or not 0 < len(scenario) <= 1024:
+        raise ModelFileError(f"{at}: field 'scenario': expected a scenario name, got {scenario!r}")
+    seed = record.get("seed")
+    if seed is not None and (not _is_int(seed) or not 0 <= seed < 2**63):
+        raise ModelFileError(f"{at}: field 'seed': expected an integer >= 0 or null, got {seed!r}")
+    if not isinstance(record.get("actor", ""), str):
+        raise ModelFileError(f"{at}: field 'actor': expected a string, got {record.get('actor')!r}")
+    meta = record.get("meta", {})
+    if not isinstance(meta, dict):
+        raise ModelFileError(f"{at}: field 'meta': expected an object, got {type(meta).__name__}")
+    for key in ("player", "robot", "started", "front_end"):
+        if key in meta and not isinstance(meta[key], str):
+            raise ModelFileError(f"{at}: field 'meta.{key}': expected a string, got {meta[key]!r}")
     for key in ("fact_names", "action_names"):
         names = record.get(key)
         if not isinstance(names, list) or not names or not all(isinstance(n, str) for n in names):
@@ -86,13 +102,71 @@ def _check_step(record: dict[str, Any], header: dict[str, Any], at: str) -> None
             raise ModelFileError(f"{at}: field {key!r}: expected {size} values, each 0 or 1")
     if not _is_int(record.get("step")) or record["step"] < 0:
         raise ModelFileError(f"{at}: field 'step': expected a non-negative integer, got {record.get('step')!r}")
-    clock = record.get("clock", 0.0)
-    if isinstance(clock, bool) or not isinstance(clock, int | float) or not math.isfinite(clock) or clock < 0:
-        raise ModelFileError(f"{at}: field 'clock': expected a finite number >= 0, got {clock!r}")
+    _check_number(record, "clock", at, 0.0)
+    tasks = record.get("tasks_solved", 0)
+    if not _is_int(tasks) or tasks < 0:
+        raise ModelFileError(f"{at}: field 'tasks_solved': expected an integer >= 0, got {tasks!r}")
+    if "response_time" in record:
+        _check_number(record, "response_time", at, 0.0, MAX_RESPONSE_TIME)
 
 
-MAX_TRACE_BYTES = 1 << 30
-"""A trace file may be at most 1 GiB."""
+MAX_RESPONSE_TIME = 86_400.0
+"""Longest response time (wall seconds) a step line may carry: one day."""
+
+
+def _check_number(
+    record: dict[str, Any], key: str, at: str, minimum: float | None, maximum: float | None = None
+) -> float:
+    """A finite number in range (``1e400`` parses as infinity and is refused here)."""
+    value = record.get(key, 0.0)
+    bad = isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value)
+    if bad or (minimum is not None and value < minimum) or (maximum is not None and value > maximum):
+        bounds = (
+            f" in [{minimum:g}, {maximum:g}]"
+            if maximum is not None
+            else f" >= {minimum:g}"
+            if minimum is not None
+            else ""
+        )
+        raise ModelFileError(f"{at}: field {key!r}: expected a finite number{bounds}, got {value!r}")
+    return float(value)
+
+
+def _check_order(record: dict[str, Any], before: dict[str, Any] | None, at: str) -> None:
+    """The clock and the solved-task count never go back; each turn solves at most two tasks.
+
+    A cycle is one robot action and one human action, each of which solves at most one
+    task (a ``throw``), so ``tasks_solved`` grows by at most 2 from one turn to the next
+    (and from the last turn to the end line).
+    """
+    clock, tasks = float(record.get("clock", 0.0)), record.get("tasks_solved", 0)
+    prev_clock = float(before.get("clock", 0.0)) if before else 0.0
+    prev_tasks = int(before.get("tasks_solved", 0)) if before else 0
+    if clock < prev_clock:
+        raise ModelFileError(f"{at}: field 'clock': {clock:g} is before the previous line's {prev_clock:g}")
+    if not prev_tasks <= tasks <= prev_tasks + 2:
+        raise ModelFileError(
+            f"{at}: field 'tasks_solved': {tasks} after {prev_tasks} on the previous line "
+            "(a cycle solves at most 2 tasks and never loses one)"
+        )
+
+
+def _check_end(record: dict[str, Any], episode: Episode, at: str) -> None:
+    _check_number(record, "clock", at, 0.0)
+    _check_number(record, "rewards", at, None)
+    tasks = record.get("tasks_solved", 0)
+    if not _is_int(tasks):
+        raise ModelFileError(f"{at}: field 'tasks_solved': expected an integer >= 0, got {tasks!r}")
+    _check_order(record, episode.steps[-1] if episode.steps else None, at)
+
+
+MAX_TRACE_BYTES = 64 << 20
+"""A trace file may be at most 64 MiB. Read, a trace takes about 7.5 times its size in
+memory (a Python list per step's facts and mask), so this keeps a read under 0.5 GB; a
+person's move is about 300 bytes, so the cap is some 200,000 moves."""
+
+MAX_DECISION_CHARGE = 60.0
+"""Most simulated seconds a robot decision may add to a cycle (its wall time, charged)."""
 
 
 def trace_paths(path: str | Path) -> list[Path]:
@@ -142,14 +216,20 @@ def read_trace(path: str | Path) -> list[Episode]:
                 kind = record.get("type")
                 if kind == "header":
                     _check_header(record, at, line)
-                    episodes.append(Episode(record))
+                    episodes.append(Episode(record, lines=[number]))
                 elif kind == "step":
                     if not episodes:
                         raise ModelFileError(f"{at}: step before any header line")
                     _check_step(record, episodes[-1].header, at)
+                    _check_order(record, episodes[-1].steps[-1] if episodes[-1].steps else None, at)
                     episodes[-1].steps.append(record)
+                    episodes[-1].lines.append(number)
+                elif kind == "end" and episodes and episodes[-1].end:
+                    raise ModelFileError(f"{at}: a second end line for the same episode")
                 elif kind == "end" and episodes:
+                    _check_end(record, episodes[-1], at)
                     episodes[-1].end = record
+                    episodes[-1].lines.append(number)
                 else:
                     raise ModelFileError(
                         f"{at}: unknown line type {kind!r} (expected 'header', 'step' or 'end' after a header)"
@@ -159,6 +239,52 @@ def read_trace(path: str | Path) -> list[Episode]:
     if not episodes:
         raise ModelFileError(f"{path}: empty trace (no header line)")
     return episodes
+
+
+def check_episode(episode: Episode, path: str | Path, seat: str | None = None) -> World:
+    """Check a read episode against the scenario its header names; return that scenario's world.
+
+    The header's fact and action names must be the scenario's for the recorded seat (a
+    trace of another scenario, or crafted names, would be measured or replayed silently
+    wrong), and no turn may come later than one cycle after the one before it: the
+    scenario's longest action plus :data:`MAX_DECISION_CHARGE`. That bounds a replay's
+    simulated time by the number of recorded moves (an end line saying ``"clock": 5e6``
+    after three moves would replay for days).
+
+    Raises:
+        ModelFileError: naming ``path:line``.
+    """
+    from hg_marl.core.errors import HgMarlError
+    from hg_marl.core.scenario import load_scenario
+
+    h = episode.header
+    at = f"{path}:{episode.lines[0] if episode.lines else 1}"
+    if seat is not None and h["seat"] != seat:
+        raise ModelFileError(f"{at}: field 'seat': {h['seat']!r}; this command reads traces of the {seat} seat")
+    try:
+        world = World(load_scenario(h["scenario"]))
+    except HgMarlError as exc:
+        raise ModelFileError(f"{at}: field 'scenario': {exc}") from None
+    agent = Agent.ROBOT if h["seat"] == "robot" else Agent.HUMAN
+    for key, names in (("fact_names", world.fact_names), ("action_names", world.action_names[agent])):
+        if list(h[key]) != list(names):
+            raise ModelFileError(
+                f"{at}: field {key!r}: not the names of scenario {h['scenario']!r} for the {h['seat']} seat"
+            )
+    gap = world.durations.longest + MAX_DECISION_CHARGE
+    records = [*episode.steps, *([episode.end] if episode.end else [])]
+    previous = 0.0
+    for k, record in enumerate(records):
+        clock = float(record.get("clock", previous))
+        if clock - previous > gap:
+            line = episode.lines[k + 1] if k + 1 < len(episode.lines) else "?"
+            raise ModelFileError(
+                f"{path}:{line}: field 'clock': {clock:g} is {clock - previous:g} s after the previous turn, "
+                f"longer than a cycle can last ({gap:g} s: the longest action plus {MAX_DECISION_CHARGE:g} s "
+                "of robot decision)"
+            )
+        previous = clock
+    return world
 
 
 def _no_constant(name: str) -> Any:

@@ -26,6 +26,7 @@ from hg_marl.agents.habit import QLearner, QLearnerConfig, sample, softmax
 from hg_marl.agents.meta.base import PlanProposal, planner_distribution
 from hg_marl.agents.meta.cost import CostModel
 from hg_marl.core import WAIT, Agent, World
+from hg_marl.core.errors import RobotError, check_bool
 from hg_marl.policy import Decision, Turn
 
 
@@ -83,6 +84,9 @@ class LearningRobot(Robot):
             fresh, zero-weight learner, as each of the paper's runs does.
         learn: whether to take TD steps (False: a frozen habit, for evaluation).
         cost: decision cost model.
+        share_objects: learn on the state with interchangeable objects in canonical order
+            (:mod:`hg_marl.agents.robots.canonical`), so what is learnt about one tape
+            holds for its interchangeable twins.
     """
 
     _prev: tuple[np.ndarray, int] | None
@@ -96,8 +100,13 @@ class LearningRobot(Robot):
         learner: QLearner | None = None,
         learn: bool = True,
         cost: CostModel | None = None,
+        share_objects: bool = False,
     ) -> None:
         super().__init__(cost)
+        self.share_objects = check_bool(share_objects, f"{self.name}.share_objects", RobotError)
+        self._canon: Any = None
+        self._to_original: np.ndarray | None = None
+        self._to_canonical: np.ndarray | None = None
         if isinstance(q_config, dict):
             try:
                 q_config = replace(self.default_habit, **q_config)
@@ -116,6 +125,26 @@ class LearningRobot(Robot):
         if self._given_learner is None:
             self.learner = QLearner(world.n_facts, self.n_actions, self.q_config)
         self._prev = None
+        if self.share_objects:
+            from hg_marl.agents.robots.canonical import CanonicalView
+
+            self._canon = CanonicalView(world, self.agent)
+
+    def _habit_facts(self, turn: Turn) -> np.ndarray:
+        """The facts the habit sees this turn (canonical ones with ``share_objects``).
+
+        Also sets the action maps :meth:`_habit_proposal` and :meth:`_remember` use, so
+        call it once per turn, before both.
+        """
+        facts = turn.observation["observation"]
+        if self._canon is None:
+            return facts
+        facts, self._to_original, self._to_canonical = self._canon.view(turn.state, facts)
+        return facts
+
+    def _to_robot_actions(self, values: np.ndarray) -> np.ndarray:
+        """Per-action habit values (canonical labelling) in the original labelling."""
+        return values if self._to_canonical is None else values[self._to_canonical]
 
     @property
     def habit(self) -> QLearner:
@@ -130,7 +159,12 @@ class LearningRobot(Robot):
         return self._prev is not None
 
     def _remember(self, facts: np.ndarray, action: int) -> None:
-        """Keep this turn's (facts, executed action) for the next TD step."""
+        """Keep this turn's (habit facts, executed action) for the next TD step.
+
+        ``action`` is in the original labelling; it is learnt in the habit's.
+        """
+        if self._to_canonical is not None:
+            action = int(self._to_canonical[action])
         self._prev = (facts, action)
 
     def _learn_from(self, reward: float, facts: np.ndarray, done: bool = False) -> bool:
@@ -150,14 +184,14 @@ class LearningRobot(Robot):
         """Q-values, Boltzmann distribution, a sampled action and the wall time it took."""
         t0 = time.perf_counter()
         habit = self.habit
-        q = habit.q_values(facts)
+        q = self._to_robot_actions(habit.q_values(facts))
         probs = softmax(q, habit.config.beta)
         action = sample(probs, self.rng)
         return q, probs, action, time.perf_counter() - t0
 
     def end(self, turn: Turn, terminated: bool = True) -> None:
         """Last TD step: no bootstrap when ``terminated``; forget the pending transition."""
-        self._learn_from(turn.reward, turn.observation["observation"], done=terminated)
+        self._learn_from(turn.reward, self._habit_facts(turn), done=terminated)
         self._prev = None
 
 
@@ -199,6 +233,24 @@ def stall_move(turn: Turn, rng: np.random.Generator) -> int:
     wait = wait_index(turn.world, turn.agent)
     moves = [int(i) for i in np.flatnonzero(turn.mask) if i != wait]
     return moves[int(rng.integers(len(moves)))] if moves else wait
+
+
+def habit_stall_move(turn: Turn, q: np.ndarray, rng: np.random.Generator) -> int:
+    """The habit's best *feasible* move other than ``wait``: a learning robot's way out of a stall.
+
+    Why not the habit's proposal itself: the proposal is sampled over every action, and in
+    a stall (states the habit knows little) it is mostly infeasible, a 0.2 s no-op that
+    changes nothing the partner reacts to. Restricting the argmax to the mask keeps what the
+    habit has learnt (its preferred feasible move) and guarantees a real move; ties go to a
+    seeded draw. ``wait`` only when nothing else is feasible, as for :func:`stall_move`.
+    """
+    wait = wait_index(turn.world, turn.agent)
+    moves = np.asarray([int(i) for i in np.flatnonzero(turn.mask) if i != wait], dtype=np.int64)
+    if moves.size == 0:
+        return wait
+    values = np.asarray(q, dtype=np.float64)[moves]
+    best = moves[values >= values.max()]
+    return int(best[int(rng.integers(best.size))])
 
 
 def wait_index(world: World, agent: Agent) -> int:

@@ -18,7 +18,7 @@ class HabitRobot(LearningRobot):
 
     def act(self, turn: Turn) -> int:
         """TD step on the previous transition, then sample the Boltzmann policy."""
-        facts = turn.observation["observation"]
+        facts = self._habit_facts(turn)
         self._learn_from(turn.reward, facts)
         _, _, action, wall = self._habit_proposal(facts)
         self._remember(facts, action)

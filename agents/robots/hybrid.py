@@ -10,7 +10,8 @@ cost plus, when it was consulted, the planner's.
 
 The planner's model of the human is revised from what the human does (see
 :mod:`hg_marl.agents.partner`); when the partner keeps not doing what the plan expects,
-the habit acts for that decision instead of the planner (``reason="partner_stalled"``).
+the habit's best *feasible* move other than ``wait`` is taken for that decision instead of
+the planner's (``reason="partner_stalled"``; never an infeasible no-op).
 With ``partner_aware=True`` the planner plans against the most probable partner type.
 """
 
@@ -22,7 +23,7 @@ from hg_marl.agents.habit import QLearner, QLearnerConfig
 from hg_marl.agents.meta.base import Criterion, HabitView, PlanProposal
 from hg_marl.agents.meta.controller import MetaController
 from hg_marl.agents.meta.cost import CostModel
-from hg_marl.agents.robots.base import LearningRobot, plan_proposal
+from hg_marl.agents.robots.base import LearningRobot, habit_stall_move, plan_proposal
 from hg_marl.agents.robots.partnering import Partnering
 from hg_marl.core import State, World
 from hg_marl.core.errors import RobotError, check_bool
@@ -34,8 +35,10 @@ class HybridRobot(LearningRobot):
 
     The defaults are the best measured settings (README, Results): the ``entropy_and_cost``
     criterion, which spares the planner once the habit is sure, over a *tabular* habit,
-    which is sure only where it has learnt. The paper's configuration is
-    ``criterion="random", q_config={"features": "facts"}``.
+    which is sure only where it has learnt, learning on canonical states
+    (``share_objects``: what it learns about one tape holds for its interchangeable
+    twins, so it is sure sooner). The paper's configuration is
+    ``criterion="random", q_config={"features": "facts"}, share_objects=False``.
 
     Args:
         criterion: a criterion name (``hg_marl.agents.meta.available_criteria()``) or instance.
@@ -44,7 +47,7 @@ class HybridRobot(LearningRobot):
         human_model: the human model the planner assumes (None: cooperative).
         partner_aware: plan against the most probable partner type, learnt online
             (:class:`~hg_marl.agents.partner.PartnerPosterior`) instead of ``human_model``.
-        q_config, learner, learn, cost: as for :class:`~hg_marl.agents.robots.base.LearningRobot`.
+        q_config, learner, learn, cost, share_objects: as for :class:`~hg_marl.agents.robots.base.LearningRobot`.
     """
 
     name = "hybrid"
@@ -61,8 +64,9 @@ class HybridRobot(LearningRobot):
         learn: bool = True,
         cost: CostModel | None = None,
         partner_aware: bool = False,
+        share_objects: bool = True,
     ) -> None:
-        super().__init__(q_config, learner, learn, cost)
+        super().__init__(q_config, learner, learn, cost, share_objects)
         self.meta = MetaController(criterion, **(criterion_params or {}))
         self.planner_config = planner_config
         self.human_model = human_model
@@ -82,7 +86,7 @@ class HybridRobot(LearningRobot):
 
     def act(self, turn: Turn) -> int:
         """Learn, let both experts propose as the criterion requires, execute the choice."""
-        facts = turn.observation["observation"]
+        facts = self._habit_facts(turn)
         if self._learn_from(turn.reward, facts):
             self.meta.observe(turn.reward)
         if self.partnering.observe(turn, self.last_decision):
@@ -94,7 +98,7 @@ class HybridRobot(LearningRobot):
             probs=probs,
             action=habit_action,
             q=q,
-            sd=habit.uncertainty(facts),
+            sd=self._to_robot_actions(habit.uncertainty(facts)),
             weight_amplitude=habit.weight_amplitude,
             cost=self.cost.habit_cost(wall),
             visits=habit.visits(facts),
@@ -106,19 +110,20 @@ class HybridRobot(LearningRobot):
             return proposal
 
         if self.partnering.monitor.stalled:
+            move = habit_stall_move(turn, q, self.rng)
             self.partnering.monitor.fell_back()
-            self.partnering.acted(turn.state, habit_action)
-            self._remember(facts, habit_action)
+            self.partnering.acted(turn.state, move)
+            self._remember(facts, move)
             self._record(
                 "habit",
-                habit_action,
+                move,
                 habit_action=habit_action,
                 decision_time=view.cost,
                 weight_amplitude=habit.weight_amplitude,
                 reason="partner_stalled",
                 partner=self.partnering.estimate,
             )
-            return habit_action
+            return move
         decision = self.meta.decide(view, plan)
         prop = decision.plan
         if prop is not None:

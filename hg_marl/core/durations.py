@@ -12,6 +12,11 @@ from hg_marl.core.types import Kind
 MAX_DURATION = 86_400.0
 """Longest action duration accepted (one simulated day)."""
 
+MIN_DURATION = 0.01
+"""Shortest action duration accepted (10 ms of simulated time). A cycle lasts at least
+the shortest duration, so a run of ``--duration D`` takes at most ``D / MIN_DURATION``
+cycles; durations of 1e-300 s (finite, positive) would make any run endless."""
+
 
 @dataclass(frozen=True)
 class Durations:
@@ -40,13 +45,23 @@ class Durations:
 
     def __post_init__(self) -> None:
         for f in fields(self):
-            check_finite(getattr(self, f.name), f"durations.{f.name}", positive=True, maximum=MAX_DURATION)
+            check_finite(getattr(self, f.name), f"durations.{f.name}", minimum=MIN_DURATION, maximum=MAX_DURATION)
 
     def of(self, kind: Kind, ok: bool = True) -> float:
         """Duration of an action of ``kind`` (``failed`` when ``ok`` is False)."""
         if not ok:
             return self.failed
         return float(getattr(self, kind.name.lower()))
+
+    @property
+    def shortest(self) -> float:
+        """The shortest duration: a lower bound on the length of a cycle."""
+        return min(float(getattr(self, f.name)) for f in fields(self))
+
+    @property
+    def longest(self) -> float:
+        """The longest duration (a cycle lasts at most this, plus any charged decision time)."""
+        return max(float(getattr(self, f.name)) for f in fields(self))
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any], source: str = "<config>") -> Durations:
@@ -62,5 +77,7 @@ class Durations:
                 raise ConfigError(
                     f"{source}: field 'durations.{key}': unknown action type (known: {', '.join(sorted(known))})"
                 )
-            values[key] = check_finite(value, f"{source}: field 'durations.{key}'", positive=True, maximum=MAX_DURATION)
+            values[key] = check_finite(
+                value, f"{source}: field 'durations.{key}'", minimum=MIN_DURATION, maximum=MAX_DURATION
+            )
         return replace(cls(), **values)

@@ -12,6 +12,7 @@ missing) so code written against the builtin types keeps working.
 
 from __future__ import annotations
 
+import errno
 import math
 from typing import Any
 
@@ -55,6 +56,26 @@ class PopulationError(HgMarlError):
 
 class ConfigError(HgMarlError):
     """A bad value in a run, training or command-line configuration."""
+
+
+class OutputError(HgMarlError):
+    """A result that could not be written: a full disk, a read-only or forbidden folder."""
+
+
+WRITE_ERRNOS = frozenset(
+    getattr(errno, name)
+    for name in ("ENOSPC", "EDQUOT", "EACCES", "EPERM", "EROFS", "EFBIG", "EISDIR", "ENOTDIR", "ENAMETOOLONG")
+    if hasattr(errno, name)
+)
+"""OS errors a user fixes (free space, permissions, a path that names the wrong thing)."""
+
+
+def output_error(exc: OSError, path: object | None = None) -> OutputError | None:
+    """The one-line error for an OS error a user can fix, else None (a bug keeps its traceback)."""
+    if exc.errno not in WRITE_ERRNOS:
+        return None
+    target = path if path is not None else exc.filename
+    return OutputError(f"cannot write {target}: {exc.strerror or exc}")
 
 
 class SpecError(HgMarlError):

@@ -320,12 +320,42 @@ class _Reader:
         return items
 
 
-def _unique(reader: _Reader, names: Sequence[str], path: str) -> None:
-    seen: set[str] = set()
-    for i, name in enumerate(names):
-        if name in seen:
-            raise reader.fail(f"{path}[{i}].name", f"duplicate name {name!r}")
-        seen.add(name)
+NAME_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9_-]{0,63}")
+"""What an object, bin, spot or robot location may be called: a letter then letters, digits,
+``_`` or ``-``, at most 64 characters. Names appear inside action and fact names
+(``place(tape1,mat_left)``) and in file names, so ``,``, ``(``, ``|``, ``/`` and spaces
+would make two actions share one name or a path leave its folder."""
+
+SCENARIO_NAME_PATTERN = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,63}")
+"""What a scenario file's ``name`` may be: it becomes part of trace file names
+(``play --record DIR``), so it holds no path separator and does not start with a dot."""
+
+RESERVED_NAMES = frozenset({"human", "robot", "wait"})
+"""Words the action and fact syntax already uses (``goto(human)``, ``hasInHand(robot,o)``)."""
+
+
+def _check_name(reader: _Reader, name: str, path: str, pattern: re.Pattern[str] = NAME_PATTERN) -> None:
+    if not pattern.fullmatch(name):
+        raise reader.fail(
+            path,
+            f"name {name!r} must be a letter then letters, digits, '_' or '-' (at most 64 characters)"
+            if pattern is NAME_PATTERN
+            else f"name {name!r} must be letters, digits, '_', '-' or '.' (no path separator, at most 64 characters)",
+        )
+    if pattern is NAME_PATTERN and name.lower() in RESERVED_NAMES:
+        raise reader.fail(path, f"name {name!r} is reserved by the action syntax ({', '.join(sorted(RESERVED_NAMES))})")
+
+
+def _unique(reader: _Reader, groups: Sequence[tuple[str, Sequence[str]]]) -> None:
+    """Every object, bin and spot name well formed and distinct from every other (across kinds)."""
+    seen: dict[str, str] = {}
+    for path, names in groups:
+        for i, name in enumerate(names):
+            field_ = f"{path}[{i}].name"
+            _check_name(reader, name, field_)
+            if name in seen:
+                raise reader.fail(field_, f"duplicate name {name!r} (already used by {seen[name]})")
+            seen[name] = field_
 
 
 _TOP_KEYS = (
@@ -368,10 +398,12 @@ def parse_scenario(
                 if isinstance(item, dict):
                     r.keys(item, allowed, f"{key}[{i}]")
     name = r.get(data, "name", str, "name")
+    _check_name(r, name, "name", SCENARIO_NAME_PATTERN)
     locs = tuple(r.get(data, "robot_locations", list, "robot_locations"))
     if not locs or not all(isinstance(x, str) for x in locs):
         raise r.fail("robot_locations", "expected a non-empty list of names")
     for i, loc in enumerate(locs):
+        _check_name(r, loc, f"robot_locations[{i}]")
         if loc in locs[:i]:
             raise r.fail(f"robot_locations[{i}]", f"duplicate name {loc!r}")
     for key in ("objects", "spots", "bins"):
@@ -406,9 +438,7 @@ def parse_scenario(
         Spot(r.get(s, "name", str, f"spots[{i}].name"), reach(s, f"spots[{i}]"))
         for i, s in enumerate(r.table_list(data, "spots"))
     )
-    _unique(r, objects, "objects")
-    _unique(r, [b.name for b in bins], "bins")
-    _unique(r, [s.name for s in spots], "spots")
+    _unique(r, (("objects", objects), ("bins", [b.name for b in bins]), ("spots", [s.name for s in spots])))
     for i, colour in enumerate(colours):
         if not any(b.colour in ("", colour) for b in bins):
             raise r.fail(f"objects[{i}].colour", f"no bin accepts colour {colour!r}")

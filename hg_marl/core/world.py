@@ -20,7 +20,21 @@ from hg_marl.core.scenario import Scenario, load_scenario
 from hg_marl.core.table import RuleTable
 from hg_marl.core.types import AGENT_NAMES, Action, Agent, Event, Kind, Outcome, State
 
-_CACHE_LIMIT = 2_000_000
+CACHE_BYTES = 64 << 20
+"""Memory each of a world's four memo tables (transitions, facts, two masks) may hold
+before it is cleared: about 256 MB in all, whatever the scenario's size. A cap counted in
+entries alone let a 12-object layout's tables grow to some 1.9 GB."""
+
+
+def cache_entries(n_objects: int, n_facts: int, n_actions: int) -> int:
+    """How many entries fit :data:`CACHE_BYTES`, from an entry's measured size.
+
+    An entry costs about 256 bytes of dict slot, key and array header, plus its payload
+    (the fact or mask bytes, or an outcome's next state, some 16 bytes per object);
+    measured with ``tracemalloc`` on a 12-object generated layout (about 340 bytes per entry
+    on average across the four tables, below this estimate's 750).
+    """
+    return max(1_000, CACHE_BYTES // (256 + n_facts + n_actions + 16 * n_objects))
 
 
 class World:
@@ -48,6 +62,12 @@ class World:
         """Per object, the first bin that accepts it (names and facts; any of ``bins_of`` will do)."""
         self._actions = table.actions
         self._index = table.index
+        self._cache_limit = cache_entries(
+            table.n_objects,
+            len(self.fact_names),
+            max(len(table.actions[Agent.ROBOT]), len(table.actions[Agent.HUMAN])),
+        )
+        """Entries each memo table may hold before it is cleared (:func:`cache_entries`)."""
         self._step_cache: dict[tuple[State, int, int], Outcome] = {}
         self._facts_cache: dict[State, np.ndarray] = {}
         self._mask_cache: tuple[dict[State, np.ndarray], dict[State, np.ndarray]] = ({}, {})
@@ -182,7 +202,7 @@ class World:
         key = (state, agent, index)
         out = self._step_cache.get(key)
         if out is None:
-            if len(self._step_cache) > _CACHE_LIMIT:
+            if len(self._step_cache) > self._cache_limit:
                 self._step_cache.clear()
             out = self._step_cache[key] = self._outcome(state, agent, index)
         return out
@@ -250,7 +270,7 @@ class World:
         if arr is None:
             arr = self.compute_facts(state)
             arr.flags.writeable = False
-            if len(self._facts_cache) > _CACHE_LIMIT:
+            if len(self._facts_cache) > self._cache_limit:
                 self._facts_cache.clear()
             self._facts_cache[state] = arr
         return arr
@@ -267,7 +287,7 @@ class World:
             arr = np.zeros(self.n_actions(agent), dtype=np.int8)
             arr[self.feasible_indices(state, agent)] = 1
             arr.flags.writeable = False
-            if len(cache) > _CACHE_LIMIT:
+            if len(cache) > self._cache_limit:
                 cache.clear()
             cache[state] = arr
         return arr

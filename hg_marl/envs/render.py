@@ -14,6 +14,7 @@ image is drawn, so ``import hg_marl`` stays light. Rendering never opens a windo
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -116,10 +117,32 @@ def layout(world: World) -> Layout:
     table = Box(CELL // 4, 88, width - CELL // 2, 150)
     spots = tuple(Box(CELL // 2 + i * CELL + 4, 118, CELL - 8, 96) for i in range(world.n_spots))
     bins = tuple(Box(CELL // 2 + (world.n_spots + b) * CELL + 4, 110, CELL - 8, 112) for b in range(world.n_bins))
-    n = max(len(sc.robot_locations), 1)
-    step = (width - CELL // 2) / n
-    locations = tuple((int(CELL // 4 + step * (i + 0.5)), 280) for i in range(len(sc.robot_locations)))
+    locations = tuple((x, 280) for x in _location_xs(world, spots + bins, width))
     return Layout(width, 384, table, spots, bins, locations, (width // 2, 44), 340)
+
+
+def _location_xs(world: World, places: tuple[Box, ...], width: int) -> list[int]:
+    """Each robot location under what it reaches: the mean centre of the spots and bins
+    reachable from it (a location reaching nothing goes to a free slot), then pushed
+    apart so that neighbouring labels never overlap."""
+    sc = world.scenario
+    items: tuple[Spot | Bin, ...] = (*sc.spots, *sc.bins)
+    n = len(sc.robot_locations)
+    xs: list[float | None] = []
+    for k in range(n):
+        centres = [box.centre[0] for item, box in zip(items, places, strict=True) if k in item.reach.robot_from]
+        xs.append(sum(centres) / len(centres) if centres else None)
+    step = (width - CELL // 2) / max(n, 1)
+    out = [x if x is not None else CELL // 4 + step * (i + 0.5) for i, x in enumerate(xs)]
+    gap, low, high = 0.8 * CELL, CELL / 2, width - CELL / 2
+    order = sorted(range(n), key=lambda i: (out[i], i))
+    for left, right in itertools.pairwise(order):
+        out[right] = max(out[right], out[left] + gap)
+    if order:  # pushed off the table's end: push back from the right
+        out[order[-1]] = min(out[order[-1]], high)
+        for left, right in itertools.pairwise(reversed(order)):
+            out[right] = min(out[right], out[left] - gap)
+    return [round(min(max(x, low), high)) for x in out]
 
 
 def reach_tint(item: Spot | Bin) -> tuple[int, int, int]:

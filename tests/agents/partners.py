@@ -73,6 +73,34 @@ class IdleWhenAsked(_Wrapped):
         return action
 
 
+class RefusesForVisit(_Wrapped):
+    """Cooperative, but on some visits of the robot to the handover place refuses to do anything.
+
+    Whether a visit is a refusing one is drawn once when the robot arrives (probability
+    ``p``), so the refusal lasts the whole visit: a robot that keeps offering, or keeps
+    waiting for a give, gets nothing until it leaves. Away from the handover place it is
+    cooperative, so the task stays solvable.
+    """
+
+    def __init__(self, p: float = 0.5) -> None:
+        super().__init__("cooperative")
+        self.p = p
+        self.refusing = False
+        self.was_there = False
+
+    def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
+        super().reset(world, agent, rng)
+        self.refusing = self.was_there = False
+
+    def act(self, turn: Turn) -> int:
+        there = turn.state.robot_at in turn.world.scenario.handover_locations
+        if there and not self.was_there:
+            self.refusing = bool(self.rng.random() < self.p)
+        self.was_there = there
+        action = int(self.inner.act(turn))
+        return self.wait if there and self.refusing else action
+
+
 class UndoesWork(_Wrapped):
     """Puts tapes on the shared mat (never hands over), but now and then picks one back up."""
 
@@ -111,6 +139,7 @@ class ChangesWithoutNotice:
 PARTNERS = {
     "refuses_requests": RefusesRequests,
     "never_takes": NeverTakes,
+    "refuses_for_visit": RefusesForVisit,
     "idle_when_asked": IdleWhenAsked,
     "undoes_work": UndoesWork,
     "changes_without_notice": ChangesWithoutNotice,

@@ -61,6 +61,7 @@ def test_registry_lists_every_human_with_documented_params() -> None:
         "adversarial",
         "random",
         "noisy",
+        "preference",
         "switching",
         "learned",
         "replay",

@@ -115,3 +115,18 @@ def test_run_video_mp4(tmp_path: Path) -> None:
     result = CliRunner().invoke(app, ["run", "--robot", "planner", "--duration", "10", "--video", str(mp4)])
     assert result.exit_code == 0, result.output
     assert iio.improps(mp4, plugin="pyav" if importlib.util.find_spec("av") else "FFMPEG").shape[0] > 3
+
+
+def test_robot_locations_stand_beside_what_they_reach() -> None:
+    world = hg_marl.env(scenario="paper2015").unwrapped.world
+    lay = layout(world)
+    sc = world.scenario
+    x = dict(zip(sc.robot_locations, (p[0] for p in lay.locations), strict=True))
+    # paper2015: table_left reaches mat_left/mat_centre, table_right mat_centre/mat_right,
+    # human_side mat_shared, bin_side the trashbin (drawn last): so this order, left to right
+    assert sorted(x, key=x.__getitem__) == ["table_left", "table_right", "human_side", "bin_side"]
+    items, boxes = (*sc.spots, *sc.bins), lay.spots + lay.bins
+    for k, name in enumerate(sc.robot_locations):
+        nearest = min(abs(b.centre[0] - x[name]) for b in boxes)
+        closest = [i for i, b in zip(items, boxes, strict=True) if abs(b.centre[0] - x[name]) == nearest]
+        assert all(k in item.reach.robot_from for item in closest), (name, [i.name for i in closest])

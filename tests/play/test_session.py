@@ -112,24 +112,39 @@ def test_robot_move_reads_the_typed_decision_record(paper) -> None:
         name = "random"
 
     typed = robot_move(Typed(), paper, 17, True)
-    # the non-finite stat is dropped; the weight amplitude is shown beside the criterion's numbers
+    # the non-finite stat is dropped; the habit acted, so its weight amplitude is kept
     assert (typed.expert, typed.decision_time, typed.failed) == ("habit", 0.25, True)
-    assert dict(typed.weights) == {"vpi": 0.5, "weight_amplitude": 2.0}
+    assert dict(typed.weights) == {"vpi": 0.5} and typed.weight_amplitude == 2.0
     # an actor without a record is shown under its name
     assert robot_move(Nothing(), paper, 17, False).expert == "random"
 
 
 def test_terminal_front_end_by_scripted_input(tmp_path: Path) -> None:
     session = PlaySession("planner", seed=0, record=tmp_path, frontend="terminal")
-    script = iter(["1", "w", "zz", "w", "w", "1", "q"])  # pick(tape3), ..., give(tape3)
+    keys = iter(["1", "w", "0", "w", "w", "1", "q"])  # pick(tape3), wait, (no such key), wait, wait, give(tape3)
+    feasible_at_the_bad_key: list[str] = []
+
+    def read() -> str:
+        key = next(keys)
+        if key == "0":  # what the rules allow now, read from the world's mask
+            mask = session.world.mask(session.state, Agent.HUMAN)
+            names = session.world.action_names[Agent.HUMAN]
+            feasible_at_the_bad_key.extend(n for n, ok in zip(names, mask, strict=True) if ok)
+        return key
+
     out = io.StringIO()
-    summary = play_terminal(session, Console(file=out, width=120), read=lambda prompt: next(script))
+    summary = play_terminal(session, Console(file=out, width=200, force_terminal=True), read=read)
     text = out.getvalue()
     (episode,) = read_trace(Path(str(summary["trace"])))
     names = [s["action_name"] for s in episode.steps]
     assert names == ["pick(tape3)", "wait", "wait", "wait", "give(tape3)"]
-    assert "unknown action 'zz'" in text and "robot: take(tape3)" in text
+    (answer,) = [line for line in text.splitlines() if "'0' is not a key here" in line]
+    offered = [item.split(" ", 1)[1] for item in answer.split("your moves: ")[1].split("; q")[0].split(", ")]
+    assert offered == feasible_at_the_bad_key and len(offered) < len(session.world.action_names[Agent.HUMAN])
+    assert "robot: take(tape3), proposed by the planner" in text
+    assert "\x1b[" in text, "redrawn in place (cursor control), not reprinted"
     assert episode.header["meta"]["frontend"] == "terminal" and summary["moves"] == 5
+    assert "played 5 moves with the robot planner" in text
     assert json.loads(Path(str(summary["trace"])).read_text().splitlines()[-1])["type"] == "end"
 
 
@@ -138,7 +153,7 @@ def test_play_command_in_the_terminal_and_bad_robot(tmp_path: Path, monkeypatch:
 
     from hg_marl.training.cli import app, main
 
-    result = CliRunner().invoke(app, ["play", "--tui", "--record", str(tmp_path), "--player", "cli"], input="1\nq\n")
+    result = CliRunner().invoke(app, ["play", "--tui", "--record", str(tmp_path), "--player", "cli"], input="1q")
     assert result.exit_code == 0, result.output
     assert "1 moves, 0 tasks" in result.output
     (trace,) = tmp_path.glob("*.jsonl")
@@ -148,3 +163,74 @@ def test_play_command_in_the_terminal_and_bad_robot(tmp_path: Path, monkeypatch:
     with pytest.raises(SystemExit) as stop:
         main()
     assert stop.value.code == 2
+
+
+@pytest.mark.parametrize(
+    "args,message",
+    [
+        (["--port", "-1"], "--port -1: expected 0 (a free port) to 65535"),
+        (["--port", "70000"], "--port 70000: expected 0 (a free port) to 65535"),
+        (["--record", "FILE"], "--record FILE: expected a directory for the traces, not a file"),
+        (["--tui", "--record", "FILE/sub"], "not a file (FILE is a file)"),
+    ],
+)
+def test_play_bad_port_or_record_is_one_line(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str], args: list[str], message: str
+) -> None:
+    from hg_marl.training.cli import main
+
+    pytest.importorskip("starlette")
+    target = tmp_path / "taken.jsonl"
+    target.write_text("keep")
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(
+        "sys.argv", ["hg-marl", "play", "--no-browser", *[a.replace("FILE", str(target)) for a in args]]
+    )
+    with pytest.raises(SystemExit) as stop:
+        main()
+    err = capsys.readouterr().err.strip()
+    assert stop.value.code == 2 and err.count("\n") == 0 and message.replace("FILE", str(target)) in err
+    assert target.read_text() == "keep" and not (tmp_path / "runs").exists()
+
+
+def test_play_tui_takes_one_key_per_move_in_a_real_terminal(tmp_path: Path) -> None:
+    """In a pseudo-terminal, keys without Enter play moves (the terminal is in cbreak mode)."""
+    import os
+    import pty
+    import select
+    import subprocess
+    import sys
+    import time
+
+    main_fd, child_fd = pty.openpty()
+    code = "from hg_marl.training.cli import main; main()"
+    args = [sys.executable, "-c", code, "play", "--tui", "--record", str(tmp_path), "--player", "pty"]
+    proc = subprocess.Popen(args, stdin=child_fd, stdout=child_fd, stderr=child_fd, close_fds=True)
+    os.close(child_fd)
+    seen = b""
+
+    def wait_for(text: bytes, timeout: float = 60.0) -> None:
+        nonlocal seen
+        end = time.monotonic() + timeout
+        while text not in seen:
+            assert time.monotonic() < end, seen[-2000:]
+            if select.select([main_fd], [], [], 0.1)[0]:
+                try:
+                    seen += os.read(main_fd, 65536)
+                except OSError:  # the child closed the terminal
+                    assert text in seen, seen[-2000:]
+
+    try:
+        wait_for(b"finish and save")
+        os.write(main_fd, b"1")  # pick(tape3): no Enter
+        wait_for(b"you:   pick(tape3)")
+        os.write(main_fd, b"q")
+        wait_for(b"trace saved")
+        assert proc.wait(timeout=30) == 0
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+        os.close(main_fd)
+    (trace,) = tmp_path.glob("*.jsonl")
+    (episode,) = read_trace(trace)
+    assert [s["action_name"] for s in episode.steps] == ["pick(tape3)"]

@@ -80,7 +80,7 @@ def test_overrides_are_yaml_and_nested() -> None:
         ("ppo", ["learning_rat=0.1"], "unknown hyperparameter.*learning_rat.*accepted"),
         ("dqn", ["n_epochs=5"], "unknown hyperparameter.*n_epochs"),
         ("a2c", ["no_equals_sign"], "expected key=value"),
-        ("ppo", ["n_envs=zero"], "integers"),
+        ("ppo", ["n_envs=zero"], "n_envs: expected an integer"),
     ],
 )
 def test_bad_hyperparams_are_clear(algo: str, overrides: list[str], match: str) -> None:

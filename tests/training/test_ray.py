@@ -34,3 +34,13 @@ def test_ray_and_local_backends_give_identical_scores(tmp_path: Path) -> None:
     local = (tmp_path / "local" / "scores.csv").read_text()
     assert local.count("\n") == 1 + 2 * 2 * 2
     assert (tmp_path / "ray" / "scores.csv").read_text() == local
+
+
+def test_population_generation_gives_the_same_file_on_ray(tmp_path: Path) -> None:
+    from hg_marl.training.population_gen import GeneratorConfig, generate, render
+    from hg_marl.training.store import Store
+
+    config = GeneratorConfig(candidates=6, sizes={"train": 2, "validation": 0, "held_out": 2}, duration=60.0, seeds=1)
+    local = render(config, generate(config, Store(tmp_path / "local"), LocalBackend(2)), "p")
+    ray = render(config, generate(config, Store(tmp_path / "ray"), RayBackend(address=None, workers=2)), "p")
+    assert ray == local

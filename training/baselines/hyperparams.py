@@ -22,7 +22,8 @@ from typing import Any
 
 import yaml
 
-from hg_marl.core.errors import ConfigError, ModelFileError
+from hg_marl.agents.sb3_limits import check_kwargs
+from hg_marl.core.errors import ConfigError, ModelFileError, check_int
 
 ALGOS: Mapping[str, str] = {"ppo": "PPO", "a2c": "A2C", "dqn": "DQN", "maskable_ppo": "MaskablePPO"}
 """Command-line algorithm names and their SB3 / sb3-contrib class names."""
@@ -114,7 +115,7 @@ def load_hyperparams(
         HyperparamError: unknown algorithm, missing entry, unknown key or bad override.
     """
     source = Path(path) if path is not None else hyperparams_path(algo)
-    data = yaml.safe_load(source.read_text()) or {}
+    data = _read_yaml(source)
     if not isinstance(data, dict):
         raise HyperparamError(f"{source}: expected a mapping of scenario names to hyperparameters")
     name = scenario.partition(":")[0]
@@ -131,6 +132,18 @@ def load_hyperparams(
                 raise HyperparamError(f"override {item!r}: {k!r} is not a mapping")
             target = nested
         target[keys[-1]] = value
+    n_envs = check_int(merged.pop("n_envs", 1), f"{algo}: n_envs", minimum=1, maximum=MAX_ENVS, error=HyperparamError)
+    n_timesteps = check_int(
+        merged.pop("n_timesteps", 100_000),
+        f"{algo}: n_timesteps",
+        minimum=1,
+        maximum=MAX_TIMESTEPS,
+        error=HyperparamError,
+    )
+    policy = merged.pop("policy", "MlpPolicy")
+    if not isinstance(policy, str):
+        raise HyperparamError(f"{algo}: policy: expected a policy class name, got {policy!r}")
+    check_kwargs(merged, f"{algo} hyperparameter", HyperparamError)
     known = set(accepted_keys(algo))
     unknown = sorted(k for k in merged if k not in known and k not in OWN_KEYS)
     if unknown:
@@ -138,13 +151,43 @@ def load_hyperparams(
             f"{algo}: unknown hyperparameter(s) {', '.join(unknown)}; accepted: "
             f"{', '.join(OWN_KEYS)}, {', '.join(sorted(known))}"
         )
+    n_steps = merged.get("n_steps")
+    if algo in ("ppo", "maskable_ppo") and isinstance(n_steps, int) and n_steps * n_envs < 2:
+        raise HyperparamError(f"{algo}: n_steps x n_envs must be at least 2 (a rollout of one step has no advantage)")
+    return Hyperparams(algo, policy, n_envs, n_timesteps, merged)
+
+
+MAX_ENVS = 256
+"""Most environments stepped together (``n_envs``)."""
+MAX_TIMESTEPS = 10**10
+"""Largest default step budget (``n_timesteps``)."""
+MAX_YAML_BYTES = 1 << 20
+"""A hyperparameter file may be at most 1 MiB."""
+
+
+def _read_yaml(source: Path) -> Any:
+    """A hyperparameter YAML file, any problem reported as one line with ``path:line``."""
     try:
-        n_envs, n_timesteps = int(merged.pop("n_envs", 1)), int(merged.pop("n_timesteps", 100_000))
-    except (TypeError, ValueError) as exc:
-        raise HyperparamError(f"{algo}: n_envs and n_timesteps must be integers ({exc})") from None
-    if n_envs < 1 or n_timesteps < 1:
-        raise HyperparamError(f"{algo}: n_envs and n_timesteps must be positive")
-    return Hyperparams(algo, str(merged.pop("policy", "MlpPolicy")), n_envs, n_timesteps, merged)
+        if source.stat().st_size > MAX_YAML_BYTES:
+            raise HyperparamError(f"{source}: larger than {MAX_YAML_BYTES} bytes")
+        text = source.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise HyperparamError(f"--hyperparams {source}: no such file") from None
+    except IsADirectoryError:
+        raise HyperparamError(f"--hyperparams {source}: is a folder, not a YAML file") from None
+    except UnicodeDecodeError:
+        raise HyperparamError(f"{source}: not UTF-8 text") from None
+    except OSError as exc:
+        raise HyperparamError(f"{source}: cannot read ({exc.strerror})") from None
+    try:
+        return yaml.safe_load(text) or {}
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        at = f"{source}:{mark.line + 1}" if mark is not None else str(source)
+        problem = getattr(exc, "problem", None) or "malformed"
+        raise HyperparamError(f"{at}: not valid YAML ({problem})") from None
+    except RecursionError:
+        raise HyperparamError(f"{source}: YAML nested too deeply") from None
 
 
 def model_kwargs(hp: Hyperparams) -> dict[str, Any]:

@@ -242,17 +242,19 @@ def train(config: TrainConfig, callbacks: Sequence[Any] = ()) -> TrainResult:
         HyperparamError: unknown algorithm or hyperparameter.
         HgMarlError: a bad partner, scenario, or checkpoint (another algorithm, unsafe or corrupt file).
     """
+    # The hyperparameters are checked first: their limits hold without importing torch.
+    resume = load_model_file(config.resume, what="--resume") if config.resume is not None else None
+    if resume is None:
+        hp = load_hyperparams(config.algo, config.env.scenario, config.hp_overrides, config.hyperparams_file)
+
     import torch
     from stable_baselines3.common.callbacks import CallbackList
 
     from hg_marl.training.baselines.callbacks import Checkpoints, ProgressBar, StopOnSignal, save_checkpoint
 
     torch.set_num_threads(config.torch_threads)
-    resume = load_model_file(config.resume, what="--resume") if config.resume is not None else None
     if resume is not None:
         hp = _resume_hyperparams(resume, config)
-    else:
-        hp = load_hyperparams(config.algo, config.env.scenario, config.hp_overrides, config.hyperparams_file)
     total = config.steps or hp.n_timesteps
     env = make_vec_env(config.env, hp.n_envs, config.seed)
     world: World = env.envs[0].unwrapped.world

@@ -7,11 +7,12 @@ user's option; ``training/cli.py:main`` prints it as one line and exits 2.
 from __future__ import annotations
 
 import dataclasses
+import os
 from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any, TypeVar
 
-from hg_marl.core.errors import ConfigError, HgMarlError, check_finite
+from hg_marl.core.errors import ConfigError, HgMarlError, check_finite, check_int
 from hg_marl.core.spec import Spec, collect_params, parse_spec
 
 T = TypeVar("T")
@@ -47,11 +48,61 @@ def check_duration(value: float, option: str = "--duration") -> float:
     return check_finite(value, option, positive=True, maximum=MAX_DURATION)
 
 
-def check_out_file(path: Path | None, option: str) -> Path | None:
-    """An output file whose folder exists (checked before any work is done)."""
-    if path is not None and not path.parent.is_dir():
+def _writable_ancestor(path: Path, option: str) -> None:
+    """The nearest existing ancestor of ``path`` is a folder this process may write in."""
+    parent = path
+    while not parent.exists() and parent != parent.parent:
+        parent = parent.parent
+    if not parent.is_dir():
+        raise ConfigError(f"{option} {path}: {parent} is a file, not a folder")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise ConfigError(f"{option} {path}: folder {parent} is not writable")
+
+
+def check_out_file(path: Path | None, option: str, suffixes: tuple[str, ...] = ()) -> Path | None:
+    """An output file whose folder exists and is writable, which is not a folder, with one of ``suffixes``.
+
+    Checked before any work is done, so a typo does not cost a run.
+    """
+    if path is None:
+        return None
+    if suffixes and path.suffix.lower() not in suffixes:
+        raise ConfigError(f"{option} {path}: expected a file name ending in {' or '.join(suffixes)}")
+    if path.is_dir():
+        raise ConfigError(f"{option} {path}: is a folder; name a file")
+    if not path.parent.is_dir():
         raise ConfigError(f"{option} {path}: folder {path.parent} does not exist")
+    _writable_ancestor(path.parent, option)
+    if path.exists() and not os.access(path, os.W_OK):
+        raise ConfigError(f"{option} {path}: file is not writable")
     return path
+
+
+def check_out_dir(path: Path, option: str) -> Path:
+    """An output folder: existing, or creatable under a writable folder; never an existing file."""
+    if path.exists() and not path.is_dir():
+        raise ConfigError(f"{option} {path}: is a file; name a folder")
+    _writable_ancestor(path, option)
+    return path
+
+
+MAX_WORKERS = max(64, 4 * (os.cpu_count() or 1))
+"""Most worker processes accepted (each costs a Python process, some 100 MB)."""
+
+
+def check_workers(value: int, option: str = "--workers") -> int:
+    """A worker count in [1, :data:`MAX_WORKERS`]."""
+    return check_int(value, option, minimum=1, maximum=MAX_WORKERS)
+
+
+def name_list(text: str | None, option: str) -> tuple[str, ...]:
+    """A comma list of names (``--robots a,b``); given but empty is an error, not 'all'."""
+    if text is None:
+        return ()
+    names = tuple(x.strip() for x in text.split(",") if x.strip())
+    if not names:
+        raise ConfigError(f"{option} {text!r}: expected a comma list of names (omit the option for all)")
+    return names
 
 
 def default(config: type, name: str) -> Any:

@@ -11,13 +11,9 @@ from typing import Annotated
 import typer
 
 from hg_marl.training.baselines.comparison import CompareConfig
-from hg_marl.training.commands.common import checked, default
+from hg_marl.training.commands.common import check_out_dir, checked, default, name_list
 
 DEFAULT_OUT: Path = default(CompareConfig, "out")
-
-
-def _names(text: str) -> tuple[str, ...]:
-    return tuple(x.strip() for x in text.split(",") if x.strip())
 
 
 def register(app: typer.Typer) -> None:
@@ -57,10 +53,11 @@ def register(app: typer.Typer) -> None:
         from hg_marl.training.baselines.comparison import format_aggregate, format_table
         from hg_marl.training.baselines.hyperparams import check_algo
 
-        names = checked(lambda: tuple(check_algo(a) for a in _names(algos)))
+        check_out_dir(out, "--out")
+        names = checked(lambda: tuple(check_algo(a) for a in name_list(algos, "--algos")))
         config = CompareConfig(
             algos=names,
-            humans=_names(humans),
+            humans=name_list(humans, "--humans"),
             scenario=scenario,
             steps=steps,
             seeds=seeds,

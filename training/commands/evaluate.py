@@ -8,9 +8,7 @@ from typing import Annotated, Any
 
 import typer
 
-
-def _names(text: str | None) -> tuple[str, ...]:
-    return tuple(x.strip() for x in (text or "").split(",") if x.strip())
+from hg_marl.training.commands.common import check_out_dir, check_workers, name_list
 
 
 def register(app: typer.Typer) -> None:
@@ -41,7 +39,9 @@ def register(app: typer.Typer) -> None:
         from hg_marl.training.report import robot_table
         from hg_marl.training.study import load_study
 
-        chosen = load_study(study).narrowed(seeds, _names(robots), _names(humans))
+        check_out_dir(out, "--out")
+        check_workers(workers)
+        chosen = load_study(study).narrowed(seeds, name_list(robots, "--robots"), name_list(humans, "--humans"))
         executor = make_backend(backend, workers, address)
         start = time.perf_counter()
         with tqdm(total=len(cells(chosen)), unit="run", desc=chosen.name) as bar:

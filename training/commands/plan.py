@@ -34,7 +34,7 @@ def register(app: typer.Typer) -> None:
         ),
     ) -> None:
         """Plan the table cleaning from a scenario's initial state and print the plan."""
-        check_out_file(png, "--png")
+        check_out_file(png, "--png", (".png",))
         world = World(scenario)
         state = world.initial_state(np.random.default_rng(seed))
         try:

@@ -25,7 +25,7 @@ def register(app: typer.Typer) -> None:
         ),
         player: Annotated[str | None, typer.Option(help="Who plays (written in the trace).")] = None,
         tui: Annotated[bool, typer.Option("--tui", help="Play in the terminal instead of a browser.")] = False,
-        port: Annotated[int, typer.Option(help="Port on 127.0.0.1 (0: a free one).")] = 0,
+        port: Annotated[int, typer.Option(help="Port on 127.0.0.1, 0 to 65535 (0: a free one).")] = 0,
         no_browser: Annotated[bool, typer.Option("--no-browser", help="Print the URL only.")] = False,
     ) -> None:
         """Play the human seat yourself; the game is recorded as a trace for replay and cloning."""
@@ -43,6 +43,13 @@ def register(app: typer.Typer) -> None:
                     err=True,
                 )
                 raise typer.Exit(2) from None
+            from hg_marl.training.play.web import check_port
+
+            check_port(port)
+        if record is not None:
+            from hg_marl.training.play.session import check_record_dir
+
+            check_record_dir(record)
         session = PlaySession(robot, scenario, seed, record=record, player=player, frontend=frontend)
         if tui:
             from hg_marl.training.play.tui import play_terminal
@@ -52,7 +59,7 @@ def register(app: typer.Typer) -> None:
             from hg_marl.training.play.web import Server
 
             server = Server(session, port)
-            typer.echo(f"play at {server.url}  (Ctrl-C or 'Finish and save' to stop)")
+            typer.echo(f"play at {server.url}  (the URL carries the session's token; Ctrl-C or 'Finish' stops)")
             try:
                 server.run(open_browser=not no_browser)
             finally:

@@ -8,7 +8,7 @@ from typing import Annotated, Any
 
 import typer
 
-from hg_marl.training.commands.common import check_duration
+from hg_marl.training.commands.common import check_duration, check_out_dir, check_workers
 
 
 def register(app: typer.Typer) -> None:
@@ -37,6 +37,8 @@ def register(app: typer.Typer) -> None:
         from hg_marl.training import paper
         from hg_marl.training.reproduce import ReproduceConfig, reproduce
 
+        check_out_dir(out, "--out")
+        check_workers(workers)
         config = ReproduceConfig(
             out=out,
             seeds=seeds,

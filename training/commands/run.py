@@ -10,7 +10,7 @@ import typer
 from hg_marl.core.errors import ConfigError
 from hg_marl.core.scenario import load_scenario
 from hg_marl.training.commands.common import check_duration, check_out_file, checked, default, spec_with
-from hg_marl.training.runner import RunConfig
+from hg_marl.training.runner import RunConfig, check_cycles
 
 
 def register(app: typer.Typer) -> None:
@@ -69,7 +69,8 @@ def register(app: typer.Typer) -> None:
         the_robot = checked(lambda: make_robot(robot_spec, **robot_kwargs))
         the_human = checked(lambda: make_human(spec_with(human, human_param, "--human", "--human-param")))
         config = RunConfig(scenario=scenario, duration=duration, seed=seed)
-        load_scenario(scenario)  # a bad scenario fails before the progress bar starts
+        # A bad scenario, or a run too long for its durations, fails before the progress bar starts.
+        check_cycles(duration, load_scenario(scenario).durations.shortest)
         recorder = None
         if video is not None:
             from hg_marl.training.video import FrameRecorder, check_video_path

@@ -13,7 +13,7 @@ import typer
 from hg_marl.core.errors import check_finite
 from hg_marl.training.baselines.envs import EnvSpec
 from hg_marl.training.baselines.train import TrainConfig
-from hg_marl.training.commands.common import checked, default
+from hg_marl.training.commands.common import check_out_dir, checked, default
 
 DEFAULT_OUT: Path = default(TrainConfig, "out")
 
@@ -77,6 +77,7 @@ def register(app: typer.Typer) -> None:
         verbose: Annotated[int, typer.Option(help="SB3 verbosity.")] = default(TrainConfig, "verbose"),
     ) -> None:
         """Train an SB3 algorithm on a seat of the table (or clone recorded play with --algo bc)."""
+        check_out_dir(out, "--out")
         if algo == "bc":
             from hg_marl.training.baselines.bc import behaviour_clone
 

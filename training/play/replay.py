@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from hg_marl.agents.humans.replay import ReplayHuman
-from hg_marl.agents.humans.trace import Episode, read_trace
+from hg_marl.agents.humans.trace import Episode, check_episode, read_trace
 from hg_marl.core.errors import ConfigError, HumanError
 from hg_marl.policy import Actor
 from hg_marl.training.play.session import build_robot
@@ -58,6 +58,7 @@ def load_episode(trace: Path, episode: int) -> Episode:
         raise HumanError(str(exc)) from None
     if not 0 <= episode < len(episodes):
         raise ConfigError(f"--episode {episode}: {trace} holds episodes 0..{len(episodes) - 1}")
+    check_episode(episodes[episode], trace, seat="human")
     return episodes[episode]
 
 

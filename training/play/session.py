@@ -20,6 +20,7 @@ import dataclasses
 import getpass
 import inspect
 import time
+from collections import Counter
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
@@ -70,8 +71,20 @@ class RobotMove:
     failed: bool
     """Whether its preconditions failed (no effect)."""
     weights: Mapping[str, float] = field(default_factory=dict)
-    """The MetaController's numbers behind the choice (hybrid robots), plus the habit's
-    weight amplitude; empty for robots without one."""
+    """The MetaController criterion's numbers behind the choice (hybrid robots; finite
+    values only); empty for robots without one."""
+    weight_amplitude: float | None = None
+    """The habit's weight amplitude; None for a robot without a habit."""
+    reason: str = ""
+    """Why this expert (the record's reason code, see :data:`~hg_marl.training.play.explain.REASONS`)."""
+    expects: str = ""
+    """The person's move the robot's plan expects next (its name; "" when none)."""
+    planner_consulted: bool = False
+    """Whether the planner was asked."""
+    planner_success: bool = False
+    """Whether it found a plan."""
+    planner_nodes: int = 0
+    """Search nodes it expanded."""
 
 
 def robot_move(robot: Actor, world: World, action: int, failed: bool) -> RobotMove:
@@ -79,20 +92,31 @@ def robot_move(robot: Actor, world: World, action: int, failed: bool) -> RobotMo
 
     :func:`hg_marl.policy.decision_of` gives every actor a :class:`~hg_marl.policy.Decision`
     (one naming its class if it keeps none), so any robot can be shown; the MetaController's
-    numbers are the record's ``stats``, plus the habit's weight amplitude.
+    numbers are the record's ``stats``. The habit's weight amplitude is kept only when the
+    robot has a habit (it proposed, or acted).
     """
     record = decision_of(robot)
     weights: dict[str, float] = {}
-    for key, value in (*record.stats, ("weight_amplitude", record.weight_amplitude)):
+    for key, value in record.stats:
         if isinstance(value, int | float) and not isinstance(value, bool) and np.isfinite(value):
             weights[str(key)] = float(value)
+    has_habit = record.habit_action >= 0 or record.expert == "habit"
+    amplitude = float(record.weight_amplitude)
+    expected = int(record.expected_human_action)
+    names = world.action_names
     return RobotMove(
         action=action,
-        name=world.action_names[Agent.ROBOT][action],
+        name=names[Agent.ROBOT][action],
         expert=str(record.expert),
         decision_time=float(record.decision_time),
         failed=failed,
         weights=weights,
+        weight_amplitude=amplitude if has_habit and np.isfinite(amplitude) else None,
+        reason=str(record.reason),
+        expects=names[Agent.HUMAN][expected] if 0 <= expected < len(names[Agent.HUMAN]) else "",
+        planner_consulted=bool(record.planner_consulted),
+        planner_success=bool(record.planner_success),
+        planner_nodes=int(record.planner_nodes),
     )
 
 
@@ -142,6 +166,8 @@ class PlaySession:
     ) -> None:
         if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
             raise ConfigError(f"--seed: expected a non-negative integer, got {seed!r}")
+        if record is not None:
+            check_record_dir(Path(record))
         self.robot_spec = robot
         self.robot = build_robot(robot)
         self.seed = seed
@@ -177,6 +203,16 @@ class PlaySession:
         self.last_human = ""
         self.response_times: list[float] = []
         self.rewards = 0.0
+        self.closed = False
+        """Whether :meth:`close` ran (no more moves)."""
+        self.solved_at: list[float] = []
+        """Simulated clock at each solved task."""
+        self.just_solved = 0
+        """Tasks solved by the last move and the robot's answer (the page says so)."""
+        self.experts: Counter[str] = Counter()
+        """How often each expert chose the robot's move."""
+        self.handovers: Counter[str] = Counter()
+        """Gives and takes by each side: ``you_gave``, ``robot_took``, ``robot_gave``, ``you_took``."""
         self._robot_turn()
 
     # ---- what the front ends read -------------------------------------------------
@@ -218,16 +254,31 @@ class PlaySession:
         Raises:
             HumanError: an unknown or currently infeasible action (nothing happens).
         """
+        if self.closed:
+            raise HumanError("the game is over (the session was closed)")
         index = self._resolve(action)
         response = max(0.0, self.timer() - self._shown_at)
         turn = self.raw.turn("human")
         if self._writer is not None:
             self._writer.step(turn, index, extra={"response_time": round(response, 3)})
         self.response_times.append(response)
+        before = self.tasks_solved
         self.env.step(index)
         self.last_human = self.world.action_names[Agent.HUMAN][index]
+        if not self.raw.infos["human"]["failed"]:
+            self._count_handover("you", self.last_human)
         self.rewards += float(self.raw.rewards["robot"])
+        self._note_solved(before)
         self._robot_turn()
+        self.just_solved = self.tasks_solved - before
+
+    def _count_handover(self, who: str, name: str) -> None:
+        for verb, past in (("give(", "gave"), ("take(", "took")):
+            if name.startswith(verb):
+                self.handovers[f"{who}_{past}"] += 1
+
+    def _note_solved(self, before: int) -> None:
+        self.solved_at.extend([self.clock] * (self.tasks_solved - before))
 
     def _resolve(self, action: int | str) -> int:
         names = self.world.action_names[Agent.HUMAN]
@@ -250,13 +301,19 @@ class PlaySession:
         move = robot_move(self.robot, self.world, action, False)
         if move.decision_time > 0:
             self.raw.charge_time(move.decision_time)
+        before = self.tasks_solved
         self.env.step(action)
         self.rewards += float(self.raw.rewards["robot"])
+        self._note_solved(before)
         self.last_robot = dataclasses.replace(move, failed=bool(self.raw.infos["robot"]["failed"]))
+        self.experts[move.expert] += 1
+        if not self.last_robot.failed:
+            self._count_handover("robot", move.name)
         self._shown_at = self.timer()
 
     def close(self) -> Path | None:
-        """Finish the trace; returns its path (None when not recording)."""
+        """Finish the trace; returns its path (None when not recording). Idempotent."""
+        self.closed = True
         if self._writer is not None:
             self._writer.end(self.clock, self.tasks_solved, self.rewards)
             self._writer.close()
@@ -274,7 +331,42 @@ class PlaySession:
             "moves": len(rt),
             "mean_response_time": float(np.mean(rt)) if rt else None,
             "trace": str(self.trace_path) if self.trace_path else None,
+            "experts": dict(self.experts),
+            "handovers": {k: self.handovers[k] for k in ("you_gave", "robot_took", "robot_gave", "you_took")},
         }
+
+    def summary_text(self) -> str:
+        """The game in words and numbers (the finish page, the terminal's last lines)."""
+        s = self.summary()
+        n, clock = s["tasks_solved"], s["clock"]
+        per_task = f" ({clock / n:.1f} s a task)" if n else ""
+        h = s["handovers"]
+        experts = ", ".join(f"{name} {count}" for name, count in sorted(self.experts.items()))
+        rt = s["mean_response_time"]
+        return (
+            f"{self.player} played {s['moves']} {_plural(s['moves'], 'move')} with the robot {self.robot_spec} "
+            f"on {self.world.scenario.name} (seed {self.seed}): {n} {_plural(n, 'task')} solved in "
+            f"{clock:.1f} simulated seconds{per_task}. Handovers: you gave {h['you_gave']} and the robot "
+            f"took {h['robot_took']}; the robot gave {h['robot_gave']} and you took {h['you_took']}. "
+            f"The robot's {sum(self.experts.values())} moves were chosen by: {experts or 'nobody'}."
+            + (f" Your mean response time: {rt:.1f} s." if rt is not None else "")
+        )
+
+
+def _plural(n: int, word: str) -> str:
+    return word if n == 1 else word + "s"
+
+
+def check_record_dir(record: Path) -> None:
+    """Refuse a ``--record`` that names a file (or lies under one): traces need a directory.
+
+    Raises:
+        ConfigError: naming the option and the file in the way.
+    """
+    for path in (record, *record.parents):
+        if path.exists() and not path.is_dir():
+            where = "" if path == record else f" ({path} is a file)"
+            raise ConfigError(f"--record {record}: expected a directory for the traces, not a file{where}")
 
 
 def _login() -> str:

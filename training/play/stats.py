@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.humans import make_human
-from hg_marl.agents.humans.trace import Episode, TraceRecorder, read_trace, trace_paths
+from hg_marl.agents.humans.trace import Episode, TraceRecorder, check_episode, read_trace, trace_paths
 from hg_marl.core.errors import HumanError
 from hg_marl.training.play.session import build_robot
 from hg_marl.training.runner import RunConfig, run
@@ -92,9 +92,12 @@ def load_games(path: Path) -> list[Episode]:
     games: list[Episode] = []
     for file in trace_paths(path):
         try:
-            games += read_trace(file)
+            episodes = read_trace(file)
+            for episode in episodes:
+                check_episode(episode, file, seat="human")
         except (ValueError, KeyError) as exc:
             raise HumanError(str(exc)) from None
+        games += episodes
     return games
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 from html import escape
 
 from hg_marl.core import Agent, State, World
-from hg_marl.envs.render import layout, object_colour, reach_tint
+from hg_marl.envs.render import PALETTE, layout, object_colour, reach_tint
 
 
 def _rgb(colour: tuple[int, int, int]) -> str:
@@ -44,10 +44,12 @@ def table_svg(world: World, state: State) -> str:
             f'<text x="{box.x + 4}" y="{box.y + 14}" font-size="11">{escape(spot.name)}</text></g>'
         )
     for b, box in zip(sc.bins, lay.bins, strict=True):
+        # a coloured bin is rimmed in the colour it takes (objects are drawn in theirs)
+        rim = f' stroke="{_rgb(PALETTE.get(b.colour, (120, 120, 120)))}" stroke-width="5"' if b.colour else ""
         parts.append(
-            f'<g class="bin" data-name="{escape(b.name)}"><rect x="{box.x}" y="{box.y}" width="{box.w}" '
-            f'height="{box.h}" fill="rgb(60,60,60)" rx="4"/>'
-            f'<text x="{box.x + 4}" y="{box.y + 14}" font-size="11" fill="white">{escape(b.name)}</text></g>'
+            f'<g class="bin" data-name="{escape(b.name)}" data-colour="{escape(b.colour)}"><rect x="{box.x}" '
+            f'y="{box.y}" width="{box.w}" height="{box.h}" fill="rgb(60,60,60)" rx="4"{rim}/>'
+            f'<text x="{box.x + 6}" y="{box.y + 16}" font-size="11" fill="white">{escape(b.name)}</text></g>'
         )
     for name, (x, y) in zip(sc.robot_locations, lay.locations, strict=True):
         parts.append(
@@ -70,7 +72,8 @@ def table_svg(world: World, state: State) -> str:
         parts.append(
             f'<g class="object" data-name="{escape(name)}" data-place="{escape(place_name(world, state.where[o]))}">'
             f'<rect x="{x - 9}" y="{y - 9}" width="18" height="18" fill="{_rgb(object_colour(world, o))}" '
-            f'stroke="black"/><text x="{x}" y="{y + 22}" font-size="10" text-anchor="middle">{escape(name)}</text></g>'
+            f'stroke="black"/><text x="{x}" y="{y + 22}" font-size="10" text-anchor="middle" stroke="white" '
+            f'stroke-width="3" paint-order="stroke">{escape(name)}</text></g>'
         )
     if state.offer_by >= 0:
         x, y = lay.offer(state)
