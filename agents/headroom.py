@@ -117,7 +117,9 @@ class JointModel:
         wait = table.wait[Agent.ROBOT]
         for dyn, human in zip(self.dynamics, self.humans, strict=True):
             seen = wait if getattr(human, "uses_robot_action", False) else -1
-            for state, q in layouts:
+            for n, (state, q) in enumerate(layouts):
+                if n % 64 == 0:  # a planner-driven human answers each layout with a search
+                    self.budget.check(world, len(self.states), memory=n % 2048 == 0)
                 for h, p in human.distribution(world, state, seen):
                     if p > 0.0:
                         nxt, _, d = table.successor(state, Agent.HUMAN, h)
@@ -151,7 +153,11 @@ class JointModel:
         table = self.world.table
         wait = table.wait[Agent.ROBOT]
         bar = tqdm(
-            desc=f"headroom {self.world.scenario.name}: states", unit=" states", disable=not progress, file=sys.stderr
+            desc=f"headroom {self.world.scenario.name}: states",
+            unit=" states",
+            disable=not progress,
+            file=sys.stderr,
+            leave=False,
         )
         k = 0
         try:

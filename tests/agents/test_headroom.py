@@ -107,3 +107,12 @@ def test_a_bad_population_file_is_named_with_its_line(tmp_path: Path) -> None:
     code, _, err = run_main(["headroom", "--scenario", CROSSING, "--population", str(bad), "--out", str(tmp_path)])
     lines = error_lines(err)
     assert code == 2 and len(lines) == 1 and f"{bad}:6" in lines[0], err
+
+
+def test_over_its_budget_the_cli_refuses_in_one_line(tmp_path: Path) -> None:
+    # the crossing's model has 4 states at least (the layout and three answers): 2 is too few
+    code, _, err = run_main(
+        ["headroom", "--scenario", CROSSING, "--humans", G, "--max-states", "2", "--out", str(tmp_path / "o")]
+    )
+    lines = error_lines(err)
+    assert code == 2 and len(lines) == 1 and "max_states=2" in lines[0], err
