@@ -12,12 +12,17 @@ RAY_VENV ?= .venv-ray
 
 .PHONY: setup reproduce test test-slow test-browser test-ray test-integrations test-mutation mutation-full lint bench clean
 
+# Set-up prints a step counter and pip's own progress (one line per package collected,
+# a bar per download), so the minutes of installing are never silent.
 $(BIN)/.installed: pyproject.toml
-	@echo "setup: creating $(VENV) and installing hg-marl with its dev, sb3 and video extras"
-	@echo "setup: numpy, gymnasium, pettingzoo, matplotlib, pandas, torch==2.13.0 (CPU), stable-baselines3, sb3-contrib, imageio-ffmpeg, pytest, ruff, mypy, nox (1-3 min)"
+	@echo "setup [1/3]: creating $(VENV)"
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet --progress-bar off -e ".[dev,sb3,video]"
+	@echo "setup [2/3]: upgrading pip"
+	$(BIN)/python -m pip install --upgrade --progress-bar on pip
+	@echo "setup [3/3]: installing hg-marl with its dev, sb3 and video extras: numpy, gymnasium, pettingzoo,"
+	@echo "             matplotlib, pandas, torch==2.13.0 (CPU), stable-baselines3, sb3-contrib, imageio-ffmpeg,"
+	@echo "             pytest, ruff, mypy, nox (1-7 min; pip prints each package as it goes)"
+	$(BIN)/python -m pip install --progress-bar on -e ".[dev,sb3,video]"
 	@echo "setup: done ($(VENV))"
 	touch $@
 

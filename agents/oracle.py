@@ -33,16 +33,17 @@ an action back). Humans whose rule picks "the first object" by index (``lazy``,
 ``no_handover``, ``adversarial``) are not equivariant and get the full model.
 
 Size and budget (``python benchmarks/oracle_budget.py``, each solve in a fresh process
-on the shared 2-core machine, wall and CPU seconds). ``paper2015``: under 1 s for every
+on the shared, loaded 2-core machine, wall seconds). ``paper2015``: under 1 s for every
 bundled human. ``roboergosum`` (6 objects, 5,040 layouts, 140 canonical): ``random``
-17k states, 3 s; ``cooperative`` 6.5k states, 27 s (20 s CPU; 49 s and 192k states
-without the reduction); ``noisy`` 17k states, 58 s (27 s CPU; 353-396 s and 4.5 GB
-before); ``no_handover`` 6 s, ``adversarial`` 7 s, ``lazy`` 17 s (251k states, 0.6 GB).
-Generated 8-object tables (``generated:objects=8``, 1.8M layouts): ``random`` in 2-3 s;
-the planner-driven humans need one A* search per mid-cycle state (tens of ms each with 8
-objects) and exceed the budget; the non-equivariant humans' 1.8M layouts are refused
-before enumeration. A solve stops with a one-line :class:`OracleTooLarge` naming the
-budget beyond ``max_seconds`` (default 60 s), ``max_memory`` (4 GB resident),
+17k states, 3 s; ``cooperative`` 6.5k states, 20-27 s (58 s and 192k states without the
+reduction); ``noisy`` 17k states, 48-58 s (353-396 s and 4.5 GB before); ``no_handover``
+6 s, ``adversarial`` 7 s, ``lazy`` 17-23 s (251k states, 0.6 GB). Generated 8-object
+tables (1.8M layouts): ``random`` 2-3 s with one bin, 36-47 s CPU with two (428k states);
+the planner-driven humans need one A* search per mid-cycle state (tens of ms each) and
+exceed the budget; the non-equivariant humans' 1.8M layouts are refused before
+enumeration. A solve stops with a one-line :class:`OracleTooLarge` naming the
+budget beyond ``max_seconds`` (default 60 s of CPU time: a loaded machine does not
+change the verdict), ``max_memory`` (4 GB resident),
 ``max_states`` or the kernel's available memory falling under 512 MB, so a study falls
 back to the best robot as reference. The build is pure Python and shows a progress bar
 with the states explored and known (``progress=True``, the CLI's default).
@@ -266,7 +267,9 @@ def _human_policy(human: Any, world: World) -> Any:
 
 
 DEFAULT_SECONDS = 60.0
-"""The default wall-time budget of one oracle build and solve."""
+"""The default CPU-time budget (seconds) of one oracle build and solve: CPU, not wall time,
+so that whether a solve is refused (and a study stores the refusal) does not depend on
+what else the machine runs."""
 DEFAULT_MEMORY = 4 * 2**30
 """The default resident memory budget (bytes) of the process during a solve."""
 
@@ -284,7 +287,7 @@ def _rss() -> int:
 
 @dataclass(frozen=True)
 class Budget:
-    """What one oracle solve may spend: wall seconds and resident memory (None: no limit).
+    """What one oracle solve may spend: CPU seconds and resident memory (None: no limit).
 
     Beyond either it stops with :class:`OracleTooLarge` naming the budget, so a caller
     (a study) can fall back to another reference instead of waiting or swapping.
@@ -292,14 +295,14 @@ class Budget:
 
     seconds: float | None = DEFAULT_SECONDS
     memory: int | None = DEFAULT_MEMORY
-    start: float = field(default_factory=time.perf_counter)
+    start: float = field(default_factory=time.process_time)
 
     def check(self, world: World, n_states: int, memory: bool = True) -> None:
         """Raise :class:`OracleTooLarge` if the solve is over its budget (``memory``: check it too)."""
-        spent = time.perf_counter() - self.start
+        spent = time.process_time() - self.start
         if self.seconds is not None and spent > self.seconds:
             raise OracleTooLarge(
-                f"the oracle for {world.scenario.name!r} is over its budget of {self.seconds:g} s "
+                f"the oracle for {world.scenario.name!r} is over its budget of {self.seconds:g} s of CPU time "
                 f"({n_states} states after {spent:.0f} s); raise --max-seconds or use the best robot as reference"
             )
         if memory and self.memory is not None and _rss() > self.memory:
@@ -407,6 +410,8 @@ class _Model:
         )
         try:
             self._explore(bar)
+            bar.update(len(self.states) - bar.n)  # the last, partial block of states
+            bar.set_postfix(known=len(self.states))
         finally:
             bar.close()
 
@@ -519,7 +524,7 @@ def oracle_rate(
         symmetry: keep states up to interchangeable objects (canonical order). None: when
             the human says it is ``equivariant`` (its answer at a relabelled state is its
             answer relabelled), the only case where this is exact.
-        max_seconds: wall-time budget of the build and solve (None: unlimited).
+        max_seconds: CPU-time budget of the build and solve in seconds (None: unlimited).
         max_memory: resident-memory budget in bytes (None: unlimited).
 
     Raises:
@@ -527,7 +532,7 @@ def oracle_rate(
         OracleTooLarge: the model exceeds ``max_states`` or the time or memory budget.
     """
     start = time.perf_counter()
-    budget = Budget(max_seconds, max_memory, start)
+    budget = Budget(max_seconds, max_memory)
     world = scenario if isinstance(scenario, World) else World(scenario, durations)
     policy_human = _human_policy(human, world)
     relabel = Relabel(world)
@@ -550,7 +555,7 @@ def oracle_rate(
     )
     regen: list[tuple[State, float, float]] = []
     for i, (table, q) in enumerate(first_replies):
-        budget.check(world, i, memory=i % 2048 == 0)
+        budget.check(world, 0, memory=i % 2048 == 0)  # no state explored yet
         regen += [(nxt, q * p, tau) for nxt, p, tau in model.replies(table, wait, wait_index)]
     model.build([s for s, _ in layouts] + [s for s, _, _ in regen])
     n = len(model.states)
@@ -619,8 +624,8 @@ class OracleRobot:
     """A robot that plays the oracle's optimal policy (greedy in its values).
 
     Off its model (a state the model never reaches: the partner is not the human the
-    policy was solved against) it does not wait for a state it knows: it asks the
-    planner (cooperative model) for the robot's next move; when that move is a ``wait``
+    policy was solved against) it does not wait for a known state to come back: it asks
+    the planner (cooperative model) for the robot's next move; when that move is a ``wait``
     on an unfinished table at the state of its previous off-model decision (nothing
     changed: the partner does not do what the plan waits for), it tries the feasible
     non-wait actions in turn, so it never waits forever. ``off_model`` counts these

@@ -28,6 +28,13 @@ partner's action (index and name), the cycle's events (one ``"; "``-joined strin
 solved, effort and idle time. Views charge no decision time. Seeding: ``reset(seed=s)``
 seeds the table and the partner's own generator from ``s``.
 
+Batched seats: ``gymnasium.make_vec(id, num_envs=N, vectorization_mode="vector_entry_point",
+...)`` reaches :func:`robot_vector_env` / :func:`human_vector_env`, ``N`` tables in one
+``hg_marl.envs.batched.BatchedTable``: the robot's seat with the human(s) compiled
+(``agents/compiled.py``; a list is a :class:`CompiledPopulation`), the human's seat with
+one live robot per table (:class:`LiveRobots`: the planner robot revises its model of the
+human from history, so it is not a function of the state and is not compiled).
+
 Humans: a registry name (``"lazy:p_idle=0.5"``), an Actor, or a list of them (a
 population; one is drawn per episode with the view's generator). Robots likewise, with
 names from ``hg_marl.agents.robots.make_robot`` (``planner``, ``habit``, ``hybrid``,
@@ -301,3 +308,179 @@ class HumanView(_View):
         reward = task_reward - self.effort_weight * work
         info = self._info(robot_action, events, work=work, task_reward=task_reward)
         return self._obs(), reward, done, truncated, info
+
+
+# ---- batched seats (Gymnasium's vector entry points) -----------------------------------
+class LiveRobots:
+    """Robot actors playing the human's batched seat, one per table (the ``ArrayPartner`` protocol).
+
+    Each table has its own actor (a robot may keep state between turns); the turn it sees
+    carries the state, the facts and mask, the clock and the tasks solved, but no events
+    or reward: robots that learn from those (``habit``, ``hybrid``) do not fit a batched
+    seat, deterministic ones (``planner``, ``random``) do.
+    """
+
+    def __init__(self, world: World, robot: str | Actor | Sequence[str | Actor], num_envs: int) -> None:
+        self.world = world
+        specs = as_list(robot)
+        self.name = str(getattr(specs[0], "name", specs[0]))
+        self.specs = specs
+        # a name builds one actor per table; an instance is shared by the tables it plays
+        self.actors = [make_robot_actor(specs[i % len(specs)]) for i in range(num_envs)]
+
+    def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
+        """Start the actors of tables ``rows`` with generators drawn from ``rng``."""
+        for i in rows:
+            self.actors[int(i)].reset(self.world, Agent.ROBOT, np.random.default_rng(int(rng.integers(2**63 - 1))))
+
+    def act(self, batch: Any, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        """Each table's robot acts on its own turn."""
+        from hg_marl.policy import Turn
+
+        out = np.empty(len(batch), dtype=np.int64)
+        rows = getattr(batch, "rows", np.arange(len(batch)))
+        for j in range(len(batch)):
+            state = batch.state(j)
+            obs = {"observation": self.world.facts(state), "action_mask": self.world.mask(state, Agent.ROBOT)}
+            out[j] = int(
+                self.actors[int(rows[j])].act(Turn(world=self.world, state=state, agent=Agent.ROBOT, observation=obs))
+            )
+        return out
+
+
+class CompiledPopulation:
+    """Compiled humans as one partner: a member drawn per table at each of its resets (``ArrayPartner``)."""
+
+    def __init__(self, members: Sequence[Any]) -> None:
+        self.members = list(members)
+        self.name = "+".join(m.name for m in self.members)
+        self.member: np.ndarray = np.zeros(0, dtype=np.int64)
+        if all(hasattr(m, "answer") for m in self.members):
+            # the members' tables end to end: an entry of member k is offset by the entries before it
+            sizes = [len(m.actions) for m in self.members]
+            self.offset = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
+            self.actions = np.concatenate([m.actions for m in self.members])
+            self.outcome = {k: np.concatenate([m.outcome[k] for m in self.members]) for k in self.members[0].outcome}
+
+    def answer(self, batch: Any, seen: np.ndarray, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+        """(entry in the joined tables, found) per table: each table's member answers."""
+        who = self.member[batch.rows]
+        pos = np.zeros(len(batch), dtype=np.int64)
+        found = np.zeros(len(batch), dtype=bool)
+        for k, member in enumerate(self.members):
+            sel = np.flatnonzero(who == k)
+            if len(sel):
+                p, f = member.answer(self._part(batch, sel), seen[sel], rng)
+                pos[sel], found[sel] = p + self.offset[k], f
+        return pos, found
+
+    def fall_back(
+        self, batch: Any, seen: np.ndarray, rng: np.random.Generator, out: np.ndarray, found: np.ndarray
+    ) -> np.ndarray:
+        """The live members answer the tables not found (counted per member)."""
+        who = self.member[batch.rows]
+        for k, member in enumerate(self.members):
+            sel = np.flatnonzero((who == k) & ~found)
+            if len(sel):
+                out[sel] = member.fall_back(self._part(batch, sel), seen[sel], rng, out[sel], found[sel])
+        return out
+
+    @staticmethod
+    def _part(batch: Any, sel: np.ndarray) -> Any:
+        from hg_marl.envs.batched import BatchState
+
+        return BatchState(
+            batch.where[sel], batch.robot_at[sel], batch.offer_by[sel], batch.offer_obj[sel], batch.rows[sel]
+        )
+
+    @property
+    def fallbacks(self) -> int:
+        """Live answers over all members."""
+        return sum(m.fallbacks for m in self.members)
+
+    def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
+        """Draw tables ``rows``' members uniformly."""
+        if len(self.member) <= int(rows.max(initial=-1)):
+            self.member = np.concatenate(
+                [self.member, np.zeros(int(rows.max()) + 1 - len(self.member), dtype=np.int64)]
+            )
+        self.member[rows] = rng.integers(len(self.members), size=len(rows))
+
+    def act(self, batch: Any, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        """Each table's member answers (one batched look-up per member)."""
+        who = self.member[batch.rows]
+        out = np.empty(len(batch), dtype=np.int64)
+        for k, member in enumerate(self.members):
+            sel = np.flatnonzero(who == k)
+            if len(sel):
+                out[sel] = member.act(self._part(batch, sel), seen[sel], rng)
+        return out
+
+
+def compiled_humans(
+    world: World, human: str | Actor | Sequence[str | Actor], cache: Any = True, progress: bool = False
+) -> Any:
+    """One compiled human, or a :class:`CompiledPopulation` for a list of them."""
+    from hg_marl.agents.compiled import compile_human
+
+    members = [compile_human(world, h, cache=cache, progress=progress) for h in as_list(human)]
+    return members[0] if len(members) == 1 else CompiledPopulation(members)
+
+
+def robot_vector_env(
+    num_envs: int = 1,
+    scenario: str | Scenario = "paper2015",
+    human: str | Actor | Sequence[str | Actor] = "cooperative",
+    continuing: bool = False,
+    max_cycles: int | None = 500,
+    time_budget: float | None = None,
+    durations: Durations | None = None,
+    autoreset_mode: str = "next_step",
+    device: Any = None,
+    cache: Any = True,
+    progress: bool = False,
+) -> Any:
+    """The robot's seat batched, the human compiled.
+
+    Gymnasium reaches it as ``gymnasium.make_vec(ROBOT_VIEW_ID, num_envs=N,
+    vectorization_mode="vector_entry_point", human=...)``.
+    """
+    from hg_marl.envs.batched import BatchedTable, check_batch
+
+    world = World(scenario, durations)
+    check_batch(world, num_envs)
+    partner = compiled_humans(world, human, cache, progress)
+    return BatchedTable(
+        partner, num_envs, world, Agent.ROBOT, continuing, max_cycles, time_budget, 0.0, autoreset_mode, device=device
+    )
+
+
+def human_vector_env(
+    num_envs: int = 1,
+    scenario: str | Scenario = "paper2015",
+    robot: str | Actor | Sequence[str | Actor] = "planner",
+    effort_weight: float = 0.0,
+    continuing: bool = False,
+    max_cycles: int | None = 500,
+    time_budget: float | None = None,
+    durations: Durations | None = None,
+    autoreset_mode: str = "next_step",
+    device: Any = None,
+) -> Any:
+    """The human's seat batched, a live robot per table (see :class:`LiveRobots`)."""
+    from hg_marl.envs.batched import BatchedTable, check_batch
+
+    world = World(scenario, durations)
+    n = check_batch(world, num_envs)
+    return BatchedTable(
+        LiveRobots(world, robot, n),
+        n,
+        world,
+        Agent.HUMAN,
+        continuing,
+        max_cycles,
+        time_budget,
+        effort_weight,
+        autoreset_mode,
+        device=device,
+    )

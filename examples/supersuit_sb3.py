@@ -4,7 +4,7 @@ The turn-based parallel env, homogenised (shared spaces, agent-id feature) and f
 with the action mask in ``infos``, becomes an SB3 ``VecEnv`` through SuperSuit's
 ``pettingzoo_env_to_vec_env_v1`` + ``concat_vec_envs_v1``: each agent is one sub-env, so
 both seats train one parameter-shared policy. sb3-contrib reads masks through
-``env_method("action_masks")``; :class:`InfoMasks` answers it from the last infos and
+``env_method("action_masks")``; ``hg_marl.wrappers.sb3.InfoMasks`` answers it from the last infos and
 counts any action sent outside the mask it served (``outside_mask``, 0 when honoured).
 
 In the parallel view the human's mask is the one at the start of the cycle: the robot
@@ -22,56 +22,13 @@ import argparse
 import time
 from typing import Any
 
-import numpy as np
 import supersuit as ss
 import torch
 from sb3_contrib import MaskablePPO
-from stable_baselines3.common.vec_env import VecEnvWrapper
 
 import hg_marl
 from hg_marl.wrappers import AUDITS, audit_totals, audit_v0, flatten_v0, homogenize_v0, to_parallel
-
-
-class InfoMasks(VecEnvWrapper):
-    """Serves ``env_method("action_masks")`` (sb3-contrib's hook) from the masks in the last infos."""
-
-    def __init__(self, venv: Any) -> None:
-        super().__init__(venv)
-        self._masks = np.ones((self.num_envs, int(self.action_space.n)), dtype=bool)
-        self.outside_mask = 0
-        """Actions SB3 sent that the mask it was served ruled out (the check that it honours them)."""
-
-    def step_async(self, actions: np.ndarray) -> None:
-        self.outside_mask += int((~self._masks[np.arange(self.num_envs), actions]).sum())
-        self.venv.step_async(actions)
-
-    def _keep(self, infos: list[dict[str, Any]]) -> None:
-        for i, info in enumerate(infos):
-            if "action_mask" in info:
-                self._masks[i] = np.asarray(info["action_mask"], dtype=bool)
-
-    def reset(self) -> Any:
-        obs = self.venv.reset()
-        self._keep(self.venv.reset_infos)
-        return obs
-
-    def step_wait(self) -> Any:
-        obs, rewards, dones, infos = self.venv.step_wait()
-        self._keep(infos)
-        return obs, rewards, dones, infos
-
-    def seed(self, seed: int | None = None) -> list[int | None]:
-        """SuperSuit's concatenated env has no ``seed``; the parallel env is seeded by ``main``."""
-        return [None] * self.num_envs
-
-    def has_attr(self, attr_name: str) -> bool:
-        """sb3-contrib asks whether the envs have ``action_masks`` before training."""
-        return attr_name == "action_masks"
-
-    def env_method(self, method_name: str, *args: Any, indices: Any = None, **kwargs: Any) -> list[Any]:
-        if method_name == "action_masks":
-            return list(self._masks)
-        return self.venv.env_method(method_name, *args, indices=indices, **kwargs)
+from hg_marl.wrappers.sb3 import InfoMasks
 
 
 def main(steps: int = 2048, seed: int = 0) -> dict[str, Any]:

@@ -25,5 +25,13 @@ def register_envs() -> None:
         pettingzoo.register("aec", AEC_ID, entry_point="hg_marl.envs.table_cleaning:env")
         pettingzoo.register("parallel", AEC_ID, entry_point="hg_marl.envs.parallel:parallel_env")
     if ROBOT_VIEW_ID not in gymnasium.registry:
-        gymnasium.register(ROBOT_VIEW_ID, entry_point="hg_marl.agents.views:RobotView")
-        gymnasium.register(HUMAN_VIEW_ID, entry_point="hg_marl.agents.views:HumanView")
+        gymnasium.register(
+            ROBOT_VIEW_ID,
+            entry_point="hg_marl.agents.views:RobotView",
+            vector_entry_point="hg_marl.agents.views:robot_vector_env",
+        )
+        gymnasium.register(
+            HUMAN_VIEW_ID,
+            entry_point="hg_marl.agents.views:HumanView",
+            vector_entry_point="hg_marl.agents.views:human_vector_env",
+        )

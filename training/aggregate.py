@@ -7,15 +7,25 @@ bootstrap resamples seeds within every (human, scenario) (95% percentile interva
 reproducible). Computed per robot: IQM and mean with intervals; per pair of robots, the
 probability that one improves on the other (on the tasks both played); and, for
 held-out studies, the generalisation gap (IQM on train partners minus IQM on test
-partners) with its interval. Nothing here re-implements rliable; this module only
-shapes the score table into its matrices.
+partners) with its interval.
+
+The point estimates are rliable's metrics. The intervals follow rliable's method
+(stratified bootstrap over runs, percentile intervals) with the resampling vectorised
+(:func:`stratified_bootstrap`): rliable's ``get_interval_estimates`` calls the statistic
+once per replication, and its probability of improvement runs scipy's Mann-Whitney U per
+task per replication (about 4 ms), which made 243 s of a 311 s one-seed cross-play
+study; vectorised, the whole aggregate takes well under a second
+(tests/training/test_aggregate.py checks the intervals against rliable's).
+
+Intervals need seeds: with one seed every resample is the data itself (a zero-width
+interval that says nothing), so none is computed; with fewer than
+:data:`MIN_CI_SEEDS` seeds per task they are computed and flagged
+(``aggregate.json``'s ``bootstrap.flag``, which report.md and the CLI print).
 """
 
 from __future__ import annotations
 
-import contextlib
-import warnings
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from itertools import combinations
 from typing import Any
 
@@ -24,11 +34,14 @@ import pandas as pd
 
 REPS = 2000
 """Bootstrap replications of every interval."""
-POI_REPS = 200
-"""Replications of each probability-of-improvement interval (a Mann-Whitney U per task per
-replication: the costly one, ~20 pairs x 7 humans in the cross-play study)."""
+POI_REPS = 2000
+"""Replications of each probability-of-improvement interval (vectorised: as cheap as the others)."""
 SEED = 0
-"""Seed of the bootstrap's RandomState."""
+"""Seed of the bootstrap's generators."""
+MIN_CI_SEEDS = 5
+"""Seeds per task below which an interval is flagged: with n seeds a task's resample takes
+at most C(2n-1, n) distinct values (n = 2: 3, n = 4: 35), too few for a 95% percentile
+interval to mean what it says (with n = 1 there is one, and no interval is computed)."""
 
 
 def score_matrix(
@@ -55,38 +68,86 @@ def _tasks(frame: pd.DataFrame, robot: str) -> list[tuple[str, str]]:
     return list(dict.fromkeys(zip(mine["human"], mine["scenario"], strict=True)))
 
 
-def _interval(
-    data: dict[str, Any], func: Callable[..., np.ndarray], reps: int
-) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray]]:
-    from rliable import library as rly
-
-    with warnings.catch_warnings(), _seeded_global_rng():
-        # arch announces that RandomState is deprecated; rliable 1.2 still passes one, which is what we want
-        warnings.filterwarnings("ignore", category=FutureWarning, module="arch")
-        return rly.get_interval_estimates(data, func, reps=reps, random_state=np.random.RandomState(SEED))
+def seeds_per_task(frame: pd.DataFrame) -> int:
+    """The fewest seeds any (robot, human, scenario) with a score has (0: no score at all)."""
+    scored = frame[frame["score"].notna()]
+    if scored.empty:
+        return 0
+    return int(scored.groupby(["robot", "human", "scenario"], sort=False)["score"].count().min())
 
 
-@contextlib.contextmanager
-def _seeded_global_rng() -> Iterator[None]:
-    """Seed numpy's global generator for the block, then put its state back.
+def ci_flag(seeds: int) -> str:
+    """What a reader must know about intervals from ``seeds`` seeds per task ("" when nothing)."""
+    if seeds <= 1:
+        return "1 seed per task: no confidence interval can be computed (every resample is the data itself)"
+    if seeds < MIN_CI_SEEDS:
+        return (
+            f"only {seeds} seeds per task (fewer than {MIN_CI_SEEDS}): the 95% intervals are too coarse "
+            "to trust (a task's resample takes few distinct values)"
+        )
+    return ""
 
-    rliable 1.2's stratified bootstrap draws its indices with ``np.random.choice`` (the
-    global generator) whatever ``random_state`` it is given, so without this the
-    intervals would change from call to call.
+
+def iqm(x: np.ndarray) -> np.ndarray:
+    """Interquartile mean of the last two axes (runs x tasks), as rliable's ``aggregate_iqm``.
+
+    scipy's ``trim_mean(x, 0.25, axis=None)``: drop the ``int(0.25 N)`` lowest and highest
+    of the N scores, average the rest; leading axes are bootstrap replications.
     """
-    state = np.random.get_state()
-    np.random.seed(SEED)
-    try:
-        yield
-    finally:
-        np.random.set_state(state)
+    flat = np.sort(x.reshape(*x.shape[:-2], -1), axis=-1)
+    cut = int(0.25 * flat.shape[-1])
+    return np.asarray(flat[..., cut : flat.shape[-1] - cut].mean(axis=-1))
+
+
+def mean(x: np.ndarray) -> np.ndarray:
+    """Mean over tasks of the mean over runs (rliable's ``aggregate_mean``), over the last two axes."""
+    return np.asarray(x.mean(axis=-2).mean(axis=-1))
+
+
+def improvement(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """P(X > Y) per task averaged over tasks (rliable's ``probability_of_improvement``).
+
+    Per task, the Mann-Whitney U of x over y divided by ``n_x n_y``: the share of (x, y)
+    run pairs where x wins, ties counting one half. ``x`` is (..., runs_x, tasks), ``y``
+    (..., runs_y, tasks).
+    """
+    diff = x[..., :, None, :] - y[..., None, :, :]
+    wins = (diff > 0) + 0.5 * (diff == 0)
+    return np.asarray(wins.mean(axis=(-3, -2)).mean(axis=-1))
+
+
+Statistic = Callable[..., np.ndarray]
+"""Maps matrices (..., runs, tasks) to (..., k) values; the leading axes are replications."""
+
+
+def stratified_bootstrap(matrices: Sequence[np.ndarray], statistic: Statistic, reps: int) -> np.ndarray:
+    """95% percentile interval (2 x k) of ``statistic`` under rliable's stratified bootstrap.
+
+    Each matrix's runs are resampled with replacement within every task (column),
+    independently per matrix (rliable's ``StratifiedIndependentBootstrap``), all ``reps``
+    replications at once. A fresh generator seeded with :data:`SEED` per call, so an
+    interval depends only on its own data (not on which other robots are in the study).
+    """
+    rng = np.random.default_rng(SEED)
+    samples = []
+    for m in matrices:
+        index = rng.integers(0, m.shape[0], size=(reps, *m.shape))
+        samples.append(np.take_along_axis(m[None], index, axis=1))
+    values = np.asarray(statistic(*samples)).reshape(reps, -1)
+    return np.asarray(np.percentile(values, [2.5, 97.5], axis=0))
+
+
+def _iqm_and_mean(x: np.ndarray) -> np.ndarray:
+    return np.stack([iqm(x), mean(x)], axis=-1)
 
 
 def iqm_and_mean(scores: np.ndarray) -> np.ndarray:
-    """``[IQM, mean]`` of a score matrix (rliable's metrics)."""
-    from rliable import metrics
+    """``[IQM, mean]`` of a score matrix (rliable's metrics, vectorised: :func:`iqm`, :func:`mean`)."""
+    return _iqm_and_mean(scores)
 
-    return np.array([metrics.aggregate_iqm(scores), metrics.aggregate_mean(scores)])
+
+def _pair(values: np.ndarray | None, k: int) -> list[float] | None:
+    return None if values is None else [float(values[0, k]), float(values[1, k])]
 
 
 def aggregate(
@@ -94,79 +155,84 @@ def aggregate(
 ) -> dict[str, Any]:
     """``aggregate.json``: per robot IQM/mean with CIs, pairwise improvement, generalisation gap.
 
+    Intervals are None with one seed per task (see :func:`ci_flag`).
+
     Args:
         frame: the score table (``scores.csv``'s columns).
         groups: partner label -> ``train``/``test`` (held-out studies), else None.
         reps: bootstrap replications of the IQM, mean and gap intervals.
         poi_reps: bootstrap replications of the probability-of-improvement intervals.
     """
-    from rliable import metrics
-
+    seeds = seeds_per_task(frame)
+    with_ci = seeds > 1
     robots = list(dict.fromkeys(frame["robot"]))
     matrices = {r: score_matrix(frame, r) for r in robots}
     matrices = {r: m for r, m in matrices.items() if m.size}
-    point, ci = _interval(matrices, iqm_and_mean, reps) if matrices else ({}, {})
     out: dict[str, Any] = {
         "robots": {},
         "improvement": {},
-        "bootstrap": {"reps": reps, "poi_reps": poi_reps, "seed": SEED, "ci": 0.95},
+        "bootstrap": {
+            "reps": reps if with_ci else 0,
+            "poi_reps": poi_reps if with_ci else 0,
+            "seed": SEED,
+            "ci": 0.95,
+            "seeds_per_task": seeds,
+            "flag": ci_flag(seeds),
+        },
     }
     for r in robots:
         if r not in matrices:
             out["robots"][r] = {"iqm": None, "iqm_ci": None, "mean": None, "mean_ci": None, "runs": 0}
             continue
-        p, c = point[r], ci[r]
+        p = iqm_and_mean(matrices[r])
+        c = stratified_bootstrap([matrices[r]], _iqm_and_mean, reps) if with_ci else None
         out["robots"][r] = {
             "iqm": float(p[0]),
-            "iqm_ci": [float(c[0, 0]), float(c[1, 0])],
+            "iqm_ci": _pair(c, 0),
             "mean": float(p[1]),
-            "mean_ci": [float(c[0, 1]), float(c[1, 1])],
+            "mean_ci": _pair(c, 1),
             "runs": int(matrices[r].size),
         }
-    pairs: dict[str, list[np.ndarray]] = {}
+    tasks = {r: _tasks(frame, r) for r in matrices}
     for a, b in combinations(list(matrices), 2):
-        common = [t for t in _tasks(frame, a) if t in set(_tasks(frame, b))]
-        if common:
-            pairs[f"{a}>{b}"] = [score_matrix(frame, a, common), score_matrix(frame, b, common)]
-    if pairs:
-        p_point, p_ci = _interval(pairs, lambda x, y: np.array([metrics.probability_of_improvement(x, y)]), poi_reps)
-        for name in pairs:
-            low, high = p_ci[name][:, 0]
-            out["improvement"][name] = {"p": float(p_point[name][0]), "ci": [float(low), float(high)]}
+        theirs = set(tasks[b])
+        common = [t for t in tasks[a] if t in theirs]
+        if not common:
+            continue
+        # the columns of the robots' matrices for the common tasks (no new pass over the frame)
+        x = matrices[a][:, [tasks[a].index(t) for t in common]]
+        y = matrices[b][:, [tasks[b].index(t) for t in common]]
+        c = stratified_bootstrap([x, y], improvement, poi_reps) if with_ci else None
+        out["improvement"][f"{a}>{b}"] = {"p": float(improvement(x, y)), "ci": _pair(c, 0)}
     if groups and {"train", "test"} <= set(groups.values()):
-        out["generalisation"] = generalisation_gap(frame, groups, reps)
-    out["br_prox"] = br_prox(frame, groups, reps)
+        out["generalisation"] = generalisation_gap(frame, groups, reps if with_ci else 0)
+    out["br_prox"] = br_prox(frame, groups, reps if with_ci else 0)
     return out
 
 
-def generalisation_gap(frame: pd.DataFrame, groups: dict[str, str], reps: int = REPS) -> dict[str, Any]:
-    """Per robot: IQM on train partners, on test partners, and their difference with a CI."""
-    from rliable import metrics
+def _gap(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    a, b = iqm(x), iqm(y)
+    return np.stack([a, b, a - b], axis=-1)
 
+
+def generalisation_gap(frame: pd.DataFrame, groups: dict[str, str], reps: int = REPS) -> dict[str, Any]:
+    """Per robot: IQM on train partners, on test partners, and their difference with a CI (None: reps 0)."""
     train = frame[frame["human"].map(groups) == "train"]
     test = frame[frame["human"].map(groups) == "test"]
-    data = {}
+    out = {}
     for r in dict.fromkeys(frame["robot"]):
         a, b = score_matrix(train, r), score_matrix(test, r)
-        if a.size and b.size:
-            data[r] = [a, b]
-    if not data:
-        return {}
-
-    def train_test_gap(x: np.ndarray, y: np.ndarray) -> np.ndarray:
-        a, b = metrics.aggregate_iqm(x), metrics.aggregate_iqm(y)
-        return np.array([a, b, a - b])
-
-    point, ci = _interval(data, train_test_gap, reps)
-    return {
-        r: {
-            "train_iqm": float(point[r][0]),
-            "test_iqm": float(point[r][1]),
-            "gap": float(point[r][2]),
-            "gap_ci": [float(ci[r][0, 2]), float(ci[r][1, 2])],
+        if not (a.size and b.size):
+            continue
+        point = _gap(a, b)
+        ci = stratified_bootstrap([a, b], _gap, reps) if reps else None
+        out[r] = {
+            "train_iqm": float(point[0]),
+            "test_iqm": float(point[1]),
+            "gap": float(point[2]),
+            "gap_ci": _pair(ci, 2),
         }
-        for r in data
-    }
+    return out
 
 
 def br_prox(frame: pd.DataFrame, groups: dict[str, str] | None = None, reps: int = REPS) -> list[dict[str, Any]]:
@@ -189,35 +255,42 @@ def br_prox(frame: pd.DataFrame, groups: dict[str, str] | None = None, reps: int
                 if m.size:
                     name = f"{robot}|{scenario}|{group}"
                     data[name], keys[name] = m, (robot, str(scenario), str(group))
-    if not data:
-        return []
-    from rliable import metrics
-
-    point, ci = _interval(data, lambda x: np.array([metrics.aggregate_iqm(x)]), reps)
-    return [
-        {
-            "robot": keys[n][0],
-            "scenario": keys[n][1],
-            "split": keys[n][2],
-            "iqm": float(point[n][0]),
-            "ci": [float(ci[n][0, 0]), float(ci[n][1, 0])],
-            "runs": int(data[n].size),
-        }
-        for n in data
-    ]
+    out = []
+    for n, m in data.items():
+        c = stratified_bootstrap([m], iqm, reps) if reps else None
+        robot, scenario, group = keys[n]
+        point = float(np.asarray(iqm(m)).reshape(-1)[0])
+        out.append(
+            {"robot": robot, "scenario": scenario, "split": group, "iqm": point, "ci": _pair(c, 0), "runs": int(m.size)}
+        )
+    return out
 
 
 Curves = dict[str, np.ndarray]
 
 
+def profile(x: np.ndarray, taus: np.ndarray) -> np.ndarray:
+    """Fraction of runs with score > tau, for each tau (rliable's score distribution), over the last two axes."""
+    return np.asarray((x[..., None] > taus).mean(axis=(-3, -2)))
+
+
 def profiles(frame: pd.DataFrame, taus: np.ndarray, reps: int = 200) -> tuple[Curves, Curves]:
-    """Performance profiles (fraction of runs with score > tau) and their CIs, per robot (rliable).
+    """Performance profiles (fraction of runs with score > tau) and their 95% bands, per robot.
 
-    The bands come from a bootstrap seeded like every interval here.
+    rliable's ``create_performance_profile`` (score distributions over all runs and
+    tasks, stratified-bootstrap bands), vectorised like every interval here; with one
+    seed per task the band is the curve itself (there is nothing to resample).
     """
-    from rliable import library as rly
-
-    matrices = {r: score_matrix(frame, r) for r in dict.fromkeys(frame["robot"])}
-    matrices = {r: m for r, m in matrices.items() if m.size}
-    with _seeded_global_rng():
-        return rly.create_performance_profile(matrices, taus, reps=reps)
+    taus = np.asarray(taus, dtype=float)
+    curves: Curves = {}
+    bands: Curves = {}
+    for r in dict.fromkeys(frame["robot"]):
+        m = score_matrix(frame, r)
+        if not m.size:
+            continue
+        curves[r] = profile(m, taus)
+        if len(m) > 1:
+            bands[r] = stratified_bootstrap([m], lambda x: profile(x, taus), reps)
+        else:
+            bands[r] = np.stack([curves[r], curves[r]])
+    return curves, bands

@@ -90,9 +90,38 @@ def register_all(target: typer.Typer, names: tuple[str, ...] = COMMANDS) -> type
 register_all(app)
 
 
+class _AboveBars(logging.Handler):
+    """Prints a record's message on stderr above any live tqdm bar (``tqdm.write``)."""
+
+    def emit(self, record: logging.LogRecord) -> None:
+        import sys
+
+        from tqdm import tqdm
+
+        tqdm.write(self.format(record), file=sys.stderr)
+
+
+def _show_store_counts() -> None:
+    """Every command that uses the store prints its ``store: N runs made, M reused`` line.
+
+    The sweep logs it at INFO (library code prints nothing); the CLI shows that one
+    logger's INFO lines, once however often ``main`` runs in a process (the root's
+    handlers stay at WARNING, so the line is not printed twice).
+    """
+    sweep = logging.getLogger("hg_marl.training.sweep")
+    if not any(isinstance(h, _AboveBars) for h in sweep.handlers):
+        above = _AboveBars()
+        above.setFormatter(logging.Formatter("%(message)s"))
+        sweep.addHandler(above)
+    sweep.setLevel(logging.INFO)
+    for root_handler in logging.getLogger().handlers:  # the root's keep showing warnings only
+        root_handler.setLevel(logging.WARNING)
+
+
 def main() -> None:
     """Entry point of the ``hg-marl`` script."""
     logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
+    _show_store_counts()
     try:
         code = app(standalone_mode=False)
     except TyperException as exc:

@@ -97,14 +97,21 @@ def cells(study: Study) -> list[Cell]:
     return out
 
 
-def oracle_rate(store: Store, human: Actor, scenario: str, max_states: int) -> float | None:
-    """The oracle's tasks per hour for (human, scenario), cached in the store (None: not computable)."""
+def oracle_rate(store: Store, human: Actor, scenario: str, max_states: int, progress: bool = False) -> float | None:
+    """The oracle's tasks per hour for (human, scenario), cached in the store (None: not computable).
+
+    ``progress`` shows the solve's bar on stderr (a first solve can take tens of seconds).
+    """
     if not stationary(human):
         return None
+    from hg_marl.agents.oracle import DEFAULT_MEMORY, DEFAULT_SECONDS
+
     fields = {
         "human": {"name": human.name, "params": dict(human.params)},
         "scenario": scenario_content(scenario),
         "max_states": max_states,
+        # the budget decides whether a refusal (None) is stored: a changed budget recomputes
+        "budget": {"seconds": DEFAULT_SECONDS, "memory": DEFAULT_MEMORY},
     }
 
     def compute() -> float | None:
@@ -112,7 +119,7 @@ def oracle_rate(store: Store, human: Actor, scenario: str, max_states: int) -> f
         from hg_marl.agents.oracle import oracle_rate as solve
 
         try:
-            return float(solve(scenario, human.spec(), max_states=max_states).rate_per_hour)
+            return float(solve(scenario, human.spec(), max_states=max_states, progress=progress).rate_per_hour)
         except OracleTooLarge as exc:
             log.warning("oracle for %s on %s is over its budget (%s); using the best robot", human.label, scenario, exc)
             return None
@@ -125,7 +132,9 @@ def _rate(run: StoredRun) -> float:
     return run.rate
 
 
-def score_table(study: Study, plan: list[Cell], runs: list[StoredRun], store: Store) -> pd.DataFrame:
+def score_table(
+    study: Study, plan: list[Cell], runs: list[StoredRun], store: Store, progress: bool = False
+) -> pd.DataFrame:
     """``scores.csv``'s rows, in the study's order, and the references used."""
     rows = [
         {
@@ -143,7 +152,7 @@ def score_table(study: Study, plan: list[Cell], runs: list[StoredRun], store: St
     refs: dict[tuple[str, str], Reference] = {}
     for human in study.humans:
         for scenario in study.scenarios:
-            rate = oracle_rate(store, human, scenario, study.oracle_max_states)
+            rate = oracle_rate(store, human, scenario, study.oracle_max_states, progress)
             if rate is not None and rate > 0:
                 refs[(human.label, scenario)] = Reference(rate, "oracle")
                 continue
@@ -209,6 +218,7 @@ def evaluate(
     out: str | Path,
     backend: Backend | None = None,
     on_done: Callable[[Job, StoredRun], None] | None = None,
+    progress: bool = False,
 ) -> dict[str, Any]:
     """Run (or resume) ``study`` into ``out``; write every output; return the aggregates.
 
@@ -217,6 +227,7 @@ def evaluate(
         out: output folder; its ``store`` keeps the runs.
         backend: executor (default: in this process).
         on_done: called per cell as it is found or finished (progress bars).
+        progress: show the bar of each oracle solve not yet in the store (stderr).
     """
     from hg_marl.training.report import write_outputs
     from hg_marl.training.sweep import run_jobs, store_of
@@ -225,6 +236,6 @@ def evaluate(
     store = store_of(out)
     plan = cells(study)
     runs, stats = run_jobs([c.job for c in plan], store, backend or LocalBackend(1), on_done)
-    frame = score_table(study, plan, runs, store)
+    frame = score_table(study, plan, runs, store, progress)
     headrooms = {scenario: headroom_of(store, study, scenario) for scenario in study.scenarios}
     return write_outputs(study, frame, out, {"ran": stats.ran, "reused": stats.reused}, headrooms)

@@ -112,8 +112,8 @@ def run_jobs(
         backend.close()
         for stack in claims.values():
             stack.close()
-    if stats.ran or stats.reused:
-        log.info("sweep: %d runs made, %d reused", stats.ran, stats.reused)
+    if jobs:
+        log.info("store %s: %d runs made, %d reused", store.root, stats.ran, stats.reused)
     return [found[key] for key in keys], stats
 
 

@@ -123,13 +123,17 @@ def gantt_png(world: World, plan: Plan, path: str | Path, title: str = "") -> Pa
 
     fig = gantt_figure(world, plan, title)
     out = Path(path)
-    fig.savefig(out, dpi=120)
+    fig.savefig(out, dpi=120, bbox_inches="tight")
     plt.close(fig)
     return out
 
 
 def gantt_figure(world: World, plan: Plan, title: str = "") -> Any:
-    """The Gantt chart as a matplotlib figure (Agg backend); each bar's label fits inside it."""
+    """The Gantt chart as a matplotlib figure (Agg backend); each bar's label fits inside it.
+
+    Waits are hatched and labelled "wait" where the label fits; a legend below the chart
+    names every bar colour and arrow kind drawn.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
@@ -150,16 +154,20 @@ def gantt_figure(world: World, plan: Plan, title: str = "") -> Any:
     for agent in Agent:
         for step in plan.streams[agent]:
             kind = world.actions(agent)[step.action].kind
-            text = "" if kind is Kind.WAIT else step.name.replace("(", "\n", 1).rstrip(")").replace(",", ",\n")
+            text = "wait" if kind is Kind.WAIT else step.name.replace("(", "\n", 1).rstrip(")").replace(",", ",\n")
             labels.append((step.start, step.end, 1 - int(agent), text, kind))
-            if text:
+            if kind is not Kind.WAIT:
                 # a character of an 8-pt sans font is at most ~0.62 em wide; keep a margin
                 need = max(len(line) for line in text.split("\n")) * fontsize * 0.62 / 72 + 0.08
                 inches_per_second = max(inches_per_second, need / max(step.end - step.start, 1e-3))
     width = min(max(6.0, plan.duration * inches_per_second + 1.5), 60.0)
+    scale = (width - 1.5) / max(plan.duration, 1e-3)  # inches per second as drawn
+    wait_text = 4 * fontsize * 0.62 / 72 + 0.08
+    labels = [(a, b, y, t if k is not Kind.WAIT or (b - a) * scale >= wait_text else "", k) for a, b, y, t, k in labels]
     fig, ax = plt.subplots(figsize=(width, 3.2))
     for start, end, y, text, kind in labels:
-        ax.barh(y, end - start, left=start, color=colours[kind], edgecolor="black", height=0.7)
+        hatch = "/" if kind is Kind.WAIT else None
+        ax.barh(y, end - start, left=start, color=colours[kind], edgecolor="black", height=0.7, hatch=hatch)
         if text:
             ax.text((start + end) / 2, y, text, ha="center", va="center", fontsize=fontsize, linespacing=1.0)
     for link in plan.links:
@@ -176,5 +184,26 @@ def gantt_figure(world: World, plan: Plan, title: str = "") -> Any:
     ax.set_xlim(0, max(plan.duration, 1.0))
     ax.set_ylim(-0.6, 1.6)
     ax.set_title(title or f"plan: {plan.duration:.1f} s")
+    _legend(ax, colours, {kind for *_, kind in labels}, {link.kind for link in plan.links})
     fig.tight_layout()
     return fig
+
+
+def _legend(ax: Any, colours: dict[Kind, str], kinds: set[Kind], links: set[str]) -> None:
+    """What each bar colour and arrow means, below the chart (off the bars)."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    handles: list[Any] = [
+        Patch(facecolor=colours[k], edgecolor="black", hatch="/" if k is Kind.WAIT else None, label=k.name.lower())
+        for k in colours
+        if k in kinds
+    ]
+    arrows = {"handover": "black"}
+    handles += [
+        Line2D([], [], color=arrows.get(kind, "tab:red"), marker=">", label=f"{kind} link") for kind in sorted(links)
+    ]
+    ax.legend(
+        handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.28), ncol=min(len(handles), 8),
+        fontsize=8, frameon=False,
+    )  # fmt: skip

@@ -11,6 +11,7 @@ plan cache).
 
 from __future__ import annotations
 
+import functools
 from typing import Any
 
 from hg_marl.agents.partner import PartnerMonitor, PartnerPosterior
@@ -36,7 +37,7 @@ class Partnering:
         from hg_marl.agents.robots.base import make_planner
 
         self.world = world
-        self._make = lambda model: make_planner(world, planner_config, model)
+        self._make = functools.partial(make_planner, world, planner_config)  # picklable, unlike a lambda
         self.base: Any = human_model if human_model is not None else cooperative()
         self.monitor = PartnerMonitor()
         self.posterior = PartnerPosterior() if partner_aware else None

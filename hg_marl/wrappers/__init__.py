@@ -15,6 +15,10 @@ SuperSuit vector env -> SB3   ``to_parallel(flatten_v0(homogenize_v0(env()),   `
 CleanRL-style loops           ``to_parallel(flatten_v0(homogenize_v0(env())))``  obs dict
 ============================  ===============================================  ================
 
+SB3 adapters (``hg_marl.wrappers.sb3``, SB3 imported on demand): ``InfoMasks`` serves
+the masks SuperSuit's vector env carries in ``infos`` to sb3-contrib; ``BatchedVecEnv``
+makes the batched table (``hg_marl.envs.batched``) an SB3 ``VecEnv``.
+
 ``audit_v0`` (innermost) counts the actions each agent sent that its real mask ruled out.
 ``homogenize_v0`` gives every agent one ``Discrete`` action space padded with masked-out
 actions and one observation space with an agent-id feature; ``flatten_v0`` makes the
@@ -31,6 +35,15 @@ from hg_marl.envs.parallel import TurnBasedParallelEnv
 from hg_marl.wrappers.audit import AUDITS, MaskAuditWrapper, audit_totals, audit_v0
 from hg_marl.wrappers.flat import FlatObservationWrapper, flatten_v0
 from hg_marl.wrappers.homogenize import HomogenizeWrapper, homogenize_v0
+
+
+def __getattr__(name: str) -> object:
+    """The SB3 adapters (``InfoMasks``, ``BatchedVecEnv``, ``batched_vec_env``), imported on demand: SB3 is optional."""
+    if name in ("InfoMasks", "BatchedVecEnv", "batched_vec_env"):
+        from hg_marl.wrappers import sb3
+
+        return getattr(sb3, name)
+    raise AttributeError(f"module 'hg_marl.wrappers' has no attribute {name!r}")
 
 
 def to_parallel(env: AECEnv) -> TurnBasedParallelEnv:

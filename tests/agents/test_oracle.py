@@ -264,3 +264,12 @@ def test_memory_is_checked_again_every_16384_states(monkeypatch: pytest.MonkeyPa
         oracle_module.oracle_rate("roboergosum", "no_handover")  # 65k states: two checks on the way
     known = int(str(refused.value).split("stopped at ")[1].split(" states")[0])
     assert known > 32768
+
+
+def test_the_progress_bar_ends_at_the_models_state_count(capsys: pytest.CaptureFixture[str]) -> None:
+    # The bar counted states in blocks of 2048, so a model of a few hundred states ended at
+    # "0 states"; its last frame must read the model's count, explored and known alike.
+    result = oracle_rate("paper2015", "lazy", progress=True)
+    frames = capsys.readouterr().err.replace("\r", "\n").splitlines()
+    last = [f for f in frames if ": states" in f][-1]
+    assert f" {result.n_states} states" in last and f"known={result.n_states}" in last

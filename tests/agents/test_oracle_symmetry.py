@@ -111,7 +111,7 @@ def test_the_reduced_policy_plays_in_any_labelling() -> None:
 
 
 def test_beyond_its_time_budget_the_oracle_refuses_naming_the_budget() -> None:
-    with pytest.raises(OracleTooLarge, match=r"over its budget of 0\.001 s"):
+    with pytest.raises(OracleTooLarge, match=r"over its budget of 0\.001 s of CPU time"):
         oracle_rate("roboergosum", "lazy", max_seconds=0.001)
     with pytest.raises(OracleTooLarge, match=r"over its budget of .* GB of memory"):
         oracle_rate("paper2015", "lazy", max_memory=1)

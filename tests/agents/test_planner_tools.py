@@ -80,13 +80,31 @@ def test_gantt_png_labels_are_horizontal_and_fit_their_bars() -> None:
     ax = fig.axes[0]
     bars = [p.get_window_extent(renderer) for p in ax.patches]
     labels = [t for t in ax.texts if t.get_text()]
-    assert len(labels) == sum(1 for stream in plan.streams for s in stream if s.name != "wait")
+    named = [t for t in labels if t.get_text() != "wait"]
+    assert len(named) == sum(1 for stream in plan.streams for s in stream if s.name != "wait")
     for label in labels:
         assert label.get_rotation() == 0
         box = label.get_window_extent(renderer)
         assert any(b.x0 <= box.x0 and box.x1 <= b.x1 and b.y0 <= box.y0 and box.y1 <= b.y1 for b in bars), (
             label.get_text()
         )
+
+
+def test_gantt_png_has_a_legend_of_every_colour_and_arrow_off_the_bars() -> None:
+    from hg_marl.agents.planner.gantt import gantt_figure
+    from tests.figure_checks import legend_inside_data, legend_labels, overlapping_texts
+
+    world = World("paper2015")
+    plan = Planner(world).plan(world.initial_state(np.random.default_rng(0))).plan
+    assert plan is not None
+    fig = gantt_figure(world, plan)
+    drawn = {world.actions(a)[s.action].kind.name.lower() for a in Agent for s in plan.streams[a]}
+    # seed 0 (see the text legend test): picks, throws, a handover (give/take), gotos and waits
+    assert {"pick", "throw", "give", "take", "goto", "wait"} <= drawn
+    assert set(legend_labels(fig)) == drawn | {f"{link.kind} link" for link in plan.links}
+    assert legend_inside_data(fig) == [] and overlapping_texts(fig) == []
+    waits = [p for p in fig.axes[0].patches if p.get_hatch() == "/"]
+    assert len(waits) == sum(1 for a in Agent for s in plan.streams[a] if s.name == "wait")
 
 
 def test_plan_command(tmp_path) -> None:  # type: ignore[no-untyped-def]

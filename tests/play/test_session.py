@@ -58,8 +58,12 @@ def test_planner_game_solves_tasks_with_a_handover(tmp_path: Path) -> None:
     moves = play_until(session, 1)
     assert session.tasks_solved == 1 and "give(tape3)" in moves
     assert session.last_robot is not None and session.last_robot.expert == "planner"
-    result = replay_trace(session.close() or Path())
+    path = session.close() or Path()
+    result = replay_trace(path)
     assert (result.rewards, result.recorded_rewards, result.moves) == (1.0, 1.0, len(moves))
+    # the reported clock is the recording's end, not the end of the replay's extra last cycle
+    (episode,) = read_trace(path)
+    assert result.recorded_clock == episode.end["clock"] < result.clock
 
 
 def test_infeasible_and_unknown_actions_are_refused_without_effect() -> None:

@@ -181,3 +181,22 @@ def test_readme_quick_look_command_runs(tmp_path: Path) -> None:
     assert result.exit_code == 0, result.output
     frame = pd.read_csv(tmp_path / "scores.csv")
     assert list(frame["robot"]) == ["planner", "habit"] and set(frame["human"]) == {"lazy"}
+
+
+def test_one_seed_study_flags_its_intervals_and_says_what_it_ran(tmp_path: Path) -> None:
+    from tests.cli_helpers import run_main
+
+    args = ["evaluate", str(TINY), "--out", str(tmp_path), "--seeds", "1", "--workers", "1"]
+    code, out, err = run_main(args)
+    assert code == 0, err
+    # 2 robots x 2 humans x 1 seed, all new; then all reused
+    assert f"store {tmp_path / 'store'}: 4 runs made, 0 reused" in err
+    assert "oracle paper2015: states" in err  # the oracle's solves show their bar (cached for the rerun)
+    assert "caution: 1 seed per task: no confidence interval" in out
+    assert "| planner | " in out and "| - |" in out  # the CI columns are empty, not zero-width
+    report = (tmp_path / "report.md").read_text()
+    assert "**Caution: 1 seed per task" in report and "no pair can be called clearly better" in report
+    code, out, err = run_main(args)
+    assert code == 0 and f"store {tmp_path / 'store'}: 0 runs made, 4 reused" in err
+    assert "oracle paper2015: states" not in err
+    assert "of which aggregation" in out

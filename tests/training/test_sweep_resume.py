@@ -66,14 +66,15 @@ def test_sweep_logs_runs_made_and_reused_whenever_it_did_either(
     tmp_path: Path, caplog: pytest.LogCaptureFixture
 ) -> None:
     def sweep_lines() -> list[str]:
-        return [r.getMessage() for r in caplog.records if r.getMessage().startswith("sweep:")]
+        prefix = f"store {tmp_path / 'store'}: "
+        return [r.getMessage().removeprefix(prefix) for r in caplog.records if r.getMessage().startswith(prefix)]
 
     caplog.set_level(logging.INFO, logger="hg_marl.training.sweep")
     run_sweep(JOBS[:1], tmp_path)  # a fresh store: one run made, none reused
-    assert sweep_lines() == ["sweep: 1 runs made, 0 reused"]
+    assert sweep_lines() == ["1 runs made, 0 reused"]
     caplog.clear()
     run_sweep(JOBS[:1], tmp_path)  # the same job again: found in the store
-    assert sweep_lines() == ["sweep: 0 runs made, 1 reused"]
+    assert sweep_lines() == ["0 runs made, 1 reused"]
     caplog.clear()
     run_sweep([], tmp_path)  # nothing to do: nothing to say
     assert sweep_lines() == []

@@ -83,6 +83,8 @@ def run_cell(config: CompareConfig, algo: str, human: str, seed: int, directory:
             deterministic=config.deterministic,
         )
 
+    if algo == "ppo_batched":
+        return _run_batched_cell(config, human, seed, directory, evaluate)
     curve = RateCurve(config.eval_every, evaluate)
     result = train(
         TrainConfig(
@@ -115,6 +117,48 @@ def run_cell(config: CompareConfig, algo: str, human: str, seed: int, directory:
         "model": str(result.path),
     }
     return record
+
+
+def _run_batched_cell(config: CompareConfig, human: str, seed: int, directory: Path, evaluate: Any) -> dict[str, Any]:
+    """A ``ppo_batched`` cell: the batched learner, evaluated on the same runner protocol."""
+    from hg_marl.training.baselines.ppo_batched import PPOBatchedConfig, train_ppo_batched
+
+    curve: list[tuple[int, float]] = []
+    due = [0]
+
+    def on_update(steps: int, model: Any) -> None:
+        if steps >= due[0]:
+            curve.append((steps, float(evaluate(model))))
+            due[0] = (steps // config.eval_every + 1) * config.eval_every
+
+    batched = PPOBatchedConfig(
+        humans=(human,), scenario=config.scenario, steps=config.steps, seed=seed, out=directory, tensorboard=False
+    )
+    result = train_ppo_batched(batched, on_update)
+    if curve[-1][0] != result.num_timesteps:
+        curve.append((result.num_timesteps, float(evaluate(result_model(result.path)))))
+    return {
+        "algo": "ppo_batched",
+        "human": human,
+        "seed": seed,
+        "scenario": config.scenario,
+        "budget": config.steps,
+        "deterministic": config.deterministic,
+        "steps": result.num_timesteps,
+        "eval_seeds": list(config.eval_seeds),
+        "duration": config.duration,
+        "train_seconds": result.seconds,
+        "steps_per_second": result.steps_per_second,
+        "curve": [[s, r] for s, r in curve],
+        "model": str(result.path),
+    }
+
+
+def result_model(path: Path) -> Any:
+    """The SB3 model of a saved model file (for a last evaluation)."""
+    from hg_marl.agents.model_file import build_sb3, load_model_file
+
+    return build_sb3(load_model_file(path), optimizer=False)
 
 
 def reference_rates(config: CompareConfig, human: str) -> dict[str, float | None]:

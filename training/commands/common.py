@@ -129,3 +129,23 @@ def checked(build: Callable[[], T]) -> T:
     except (ValueError, KeyError, FileNotFoundError) as exc:
         message = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
         raise ConfigError(str(message)) from exc
+
+
+def counting_bar(total: int, desc: str) -> tuple[Any, Callable[..., None]]:
+    """A tqdm bar of ``total`` runs and its per-run callback, which closes the bar at the last run.
+
+    So the bar's elapsed time and rate are those of the runs (what follows, aggregation
+    and figures, is not counted in them) and the next line prints below a finished bar.
+    """
+    from tqdm import tqdm
+
+    bar = tqdm(total=total, unit="run", desc=desc)
+
+    def update(*_: Any) -> None:
+        bar.update(1)
+        if bar.n >= total:
+            bar.close()
+
+    if total == 0:
+        bar.close()
+    return bar, update

@@ -21,7 +21,7 @@ def register(app: typer.Typer) -> None:
 
     @app.command("compare")
     def compare_command(
-        algos: Annotated[str, typer.Option(help="Comma list of ppo, maskable_ppo, dqn, a2c.")] = ",".join(
+        algos: Annotated[str, typer.Option(help="Comma list of ppo, maskable_ppo, dqn, a2c, ppo_batched.")] = ",".join(
             default(CompareConfig, "algos")
         ),
         humans: Annotated[str, typer.Option(help="Comma list of humans (one training each).")] = ",".join(
@@ -54,7 +54,7 @@ def register(app: typer.Typer) -> None:
         from hg_marl.training.baselines.hyperparams import check_algo
 
         check_out_dir(out, "--out")
-        names = checked(lambda: tuple(check_algo(a) for a in name_list(algos, "--algos")))
+        names = checked(lambda: tuple(a if a == "ppo_batched" else check_algo(a) for a in name_list(algos, "--algos")))
         config = CompareConfig(
             algos=names,
             humans=name_list(humans, "--humans"),

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated
 
 import typer
 
-from hg_marl.training.commands.common import check_out_dir, check_workers, name_list
+from hg_marl.training.commands.common import check_out_dir, check_workers, counting_bar, name_list
 
 
 def register(app: typer.Typer) -> None:
@@ -32,8 +32,6 @@ def register(app: typer.Typer) -> None:
         """Every robot with every human: scores.csv, aggregate.json, crossplay/profiles/intervals PNGs, report.md."""
         import time
 
-        from tqdm import tqdm
-
         from hg_marl.training.backends import make_backend
         from hg_marl.training.evaluate import cells, evaluate
         from hg_marl.training.report import robot_table
@@ -44,11 +42,16 @@ def register(app: typer.Typer) -> None:
         chosen = load_study(study).narrowed(seeds, name_list(robots, "--robots"), name_list(humans, "--humans"))
         executor = make_backend(backend, workers, address)
         start = time.perf_counter()
-        with tqdm(total=len(cells(chosen)), unit="run", desc=chosen.name) as bar:
-
-            def done(job: Any, run: Any) -> None:
-                bar.update(1)
-
-            agg = evaluate(chosen, out, executor, done)
+        bar, done = counting_bar(len(cells(chosen)), chosen.name)
+        try:
+            agg = evaluate(chosen, out, executor, done, progress=True)
+        finally:
+            bar.close()
+        wall = time.perf_counter() - start
         typer.echo(robot_table(agg))
-        typer.echo(f"wall time {time.perf_counter() - start:.1f} s; report: {out / 'report.md'}")
+        if agg["bootstrap"]["flag"]:
+            typer.echo(f"caution: {agg['bootstrap']['flag']}")
+        typer.echo(
+            f"wall time {wall:.1f} s, of which aggregation {agg['seconds']:.2f} s "
+            f"({100 * agg['seconds'] / max(wall, 1e-9):.0f}%); report: {out / 'report.md'}"
+        )

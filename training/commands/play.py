@@ -14,7 +14,7 @@ def register(app: typer.Typer) -> None:
     @app.command("play")
     def play_command(
         robot: Annotated[
-            str, typer.Option(help="Robot spec: planner, habit, hybrid:criterion=vpi, sb3:path=model.zip, ...")
+            str, typer.Option(help="Robot spec: planner, habit, hybrid:criterion=vpi, sb3:path=model.json, ...")
         ] = "planner",
         scenario: Annotated[str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml.")] = (
             "paper2015"

@@ -27,7 +27,8 @@ def register(app: typer.Typer) -> None:
         typer.echo(
             f"replayed {result.moves} moves of {result.player or 'the recorded human'} against {result.robot} "
             f"on {result.scenario}, seed {result.seed}: {result.tasks_solved} tasks, rewards {result.rewards:g}, "
-            f"{result.clock:.1f} simulated s"
+            f"{result.recorded_clock:.2f} simulated s as recorded (the replay ends its last cycle at "
+            f"{result.clock:.2f} s)"
         )
         if result.recorded_rewards is not None:
             same = "same as" if result.recorded_rewards == result.rewards else "DIFFERENT from"

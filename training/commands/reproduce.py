@@ -8,7 +8,7 @@ from typing import Annotated, Any
 
 import typer
 
-from hg_marl.training.commands.common import check_duration, check_out_dir, check_workers
+from hg_marl.training.commands.common import check_duration, check_out_dir, check_workers, counting_bar
 
 
 def register(app: typer.Typer) -> None:
@@ -32,8 +32,6 @@ def register(app: typer.Typer) -> None:
         adaptation_seeds: Annotated[int, typer.Option(min=1, help="Seeds per (robot, switch) when adapting.")] = 10,
     ) -> None:
         """Planner alone, habit alone, random mix (+ further criteria): Fig. 3-5, summary.json, table."""
-        from tqdm import tqdm
-
         from hg_marl.training import paper
         from hg_marl.training.reproduce import ReproduceConfig, reproduce
 
@@ -52,8 +50,9 @@ def register(app: typer.Typer) -> None:
         bars: list[Any] = []
 
         def progress(stage: str, total: int) -> Any:
-            bars.append(tqdm(total=total, unit="run", desc=stage))
-            return lambda job, result: bars[-1].update(1)
+            bar, update = counting_bar(total, stage)
+            bars.append(bar)
+            return update
 
         try:
             summary = reproduce(config, progress=progress)

@@ -23,9 +23,10 @@ def register(app: typer.Typer) -> None:
 
     @app.command("train")
     def train_command(
-        algo: Annotated[str, typer.Option(help="ppo, a2c, dqn, maskable_ppo, or bc (behaviour cloning).")] = (
-            "maskable_ppo"
-        ),
+        algo: Annotated[
+            str,
+            typer.Option(help="ppo, a2c, dqn, maskable_ppo, ppo_batched (batched tables), or bc (behaviour cloning)."),
+        ] = ("maskable_ppo"),
         seat: Annotated[str, typer.Option(help="robot (against humans) or human (against a robot).")] = "robot",
         human: Annotated[
             str,
@@ -70,6 +71,9 @@ def register(app: typer.Typer) -> None:
             list[Path] | None, typer.Option("--traces", help="bc: trace files or directories (repeat).")
         ] = None,
         bc_kind: Annotated[str, typer.Option(help="bc: table or linear_softmax.")] = "table",
+        population: Annotated[
+            Path | None, typer.Option(help="ppo_batched: a population file; trains against its train members.")
+        ] = None,
         tensorboard: Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")] = default(
             TrainConfig, "tensorboard"
         ),
@@ -86,6 +90,10 @@ def register(app: typer.Typer) -> None:
             path, accuracy = checked(lambda: behaviour_clone(traces, out, kind=bc_kind))
             typer.echo(f"behaviour cloning ({bc_kind}): reproduces {accuracy:.1%} of the recorded actions")
             typer.echo(f"  policy  {path}  (make_human('learned', path='{path}'))")
+            return
+
+        if algo == "ppo_batched":
+            _train_batched(human, population, scenario, steps, seed, out, checkpoint_freq, tensorboard, progress, hp)
             return
 
         from hg_marl.training.baselines.envs import split_population
@@ -132,3 +140,34 @@ def register(app: typer.Typer) -> None:
             typer.echo(f"  use it  hg-marl run --robot sb3 --model {result.path} --human {partners.split(',')[0]}")
         else:
             typer.echo(f"  use it  hg-marl run --human learned:path={out}")
+
+
+def _train_batched(
+    human: str,
+    population: Path | None,
+    scenario: str,
+    steps: int | None,
+    seed: int,
+    out: Path,
+    checkpoint_freq: int | None,
+    tensorboard: bool,
+    progress: bool,
+    hp: list[str] | None,
+) -> None:
+    """``--algo ppo_batched``: the batched learner in the robot seat."""
+    from hg_marl.training.baselines.envs import split_population
+    from hg_marl.training.baselines.ppo_batched import config_from_options, population_members, train_ppo_batched
+
+    humans = population_members(population) if population is not None else tuple(split_population(human))
+    config = checked(
+        lambda: config_from_options(
+            humans, scenario, steps, seed, out, checkpoint_freq, tensorboard, progress, tuple(hp or ())
+        )
+    )
+    result = checked(lambda: train_ppo_batched(config))
+    typer.echo(
+        f"ppo_batched in the robot seat vs {','.join(humans)} on {scenario}: {result.num_timesteps} steps "
+        f"({result.steps_per_second:.0f} steps/s, {result.seconds:.0f} s); greedy {result.rate_per_hour:.1f} tasks/h"
+    )
+    typer.echo(f"  model   {result.path}")
+    typer.echo(f"  use it  hg-marl run --robot sb3 --model {result.path} --human {humans[0]}")

@@ -42,6 +42,9 @@ class ReplayResult:
     tasks_solved: int
     rewards: float
     clock: float
+    """Simulated seconds at the end of the replay's last cycle (past the recording's end, see :data:`MARGIN`)."""
+    recorded_clock: float
+    """Simulated seconds at which the recorded game ended (what the CLI reports)."""
     recorded_rewards: float | None
     """The rewards written in the trace's end line (None when it has none)."""
     video: Path | None = None
@@ -62,6 +65,11 @@ def load_episode(trace: Path, episode: int) -> Episode:
     return episodes[episode]
 
 
+def end_clock(ep: Episode) -> float:
+    """The recorded game's end: its end line's clock, else its last turn's (0 without turns)."""
+    return float(ep.end["clock"]) if "clock" in ep.end else float(ep.steps[-1]["clock"]) if ep.steps else 0.0
+
+
 def replay_run(
     trace: Path, episode: int = 0, robot: str | None = None, wrap: Callable[[Actor], Actor] | None = None
 ) -> RunResult:
@@ -73,8 +81,7 @@ def replay_run(
         actor = wrap(actor)
     human = ReplayHuman(trace, on_mismatch="error")
     human.episode = episode - 1  # reset() moves to the next episode
-    last = float(ep.end["clock"]) if "clock" in ep.end else float(ep.steps[-1]["clock"]) if ep.steps else 0.0
-    config = RunConfig(scenario=str(h["scenario"]), duration=last + MARGIN, seed=int(h.get("seed") or 0))
+    config = RunConfig(scenario=str(h["scenario"]), duration=end_clock(ep) + MARGIN, seed=int(h.get("seed") or 0))
     try:
         return run(actor, human, config)
     except ValueError as exc:
@@ -114,6 +121,7 @@ def replay_trace(trace: Path, episode: int = 0, robot: str | None = None, video:
         tasks_solved=int(result.summary["tasks_solved"]),
         rewards=float(log["reward"].sum()) if len(log) else 0.0,
         clock=float(log["time"].iloc[-1]) if len(log) else 0.0,
+        recorded_clock=end_clock(ep),
         recorded_rewards=float(ep.end["rewards"]) if "rewards" in ep.end else None,
         video=written,
         frames=len(frames),

@@ -1,0 +1,381 @@
+"""Compiled partners: a stationary scripted human as an action distribution per reachable state.
+
+A stationary human (every registry human but ``switching`` and ``replay``; ``learned``
+in its numpy kinds, not SB3's)
+answers as a function of the mid-cycle state and the robot's action seen
+(``StationaryHuman.distribution``). :func:`compile_human` enumerates every mid-cycle
+state the robot-turn states of the scenario can reach, whatever the robot does (the
+oracle's exploration: every feasible robot action plus one failing one, the human's every
+answer), asks the live human once per (state, robot action seen) and stores the answers
+in flat arrays: sorted packed keys, segment starts, actions and cumulative probabilities.
+:class:`CompiledHuman` then answers a whole batch with two ``searchsorted`` calls (the
+``ArrayPartner`` protocol of ``hg_marl.envs.batched``). A state outside the table (it
+cannot happen for a table compiled for the same scenario and durations, but a caller
+may hand any state) falls back to the live human, counted in ``fallbacks``.
+
+Built once per (scenario, durations, human spec) and cached on disk, keyed by the
+content of all that plus the source of every module that can change an answer (the
+core rules, the humans, the planner, this file); the entry stores its key and is
+refused if it does not match. Nothing is written outside a folder the user named:
+``cache=FOLDER`` keeps the tables there (``hg-marl train --algo ppo_batched`` uses
+``OUT/partners``), ``cache=True`` uses ``$HG_MARL_CACHE/partners`` when that variable is
+set and no disk cache otherwise, ``cache=None`` never caches on disk.
+
+Sizes (``paper2015``: 444-1,892 robot-turn states, a few thousand keys, under 2 s to
+build for every bundled human; ``roboergosum``: as the oracle's model, see
+``agents/oracle.py``, built once and then loaded in well under a second).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import os
+import sys
+from collections import deque
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from tqdm import tqdm
+
+from hg_marl.agents.humans.base import HumanError
+from hg_marl.agents.humans.registry import make_human
+from hg_marl.core import Agent, State, World
+from hg_marl.envs.batched import BatchedRules, BatchState
+
+MAX_KEYS = 5_000_000
+"""The compiler's budget: (mid-cycle state, robot action seen) keys; beyond it, a clear error."""
+
+_KEY_LIMIT = 2**62
+OUTCOME_FIELDS = ("where", "robot_at", "offer_by", "offer_obj", "ok", "duration", "facts", "mask")
+_SOURCES = ("hg_marl/core", "agents/humans", "agents/planner", "agents/compiled.py", "agents/oracle.py")
+
+
+class CompileError(HumanError):
+    """A partner that cannot be compiled, or a scenario over the compiler's budget."""
+
+
+class Packer:
+    """Packs (state, robot action seen) into one int64 per table: mixed-radix digits."""
+
+    def __init__(self, world: World) -> None:
+        t = world.table
+        self.radix = [t.n_places] * t.n_objects + [t.n_locations, 3, t.n_objects + 1, world.n_actions(Agent.ROBOT) + 1]
+        total = 1
+        for r in self.radix:
+            total *= r
+        if total >= _KEY_LIMIT:
+            raise CompileError(
+                f"scenario: {world.scenario.name!r} has too many states to pack into 64-bit keys "
+                f"({t.n_objects} objects, {t.n_places} places): over the compiler's budget"
+            )
+        weights, w = [], 1
+        for r in self.radix:
+            weights.append(w)
+            w *= r
+        self.weights = np.array(weights, dtype=np.int64)
+        self.n_objects = t.n_objects
+
+    def pack(self, b: BatchState, seen: np.ndarray) -> np.ndarray:
+        """(N,) int64 keys."""
+        w, n = self.weights, self.n_objects
+        key = b.where @ w[:n]
+        key += b.robot_at * w[n] + (b.offer_by + 1) * w[n + 1] + (b.offer_obj + 1) * w[n + 2] + (seen + 1) * w[n + 3]
+        return key
+
+    def pack_one(self, state: State, seen: int) -> int:
+        """The key of one state."""
+        digits = [*state.where, state.robot_at, state.offer_by + 1, state.offer_obj + 1, seen + 1]
+        return int(sum(d * int(w) for d, w in zip(digits, self.weights, strict=True)))
+
+
+def enumerate_answers(
+    world: World, human: Any, max_keys: int = MAX_KEYS, progress: bool = False
+) -> dict[tuple[State, int], list[tuple[int, float]]]:
+    """Every (mid-cycle state, robot action seen) the human can face, with its distribution.
+
+    Robot-turn states come from the layout distribution and, breadth-first, from every
+    robot action (feasible ones and one failing one: all failing actions lead to the same
+    mid-cycle state) followed by every answer of the human. The completing ``wait`` is
+    followed by the human's move on the clean table (episodic mode) and by the re-drawn
+    tables (continuing mode), both enumerated.
+    """
+    from hg_marl.agents.oracle import layout_distribution
+
+    table = world.table
+    uses = bool(getattr(human, "uses_robot_action", False))
+    n_robot = world.n_actions(Agent.ROBOT)
+    wait = table.wait[Agent.ROBOT]
+    layouts = [s for s, _ in layout_distribution(world)]
+    answers: dict[tuple[State, int], list[tuple[int, float]]] = {}
+    seen_states: set[State] = set(layouts)
+    queue: deque[State] = deque(layouts)
+    bar = tqdm(desc=f"compile {getattr(human, 'name', 'human')}", unit=" keys", disable=not progress, file=sys.stderr)
+
+    def answer(mid: State, seen: int, expand: bool) -> None:
+        key = (mid, seen if uses else -1)
+        dist = answers.get(key)
+        if dist is None:
+            if len(answers) >= max_keys:
+                raise CompileError(
+                    f"scenario: {world.scenario.name!r} against {getattr(human, 'name', human)!r} exceeds the "
+                    f"compiler's budget of {max_keys} states (max_keys); use a smaller scenario"
+                )
+            dist = answers[key] = [(h, p) for h, p in human.distribution(world, mid, key[1]) if p > 0.0]
+            bar.update(1)
+        if expand:
+            for h, _ in dist:
+                nxt, _, _ = table.successor(mid, Agent.HUMAN, h)
+                if nxt not in seen_states:
+                    seen_states.add(nxt)
+                    queue.append(nxt)
+
+    for layout in layouts:  # continuing mode: the re-drawn table meets the human after the robot's wait
+        answer(layout, wait, True)
+    try:
+        while queue:
+            state = queue.popleft()
+            feasible = table.feasible_indices(state, Agent.ROBOT)
+            taken = set(feasible)
+            failing = next((i for i in range(n_robot) if i not in taken), None)
+            for a in [*feasible, *([failing] if failing is not None else [])]:
+                mid, ok, _ = table.successor(state, Agent.ROBOT, a)
+                terminal = ok and a == wait and table.is_clean(state.where)
+                answer(mid, a if ok else -1, not terminal)
+    finally:
+        bar.close()
+    return answers
+
+
+class CompiledHuman:
+    """A stationary human's answers as arrays (the ``ArrayPartner`` protocol).
+
+    Args:
+        world: the world it was compiled for.
+        human: the live human (the fallback for a state outside the table).
+        arrays: ``keys`` (sorted), ``starts``, ``actions``, ``cum`` (see :meth:`from_answers`).
+    """
+
+    def __init__(self, world: World, human: Any, arrays: dict[str, np.ndarray], name: str = "") -> None:
+        self.world, self.human = world, human
+        self.name = name or str(getattr(human, "name", "human"))
+        self.uses_robot_action = bool(getattr(human, "uses_robot_action", False))
+        self.packer = Packer(world)
+        self.keys, self.starts = arrays["keys"], arrays["starts"]
+        self.actions, self.cum = arrays["actions"], arrays["cum"]
+        self.outcome = {k: arrays[k] for k in OUTCOME_FIELDS}
+        """Per entry, the human's answer already applied by ``BatchedRules``: the next state
+        (``where``, ``robot_at``, ``offer_by``, ``offer_obj``), ``ok``, ``duration``, and that
+        state's ``facts`` and robot ``mask`` (the batched env gathers them instead of
+        stepping the rules and computing observations again)."""
+        self.widest = int(np.diff(self.starts).max(initial=1))
+        """The most actions any state's distribution has (the sampler's loop length)."""
+        self.fallbacks = 0
+        """Tables answered by the live human because their state was not in the table."""
+
+    @staticmethod
+    def arrays_of(
+        world: World, packer: Packer, answers: dict[tuple[State, int], list[tuple[int, float]]]
+    ) -> dict[str, np.ndarray]:
+        """Sorted flat arrays of ``answers``; ``cum`` is segment index + cumulative probability.
+
+        Each entry's outcome is computed by ``BatchedRules`` on the whole table at once.
+        """
+        triples = sorted(
+            ((packer.pack_one(s, seen), s, dist) for (s, seen), dist in answers.items()), key=lambda x: x[0]
+        )
+        items = [(k, d) for k, _, d in triples]
+        keys = np.array([k for k, _ in items], dtype=np.int64)
+        sizes = np.array([len(d) for _, d in items], dtype=np.int64)
+        starts = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
+        actions = np.array([h for _, d in items for h, _ in d], dtype=np.int64)
+        cum = np.empty(len(actions))
+        for i, (_, dist) in enumerate(items):
+            p = np.array([q for _, q in dist])
+            c = np.cumsum(p) / p.sum()
+            c[-1] = 1.0
+            cum[starts[i] : starts[i + 1]] = i + c
+        rules = BatchedRules(world)
+        mids = BatchState.of([s for _, s, d in triples for _ in d]) if len(actions) else BatchState.of([])
+        ok, duration, _ = rules.step(mids, Agent.HUMAN, actions)
+        return {
+            "keys": keys,
+            "starts": starts,
+            "actions": actions,
+            "cum": cum,
+            "where": mids.where,
+            "robot_at": mids.robot_at,
+            "offer_by": mids.offer_by,
+            "offer_obj": mids.offer_obj,
+            "ok": ok,
+            "duration": duration,
+            "facts": rules.facts(mids),
+            "mask": rules.masks(mids, Agent.ROBOT),
+        }
+
+    def lookup(self, b: BatchState, seen: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(segment index, found) per table."""
+        keys = self.packer.pack(b, seen if self.uses_robot_action else np.full(len(b), -1, dtype=np.int64))
+        idx = np.searchsorted(self.keys, keys)
+        idx = np.minimum(idx, len(self.keys) - 1)
+        return idx, self.keys[idx] == keys
+
+    def distribution(self, b: BatchState, seen: np.ndarray, i: int) -> list[tuple[int, float]]:
+        """Table ``i``'s distribution as the compiled table holds it (tests compare it with the live one)."""
+        idx, found = self.lookup(b, seen)
+        if not found[i]:
+            raise KeyError(f"state {b.state(i)} is not in the compiled table")
+        lo, hi = self.starts[idx[i]], self.starts[idx[i] + 1]
+        c = self.cum[lo:hi] - idx[i]
+        return [
+            (int(a), float(p)) for a, p in zip(self.actions[lo:hi], np.diff(np.concatenate([[0.0], c])), strict=True)
+        ]
+
+    def answer(self, b: BatchState, seen: np.ndarray, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+        """(entry, found) per table: the compiled distribution sampled with ``rng``.
+
+        ``actions[entry]`` is the answer and ``outcome[...][entry]`` its effect where
+        ``found``; elsewhere the entry is meaningless (see :meth:`act` for the fallback).
+        """
+        idx, found = self.lookup(b, seen)
+        q = idx + rng.random(len(b))
+        start, last = self.starts[idx], self.starts[idx + 1] - 1
+        pos = start.copy()
+        for j in range(self.widest - 1):  # entries before the drawn one: their cumulative sum is <= q
+            at = np.minimum(start + j, last)
+            pos += (start + j < last) & (self.cum[at] <= q)
+        return pos, found
+
+    def act(self, b: BatchState, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        """One action per table: the compiled distribution sampled with ``rng``, the live human outside it."""
+        pos, found = self.answer(b, seen, rng)
+        out = self.actions[pos]
+        return self.fall_back(b, seen, rng, out, found)
+
+    def fall_back(
+        self, b: BatchState, seen: np.ndarray, rng: np.random.Generator, out: np.ndarray, found: np.ndarray
+    ) -> np.ndarray:
+        """``out`` with the tables not ``found`` answered by the live human (counted in ``fallbacks``)."""
+        if not found.all():
+            missing = np.flatnonzero(~found)
+            self.fallbacks += len(missing)
+            for i in missing:
+                s = b.state(int(i))
+                dist = self.human.distribution(self.world, s, int(seen[i]) if self.uses_robot_action else -1)
+                p = np.array([q for _, q in dist])
+                out[i] = dist[int(rng.choice(len(dist), p=p / p.sum()))][0] if len(dist) > 1 else dist[0][0]
+        return out
+
+    def __len__(self) -> int:
+        return len(self.keys)
+
+
+def source_digest(root: Path | None = None) -> str:
+    """sha256 of every source file that can change a compiled answer."""
+    root = root or Path(__file__).resolve().parent.parent
+    h = hashlib.sha256()
+    for rel in _SOURCES:
+        base = root / rel
+        if not base.exists():  # installed layout: hg_marl/agents, hg_marl/core
+            base = Path(__file__).resolve().parent.parent / rel.replace("agents/", "")
+        files = sorted(base.rglob("*.py")) if base.is_dir() else [base]
+        for f in files:
+            if f.exists():
+                h.update(f.name.encode())
+                h.update(f.read_bytes())
+    return h.hexdigest()
+
+
+def cache_key(world: World, spec: str) -> str:
+    """Content key of a compiled table: scenario, durations, human spec, the files it names, and code.
+
+    A ``path=`` parameter (a learned policy's folder or file) is keyed by the content of
+    every file under it, so retraining into the same folder compiles again.
+    """
+    from hg_marl.agents.humans.registry import parse_human
+
+    h = hashlib.sha256()
+    for part in (repr(world.scenario), repr(world.durations), spec, source_digest()):
+        h.update(part.encode())
+        h.update(b"\0")
+    _, params = parse_human(spec)
+    if "path" in params:
+        named = Path(params["path"])
+        for f in sorted(named.rglob("*")) if named.is_dir() else [named]:
+            if f.is_file():
+                h.update(f.name.encode())
+                h.update(f.read_bytes())
+    return h.hexdigest()
+
+
+def default_cache() -> Path | None:
+    """``$HG_MARL_CACHE/partners``, or None when the variable is unset (nothing written then)."""
+    root = os.environ.get("HG_MARL_CACHE")
+    return Path(root) / "partners" if root else None
+
+
+def compile_human(
+    world: World,
+    human: str | Any,
+    *,
+    cache: Path | str | bool | None = True,
+    max_keys: int = MAX_KEYS,
+    progress: bool = False,
+) -> CompiledHuman:
+    """A :class:`CompiledHuman` for ``human`` (a registry spec or a stationary instance) in ``world``.
+
+    Args:
+        world: the world (scenario and durations) of the batched env.
+        human: ``"cooperative"``, ``"lazy:p_idle=0.5"``... or an instance with ``distribution``.
+        cache: True for :func:`default_cache` (``$HG_MARL_CACHE``), a folder, or None/False for no disk cache
+            (instances are never cached on disk: only a spec string names their content).
+        max_keys: the compiler's budget (:class:`CompileError` beyond it).
+        progress: show a progress bar of the keys compiled.
+
+    Raises:
+        CompileError: the human is not stationary, or the scenario is over the budget.
+    """
+    spec = human if isinstance(human, str) else None
+    live = make_human(human) if isinstance(human, str) else human
+    if not callable(getattr(live, "distribution", None)):
+        raise CompileError(
+            f"human: {getattr(live, 'name', live)!r} cannot be compiled: it has no distribution(world, state) "
+            "(switching and replay humans are not functions of the state)"
+        )
+    live.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    packer = Packer(world)
+    name = spec or str(getattr(live, "name", "human"))
+    folder = (
+        None if cache is None or cache is False or spec is None else default_cache() if cache is True else Path(cache)
+    )
+    path = key = None
+    if folder is not None:
+        assert spec is not None
+        key = cache_key(world, spec)
+        path = folder / f"{world.scenario.name.split(':')[0]}-{key[:24]}.npz"
+        if path.exists():
+            try:
+                with np.load(path, allow_pickle=False) as data:
+                    if str(data["key"]) == key:
+                        fields = ("keys", "starts", "actions", "cum", *OUTCOME_FIELDS)
+                        return CompiledHuman(world, live, {k: data[k] for k in fields}, name)
+            except (OSError, ValueError, KeyError):
+                pass  # a corrupt or foreign entry is rebuilt
+    try:
+        answers = enumerate_answers(world, live, max_keys, progress)
+    except CompileError:
+        raise
+    except ValueError as exc:  # e.g. a learned SB3 policy: no exact distribution
+        raise CompileError(f"human: {name!r} cannot be compiled: {exc}") from None
+    arrays = CompiledHuman.arrays_of(world, packer, answers)
+    if path is not None:
+        from hg_marl.training.io import atomic_write
+
+        def write(tmp: Path) -> None:
+            buf = io.BytesIO()
+            np.savez(buf, key=np.array(key), **arrays)  # type: ignore[arg-type]
+            tmp.write_bytes(buf.getvalue())
+
+        atomic_write(path, write)
+    return CompiledHuman(world, live, arrays, name)
