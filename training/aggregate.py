@@ -44,18 +44,20 @@ at most C(2n-1, n) distinct values (n = 2: 3, n = 4: 35), too few for a 95% perc
 interval to mean what it says (with n = 1 there is one, and no interval is computed)."""
 
 
-def score_matrix(frame: pd.DataFrame, robot: str, tasks: Sequence[tuple[str, str]] | None = None) -> np.ndarray:
+def score_matrix(
+    frame: pd.DataFrame, robot: str, tasks: Sequence[tuple[str, str]] | None = None, column: str = "score"
+) -> np.ndarray:
     """A robot's scores as a (seeds x tasks) matrix; tasks are (human, scenario) pairs in table order.
 
     Rows with no score (no reference rate) are left out; a task must have every seed.
     """
-    mine = frame[(frame["robot"] == robot) & frame["score"].notna()]
+    mine = frame[(frame["robot"] == robot) & frame[column].notna()]
     if tasks is None:
         tasks = list(dict.fromkeys(zip(mine["human"], mine["scenario"], strict=True)))
     columns = []
     for human, scenario in tasks:
         cell = mine[(mine["human"] == human) & (mine["scenario"] == scenario)].sort_values("seed")
-        columns.append(cell["score"].to_numpy(dtype=float))
+        columns.append(cell[column].to_numpy(dtype=float))
     if not columns:
         return np.zeros((0, 0))
     return np.stack(columns, axis=1)
@@ -204,6 +206,7 @@ def aggregate(
         out["improvement"][f"{a}>{b}"] = {"p": float(improvement(x, y)), "ci": _pair(c, 0)}
     if groups and {"train", "test"} <= set(groups.values()):
         out["generalisation"] = generalisation_gap(frame, groups, reps if with_ci else 0)
+    out["br_prox"] = br_prox(frame, groups, reps if with_ci else 0)
     return out
 
 
@@ -229,6 +232,37 @@ def generalisation_gap(frame: pd.DataFrame, groups: dict[str, str], reps: int = 
             "gap": float(point[2]),
             "gap_ci": _pair(ci, 2),
         }
+    return out
+
+
+def br_prox(frame: pd.DataFrame, groups: dict[str, str] | None = None, reps: int = REPS) -> list[dict[str, Any]]:
+    """BR-Prox per robot, scenario and partner split: IQM with its 95% stratified-bootstrap CI (rliable).
+
+    BR-Prox is ``min(1, rate / exact best-response rate)`` (``scores.csv``'s ``br_prox``);
+    a split is a partner group (``train``, ``validation``, ``test``; ``all`` when the study
+    has none). Only runs against partners with an exact best response count.
+    """
+    if "br_prox" not in frame or not frame["br_prox"].notna().any():
+        return []
+    split = frame["human"].map(groups or {}).fillna("all") if groups else pd.Series("all", index=frame.index)
+    data: dict[str, np.ndarray] = {}
+    keys: dict[str, tuple[str, str, str]] = {}
+    for scenario in dict.fromkeys(frame["scenario"]):
+        for group in dict.fromkeys(split):
+            part = frame[(frame["scenario"] == scenario) & (split == group)]
+            for robot in dict.fromkeys(part["robot"]):
+                m = score_matrix(part, robot, column="br_prox")
+                if m.size:
+                    name = f"{robot}|{scenario}|{group}"
+                    data[name], keys[name] = m, (robot, str(scenario), str(group))
+    out = []
+    for n, m in data.items():
+        c = stratified_bootstrap([m], iqm, reps) if reps else None
+        robot, scenario, group = keys[n]
+        point = float(np.asarray(iqm(m)).reshape(-1)[0])
+        out.append(
+            {"robot": robot, "scenario": scenario, "split": group, "iqm": point, "ci": _pair(c, 0), "runs": int(m.size)}
+        )
     return out
 
 

@@ -31,6 +31,7 @@ COMMANDS = (
     "traces",
     "evaluate",
     "population",
+    "headroom",
 )
 """Subcommand modules, in the order ``--help`` lists them."""
 

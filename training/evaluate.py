@@ -28,8 +28,22 @@ from hg_marl.training.study import ORACLE, Actor, Study
 
 log = logging.getLogger(__name__)
 
-SCORE_COLUMNS = ("robot", "human", "scenario", "seed", "tasks", "rate", "oracle_rate", "score", "key", "reference")
-"""Columns of ``scores.csv``: one row per run; ``reference`` says what ``oracle_rate`` is."""
+SCORE_COLUMNS = (
+    "robot",
+    "human",
+    "scenario",
+    "seed",
+    "tasks",
+    "rate",
+    "oracle_rate",
+    "score",
+    "br_prox",
+    "key",
+    "reference",
+)
+"""Columns of ``scores.csv``: one row per run; ``reference`` says what ``oracle_rate`` is.
+``br_prox`` is ``min(1, rate / oracle rate)`` when the reference is the exact best
+response (the oracle against that very partner), empty otherwise."""
 
 
 @dataclass(frozen=True)
@@ -154,7 +168,49 @@ def score_table(
     frame["oracle_rate"] = [refs[(h, s)].rate for h, s in zip(frame["human"], frame["scenario"], strict=True)]
     frame["reference"] = [refs[(h, s)].source for h, s in zip(frame["human"], frame["scenario"], strict=True)]
     frame["score"] = frame["rate"] / frame["oracle_rate"]
+    exact = frame["reference"] == "oracle"
+    frame["br_prox"] = frame["score"].clip(upper=1.0).where(exact)
     return frame[list(SCORE_COLUMNS)]
+
+
+def headroom_of(store: Store, study: Study, scenario: str) -> float | None:
+    """The scenario's adaptation headroom over the study's held-out partners (cached; None: not computable).
+
+    The partners are the study's stationary test partners (every stationary partner when
+    the study has no test group); see :mod:`hg_marl.agents.headroom`.
+    """
+    import hashlib
+    import inspect
+
+    from hg_marl.agents import headroom as module
+    from hg_marl.agents import oracle
+
+    pool = [h for h in study.humans if stationary(h)]
+    test = [h for h in pool if study.group(h.label) == "test"] or pool
+    if not test:
+        return None
+    code = hashlib.sha256((inspect.getsource(module) + inspect.getsource(oracle)).encode()).hexdigest()
+    fields = {
+        "humans": [{"label": h.label, "name": h.name, "params": dict(h.params)} for h in test],
+        "scenario": scenario_content(scenario),
+        "max_states": study.oracle_max_states,
+        "code": code,
+    }
+
+    def compute() -> float | None:
+        from hg_marl.agents.oracle import OracleTooLarge
+
+        try:
+            value = module.headroom(
+                scenario, [(h.label, h.spec()) for h in test], max_states=study.oracle_max_states
+            ).headroom
+        except OracleTooLarge as exc:
+            log.warning("headroom of %s is over its budget (%s)", scenario, exc)
+            return None
+        return None if value != value else float(value)
+
+    value = store.cached("headroom", fields, compute)
+    return None if value is None else float(value)
 
 
 def evaluate(
@@ -181,4 +237,5 @@ def evaluate(
     plan = cells(study)
     runs, stats = run_jobs([c.job for c in plan], store, backend or LocalBackend(1), on_done)
     frame = score_table(study, plan, runs, store, progress)
-    return write_outputs(study, frame, out, {"ran": stats.ran, "reused": stats.reused})
+    headrooms = {scenario: headroom_of(store, study, scenario) for scenario in study.scenarios}
+    return write_outputs(study, frame, out, {"ran": stats.ran, "reused": stats.reused}, headrooms)

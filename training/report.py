@@ -199,7 +199,38 @@ def crossplay_table(frame: pd.DataFrame) -> str:
     return "\n".join(lines)
 
 
-def markdown(study: Study, frame: pd.DataFrame, agg: dict[str, Any], stats: dict[str, int]) -> str:
+def br_prox_section(agg: dict[str, Any], headrooms: dict[str, float | None]) -> list[str]:
+    """BR-Prox IQM per robot, scenario and split, with each scenario's adaptation headroom beside it."""
+    rows = agg.get("br_prox") or []
+    if not rows:
+        return []
+    lines = [
+        "## BR-Prox (score against each partner's exact best response)",
+        "",
+        "BR-Prox = min(1, tasks per hour / the oracle's rate against that very partner); IQM with its 95% "
+        "stratified-bootstrap CI over seeds within each partner. Headroom: 1 - IQM over the held-out partners "
+        "of the cooperative model's optimal policy played with them (exact, `hg-marl headroom`): what knowing "
+        "one's partner is worth on that scenario.",
+        "",
+        "| scenario | headroom | split | robot | BR-Prox IQM | 95% CI | runs |",
+        "|---|---:|---|---|---:|---|---:|",
+    ]
+    for r in rows:
+        name = Path(r["scenario"]).name
+        lines.append(
+            f"| {name} | {_num(headrooms.get(r['scenario']))} | {r['split']} | {r['robot']} | {r['iqm']:.2f} | "
+            f"{_ci(r['ci'])} | {r['runs']} |"
+        )
+    return [*lines, ""]
+
+
+def markdown(
+    study: Study,
+    frame: pd.DataFrame,
+    agg: dict[str, Any],
+    stats: dict[str, int],
+    headrooms: dict[str, float | None] | None = None,
+) -> str:
     """``report.md``."""
     flag = agg["bootstrap"]["flag"]
     parts = [
@@ -223,6 +254,7 @@ def markdown(study: Study, frame: pd.DataFrame, agg: dict[str, Any], stats: dict
         crossplay_table(frame),
         "",
     ]
+    parts += br_prox_section(agg, headrooms or {})
     if "generalisation" in agg:
         parts += [
             "## Generalisation to held-out partners",
@@ -263,8 +295,14 @@ def markdown(study: Study, frame: pd.DataFrame, agg: dict[str, Any], stats: dict
     return "\n".join(parts)
 
 
-def write_outputs(study: Study, frame: pd.DataFrame, out: Path, stats: dict[str, int]) -> dict[str, Any]:
-    """Write every output of a study into ``out``; return the aggregates.
+def write_outputs(
+    study: Study,
+    frame: pd.DataFrame,
+    out: Path,
+    stats: dict[str, int],
+    headrooms: dict[str, float | None] | None = None,
+) -> dict[str, Any]:
+    """Write every output of a study into ``out``; return the aggregates (with the scenarios' headroom).
 
     The returned dict also holds ``seconds`` (the aggregation's wall time, which the CLI
     prints; not written to ``aggregate.json``, which stays a function of the scores).
@@ -275,11 +313,12 @@ def write_outputs(study: Study, frame: pd.DataFrame, out: Path, stats: dict[str,
     groups = {h: study.group(h) for h in frame["human"].unique() if study.group(h)}
     start = time.perf_counter()
     agg = aggregate(frame, groups or None)
+    agg["headroom"] = dict(headrooms or {})
     seconds = time.perf_counter() - start
     write_json(out / "aggregate.json", agg)
     crossplay_png(frame, out / "crossplay.png", f"{study.name}: mean score")
     if frame["score"].notna().any():
         profiles_png(frame, out / "profiles.png")
         intervals_png(agg, out / "intervals.png")
-    write_text(out / "report.md", markdown(study, frame, agg, stats))
+    write_text(out / "report.md", markdown(study, frame, agg, stats, headrooms))
     return {**agg, "seconds": seconds}

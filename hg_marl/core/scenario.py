@@ -9,7 +9,8 @@ Geometry is reachability only: each spot and bin lists the robot locations it ca
 reached from and whether the human reaches it. The robot reaches what its current
 location reaches; handovers need the robot at one of ``handover_locations``.
 
-Built-in names: ``paper2015`` (default), ``roboergosum``, and ``generated`` (seeded
+Built-in names: ``paper2015`` (default), ``roboergosum``, the hard layouts ``forced_coordination`` and
+``asymmetric_advantages`` (each file says what it tests), and ``generated`` (seeded
 random geometry, parameters after a colon: ``"generated:objects=6,spots=9,seed=3"``,
 read by the one spec parser of :mod:`hg_marl.core.spec`).
 
@@ -127,7 +128,7 @@ class Scenario:
         )
 
 
-BUILTIN = ("paper2015", "roboergosum")
+BUILTIN = ("paper2015", "roboergosum", "forced_coordination", "asymmetric_advantages")
 DEFAULT_SCENARIO = "paper2015"
 
 

@@ -54,9 +54,7 @@ def register(app: typer.Typer) -> None:
         from hg_marl.training.baselines.hyperparams import check_algo
 
         check_out_dir(out, "--out")
-        names = checked(
-            lambda: tuple(a if a == "ppo_batched" else check_algo(a) for a in name_list(algos, "--algos"))
-        )
+        names = checked(lambda: tuple(a if a == "ppo_batched" else check_algo(a) for a in name_list(algos, "--algos")))
         config = CompareConfig(
             algos=names,
             humans=name_list(humans, "--humans"),

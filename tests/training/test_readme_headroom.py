@@ -1,0 +1,41 @@
+"""The README's "Hard layouts, adaptation headroom and BR-Prox" section runs as written."""
+
+from __future__ import annotations
+
+import re
+import shlex
+from pathlib import Path
+
+import pytest
+
+from tests.cli_helpers import run_main
+
+ROOT = Path(__file__).resolve().parents[2]
+TEXT = (ROOT / "README.md").read_text()
+SECTION = TEXT[TEXT.index("## Hard layouts, adaptation headroom and BR-Prox\n") :]
+SECTION = SECTION[: SECTION.index("\n## ", 1)]
+COMMANDS = [c for block in re.findall(r"```bash\n(.*?)```", SECTION, flags=re.S) for c in block.splitlines()]
+
+
+def test_the_section_has_its_examples() -> None:
+    assert [shlex.split(c)[1] for c in COMMANDS] == ["headroom", "headroom", "evaluate"]
+
+
+@pytest.mark.parametrize("command", [c for c in COMMANDS if " headroom " in c])
+def test_headroom_example_runs(command: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(ROOT)
+    args = shlex.split(command.replace("results/", f"{tmp_path}/"))[1:]
+    code, out, err = run_main(args)
+    assert code == 0, err
+    assert "adaptation headroom" in out
+    out_dir = Path(args[args.index("--out") + 1])
+    assert {p.name for p in out_dir.iterdir()} == {"headroom.csv", "headroom.png", "headroom.json"}
+
+
+@pytest.mark.slow
+def test_adaptation_study_example_runs_narrowed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(ROOT)
+    command = next(c for c in COMMANDS if " evaluate " in c)
+    args = [*shlex.split(command.replace("results/", f"{tmp_path}/"))[1:], "--seeds", "1", "--robots", "planner"]
+    code, _, err = run_main([*args, "--workers", "1"])
+    assert code == 0, err

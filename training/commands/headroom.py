@@ -1,0 +1,70 @@
+"""``hg-marl headroom``: how much a scenario rewards knowing one's partner (exact, no robot runs)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+
+def split_specs(text: str) -> list[str]:
+    """``a,b:k=1,j=2,c`` -> ``[a, b:k=1,j=2, c]``: a piece ``k=v`` without a name continues the spec before it."""
+    out: list[str] = []
+    for piece in (p.strip() for p in text.split(",")):
+        if not piece:
+            continue
+        if out and "=" in piece and ":" not in piece and ":" in out[-1]:
+            out[-1] += "," + piece
+        else:
+            out.append(piece)
+    return out
+
+
+def register(app: typer.Typer) -> None:
+    """Add the ``headroom`` command to ``app``."""
+
+    @app.command("headroom")
+    def headroom_command(
+        scenario: Annotated[str, typer.Option(help="Scenario name or TOML path.")] = "paper2015",
+        population: Annotated[
+            Path | None, typer.Option(help="Population file: its members are the partners, held_out the test split.")
+        ] = None,
+        humans: Annotated[str | None, typer.Option(help="Or a comma list of stationary human specs.")] = None,
+        out: Annotated[Path, typer.Option(help="Output folder: headroom.csv, headroom.png, headroom.json.")] = Path(
+            "results/headroom"
+        ),
+        max_states: Annotated[int, typer.Option(min=1, help="Refuse beyond this many model states.")] = 1_500_000,
+        max_seconds: Annotated[float, typer.Option(help="Wall-time budget in seconds (over it: exit 2).")] = 600.0,
+    ) -> None:
+        """Policy optimal against A played with T over the optimum with T; 1 - IQM of the cooperative row."""
+        from hg_marl.agents.humans import HumanError
+        from hg_marl.agents.oracle import OracleTooLarge
+        from hg_marl.core.errors import ConfigError, check_finite
+        from hg_marl.core.scenario import load_scenario
+        from hg_marl.training.headroom import partners, write_headroom
+
+        check_finite(max_seconds, "--max-seconds", positive=True)
+        specs = split_specs(humans or "")
+        columns, held_out = partners(population, specs)
+        load_scenario(scenario)
+        if out.exists() and not out.is_dir():
+            raise ConfigError(f"--out {out}: not a folder")
+        try:
+            result = write_headroom(scenario, columns, held_out, out, max_states=max_states, max_seconds=max_seconds)
+        except (HumanError, OracleTooLarge) as exc:
+            raise ConfigError(str(exc)) from None
+        width = max(len(a) for a in result.assumed)
+        corner = "assumed / true"
+        width = max(width, len(corner))
+        typer.echo(f"{corner:<{width}}  " + "  ".join(result.true))
+        for label, row in zip(result.assumed, result.ratio, strict=True):
+            typer.echo(f"{label:<{width}}  " + "  ".join("n/a" if v != v else f"{v:.2f}" for v in row))
+        typer.echo(
+            "optimal rates (tasks/h): "
+            + ", ".join(f"{t} {r:.1f}" for t, r in zip(result.true, result.optimum, strict=True))
+        )
+        typer.echo(
+            f"adaptation headroom {result.headroom:.3f} (1 - IQM of the cooperative row over {', '.join(held_out)})"
+        )
+        typer.echo(f"model {result.n_states} states, {result.seconds:.1f} s; wrote headroom.csv, .png, .json in {out}")
