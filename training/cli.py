@@ -18,7 +18,20 @@ from typer.exceptions import Abort, TyperException
 
 from hg_marl.core.errors import HgMarlError
 
-COMMANDS = ("run", "plan", "oracle", "reproduce", "train", "compare", "convert", "play", "replay", "traces", "evaluate")
+COMMANDS = (
+    "run",
+    "plan",
+    "oracle",
+    "reproduce",
+    "train",
+    "compare",
+    "convert",
+    "play",
+    "replay",
+    "traces",
+    "evaluate",
+    "population",
+)
 """Subcommand modules, in the order ``--help`` lists them."""
 
 app = typer.Typer(

@@ -20,6 +20,16 @@ and, for held-out partners (zero-shot coordination style), ``train = [...]`` and
 meets every partner, and the report compares its scores on the train partners (those
 its settings were chosen with) with those on the held-out test partners.
 
+A partner population (:mod:`hg_marl.agents.humans.population`) adds its members as
+humans labelled by member name::
+
+    population = "../populations/paper2015.toml"   # relative to this file
+    splits = ["held_out"]              # which members (default: train, validation, held_out)
+
+A member's split is its group in the report: ``train`` members are train partners,
+``held_out`` members are the held-out test partners (the generalisation gap compares
+the two), ``validation`` members are reported as ``validation``.
+
 :func:`load_study` validates everything before anything runs: each robot and human is
 built once, each scenario loaded, each number checked, and a bad field is reported as
 one :class:`StudyError` line naming ``path:line`` and the field.
@@ -74,6 +84,8 @@ class Study:
     test: tuple[str, ...] = ()
     """Labels of the held-out test partners."""
     oracle_max_states: int = DEFAULT_ORACLE_MAX_STATES
+    validation: tuple[str, ...] = ()
+    """Labels of the validation partners (population members of the ``validation`` split)."""
 
     def narrowed(self, seeds: int | None = None, robots: Sequence[str] = (), humans: Sequence[str] = ()) -> Study:
         """The first ``seeds`` seeds and the named robots and humans (by exact label, else registry name).
@@ -106,11 +118,16 @@ class Study:
             seeds=self.seeds[:seeds] if seeds is not None else self.seeds,
             train=tuple(t for t in self.train if t in labels),
             test=tuple(t for t in self.test if t in labels),
+            validation=tuple(t for t in self.validation if t in labels),
         )
 
     def group(self, human_label: str) -> str:
-        """``train``, ``test`` or ``""`` for a partner."""
-        return "train" if human_label in self.train else "test" if human_label in self.test else ""
+        """``train``, ``test``, ``validation`` or ``""`` for a partner."""
+        if human_label in self.train:
+            return "train"
+        if human_label in self.test:
+            return "test"
+        return "validation" if human_label in self.validation else ""
 
 
 class _Source:
@@ -212,6 +229,46 @@ def _scenario(value: Any, index: int, src: _Source) -> str:
     return text
 
 
+_GROUP_OF_SPLIT = {"train": "train", "validation": "validation", "held_out": "test"}
+"""A population split's group in the study (held-out members are its test partners)."""
+
+
+def _population(data: Mapping[str, Any], src: _Source) -> list[tuple[Actor, str]]:
+    """The members of the study's population in the chosen splits, as human actors labelled by name."""
+    from hg_marl.agents.humans.population import SPLITS, load_population
+
+    if "population" not in data:
+        if "splits" in data:
+            raise src.error("splits: only with a population", "splits")
+        return []
+    value = data["population"]
+    if not isinstance(value, str) or not value:
+        raise src.error("population: expected the path of a population file", "population")
+    path = Path(value)
+    if not path.is_absolute():
+        path = (src.path.parent / path).resolve()
+    splits = data.get("splits", list(SPLITS))
+    if not isinstance(splits, list) or not splits or not all(isinstance(s, str) for s in splits):
+        raise src.error(f"splits: expected a non-empty list of {', '.join(SPLITS)}", "splits")
+    bad = [s for s in splits if s not in SPLITS]
+    if bad:
+        raise src.error(f"splits: unknown split {bad[0]!r} (expected {', '.join(SPLITS)})", "splits", value=bad[0])
+    try:
+        population = load_population(path)
+    except HgMarlError as exc:
+        raise src.error(f"population: {exc}", "population") from None
+    out = []
+    for split in SPLITS:
+        if split in splits:
+            for member in population.members(split):
+                spec = parse_spec(member.spec, member.name)
+                params = {k: convert(v, REQUIRED, f"{member.name} {k}", from_text=True) for k, v in spec.raw.items()}
+                out.append((Actor(spec.name, params, member.name), split))
+    if not out:
+        raise src.error(f"splits: the population has no members in {', '.join(splits)}", "splits")
+    return out
+
+
 def load_study(path: str | Path) -> Study:
     """Read and validate a study file.
 
@@ -228,7 +285,19 @@ def load_study(path: str | Path) -> Study:
     except tomllib.TOMLDecodeError as exc:
         raise StudyError(f"{path}: not valid TOML: {exc}") from None
     src = _Source(path, text)
-    known = {"name", "scenarios", "seeds", "duration", "robots", "humans", "train", "test", "oracle_max_states"}
+    known = {
+        "name",
+        "scenarios",
+        "seeds",
+        "duration",
+        "robots",
+        "humans",
+        "train",
+        "test",
+        "oracle_max_states",
+        "population",
+        "splits",
+    }
     for key in data:
         if key not in known:
             raise src.error(f"unknown field {key!r} (expected one of {', '.join(sorted(known))})", key)
@@ -267,8 +336,14 @@ def load_study(path: str | Path) -> Study:
             humans.setdefault(actor.label, actor)
             if key in groups:
                 groups[key].append(actor.label)
+    groups["validation"] = []
+    for actor, split in _population(data, src):
+        if actor.label in humans:
+            raise src.error(f"population: member {actor.label!r} has the label of another human", "population")
+        humans[actor.label] = actor
+        groups[_GROUP_OF_SPLIT[split]].append(actor.label)
     if not humans:
-        raise src.error("humans: expected at least one human (humans, train or test)", "humans")
+        raise src.error("humans: expected at least one human (humans, train, test or population)", "humans")
     both = set(groups["train"]) & set(groups["test"])
     if both:
         raise src.error(f"test: {', '.join(sorted(both))} also in train (held-out partners must be new)", "test")
@@ -286,4 +361,5 @@ def load_study(path: str | Path) -> Study:
         train=tuple(groups["train"]),
         test=tuple(groups["test"]),
         oracle_max_states=max_states,
+        validation=tuple(groups["validation"]),
     )

@@ -49,6 +49,10 @@ class StudyError(HgMarlError):
     """A malformed study file or results store entry."""
 
 
+class PopulationError(HgMarlError):
+    """A malformed partner-population file (``path:line`` and the field named)."""
+
+
 class ConfigError(HgMarlError):
     """A bad value in a run, training or command-line configuration."""
 
