@@ -1,0 +1,360 @@
+"""Adaptation headroom: how much a scenario rewards knowing one's partner, before any robot runs.
+
+For an *assumed* partner ``A`` and a *true* partner ``T`` (stationary humans), the entry
+``M[A, T]`` is the exact long-run rate of the robot policy optimal against ``A`` when it
+plays with ``T``, divided by the optimum against ``T`` (:func:`~hg_marl.agents.oracle.oracle_rate`'s
+rate). The diagonal is 1; ``M[A, T] < 1`` is what a robot loses by expecting ``A``.
+
+Where the policy is defined. ``T`` leads the table to states ``A``'s own model never
+reaches, so the policy "optimal against A" must be defined there too. It is defined as
+the robot that *believes* A at every state: the model is built over the states reachable
+from the scenario's layouts under the robot's actions and the answers of *every* human
+of the matrix (a set closed under each human's dynamics), ``A``'s semi-MDP is solved on
+that whole set (the oracle's value iteration: expected seconds to the next success), and
+``pi_A(s)`` is the action minimising ``A``'s expected time from ``s``. This is exact and
+does not depend on which other humans are in the matrix: ``A``'s values at ``s`` depend
+only on the states reachable from ``s`` under ``A``, a subset closed under ``A``. Ties
+(actions within :data:`TIE` seconds of the best) go to the lowest action index, the
+oracle robot's rule; where no action completes with certainty under ``A`` the lowest
+index among the robot's options is taken.
+
+Evaluation. ``pi_A`` against ``T`` is a Markov chain on the same set; the states from
+which it completes with probability 1 are found by graph search (others: infinite time),
+and the expected seconds to the next success are the solution of the sparse linear
+system ``(I - P) V = c`` on them (no iteration tolerance). By the renewal-reward argument
+of :mod:`hg_marl.agents.oracle`, the rate is ``3600 / E[tau + V(s')]`` over the re-drawn
+tables and ``T``'s first answer.
+
+The *adaptation headroom* of a scenario for a set of held-out partners is ``1 - IQM``
+over them of ``M[cooperative, T]`` (the cooperative model is the one the fixed-model
+planner plans with). No symmetry reduction is used (population members are not
+equivariant), so the model is the full one: keep scenarios small (see
+``hg-marl headroom --help``).
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from scipy import sparse
+from scipy.sparse.linalg import spsolve
+from tqdm import tqdm
+
+from hg_marl.agents.oracle import (
+    DEFAULT_MEMORY,
+    DEFAULT_SECONDS,
+    HOUR,
+    Budget,
+    OracleTooLarge,
+    _certain_states,
+    _human_policy,
+    layout_distribution,
+)
+from hg_marl.core import Agent, Scenario, State, World
+from hg_marl.core.scenario import layout_count
+
+TIE = 1e-6
+"""Actions whose expected seconds are within this of the best are tied (lowest index wins)."""
+
+COOPERATIVE = "cooperative"
+"""The assumed partner of the headroom number: the model the fixed-model planner plans with."""
+
+
+@dataclass
+class _Dynamics:
+    """One human's transitions on the joint model (pairs as in the oracle)."""
+
+    t_pair: list[int] = field(default_factory=list)
+    t_next: list[int] = field(default_factory=list)
+    t_prob: list[float] = field(default_factory=list)
+    t_tau: list[float] = field(default_factory=list)
+    regen: list[tuple[int, float, float]] = field(default_factory=list)
+    """(state id, probability, cycle seconds) of the cycle that re-draws the table."""
+
+
+class JointModel:
+    """Robot-turn states closed under the robot's options and every given human's answers.
+
+    Args:
+        world: the world.
+        humans: stationary humans (instances with ``distribution``), in matrix order.
+        failed_actions: model the deliberately infeasible robot action (as the oracle).
+        max_states: refuse beyond this many states.
+        budget: wall-time and memory budget.
+        progress: show a progress bar on stderr.
+    """
+
+    def __init__(
+        self,
+        world: World,
+        humans: Sequence[Any],
+        failed_actions: bool = True,
+        max_states: int = 1_500_000,
+        budget: Budget | None = None,
+        progress: bool = False,
+    ) -> None:
+        self.world, self.humans = world, list(humans)
+        self.failed_actions, self.max_states = failed_actions, max_states
+        self.budget = budget or Budget()
+        self.index: dict[State, int] = {}
+        self.states: list[State] = []
+        self.pair_start: list[int] = []
+        self.pair_action: list[int] = []
+        self.pair_terminal: list[bool] = []
+        self.dynamics = [_Dynamics() for _ in self.humans]
+        if layout_count(world.scenario) > max_states:
+            raise OracleTooLarge(
+                f"the headroom model of {world.scenario.name!r}: more initial layouts than max_states={max_states}"
+            )
+        layouts = layout_distribution(world)
+        table = world.table
+        wait = table.wait[Agent.ROBOT]
+        for dyn, human in zip(self.dynamics, self.humans, strict=True):
+            seen = wait if getattr(human, "uses_robot_action", False) else -1
+            for state, q in layouts:
+                for h, p in human.distribution(world, state, seen):
+                    if p > 0.0:
+                        nxt, _, d = table.successor(state, Agent.HUMAN, h)
+                        dyn.regen.append((self._id(nxt), q * p, max(world.durations.wait, d)))
+        for state, _ in layouts:
+            self._id(state)
+        self._explore(progress)
+
+    def _id(self, state: State) -> int:
+        k = self.index.get(state)
+        if k is None:
+            if len(self.states) >= self.max_states:
+                raise OracleTooLarge(
+                    f"the headroom model of {self.world.scenario.name!r} exceeds max_states={self.max_states} "
+                    "states; use a smaller scenario or fewer humans"
+                )
+            k = self.index[state] = len(self.states)
+            self.states.append(state)
+        return k
+
+    def _options(self, state: State) -> list[int]:
+        feasible = self.world.feasible_indices(state, Agent.ROBOT)
+        if self.failed_actions:
+            taken = set(feasible)
+            failing = next((i for i in range(self.world.n_actions(Agent.ROBOT)) if i not in taken), None)
+            if failing is not None:
+                feasible.append(failing)
+        return feasible
+
+    def _explore(self, progress: bool) -> None:
+        table = self.world.table
+        wait = table.wait[Agent.ROBOT]
+        bar = tqdm(desc=f"headroom {self.world.scenario.name}: states", unit=" states", disable=not progress, file=sys.stderr)
+        k = 0
+        try:
+            while k < len(self.states):
+                if k % 64 == 0:
+                    self.budget.check(self.world, len(self.states), memory=k % 2048 == 0)
+                    bar.update(k - bar.n)
+                state = self.states[k]
+                self.pair_start.append(len(self.pair_action))
+                for a in self._options(state):
+                    pair = len(self.pair_action)
+                    self.pair_action.append(a)
+                    mid, ok, d_robot = table.successor(state, Agent.ROBOT, a)
+                    terminal = ok and a == wait and table.is_clean(state.where)
+                    self.pair_terminal.append(terminal)
+                    if terminal:
+                        continue
+                    for dyn, human in zip(self.dynamics, self.humans, strict=True):
+                        seen = a if ok and getattr(human, "uses_robot_action", False) else -1
+                        for h, p in human.distribution(self.world, mid, seen):
+                            if p > 0.0:
+                                nxt, _, d_human = table.successor(mid, Agent.HUMAN, h)
+                                dyn.t_pair.append(pair)
+                                dyn.t_next.append(self._id(nxt))
+                                dyn.t_prob.append(p)
+                                dyn.t_tau.append(max(d_robot, d_human))
+                k += 1
+            bar.update(k - bar.n)
+        finally:
+            bar.close()
+        self.n = len(self.states)
+        self.n_pairs = len(self.pair_action)
+        self.starts = np.array(self.pair_start, dtype=np.int64)
+        self.pair_state = np.repeat(np.arange(self.n), np.diff([*self.pair_start, self.n_pairs]))
+        self.terminal = np.array(self.pair_terminal, dtype=bool)
+        self.actions = np.array(self.pair_action, dtype=np.int64)
+
+    def arrays(self, i: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Human ``i``'s transitions as arrays: pair, next state, probability, seconds."""
+        d = self.dynamics[i]
+        return (
+            np.array(d.t_pair, dtype=np.int64),
+            np.array(d.t_next, dtype=np.int64),
+            np.array(d.t_prob, dtype=float),
+            np.array(d.t_tau, dtype=float),
+        )
+
+    def optimal_policy(self, i: int, tolerance: float = 1e-9, max_iterations: int = 200_000) -> np.ndarray:
+        """The pair index chosen at every state by the policy optimal against human ``i``."""
+        t_pair, t_next, t_prob, t_tau = self.arrays(i)
+        n, n_pairs = self.n, self.n_pairs
+        cost = np.bincount(t_pair, weights=t_prob * t_tau, minlength=n_pairs)
+        alive, ok = _certain_states(n, self.pair_state, self.terminal, t_pair, t_next)
+        values = np.zeros(n)
+
+        def q_of(v: np.ndarray) -> np.ndarray:
+            q = cost + np.bincount(t_pair, weights=t_prob * np.where(alive[t_next], v[t_next], 0.0), minlength=n_pairs)
+            return np.where(ok, np.where(self.terminal, 0.0, q), np.inf)
+
+        if alive.any():
+            for it in range(1, max_iterations + 1):
+                new = np.where(alive, np.minimum.reduceat(q_of(values), self.starts), 0.0)
+                delta = float(np.max(np.abs(new - values)))
+                values = new
+                if it % 64 == 0:
+                    self.budget.check(self.world, n)
+                if delta < tolerance:
+                    break
+        q = q_of(values)
+        best = np.minimum.reduceat(q, self.starts)
+        tied = (q <= best[self.pair_state] + TIE) | ~np.isfinite(best[self.pair_state])  # nothing certain: all tied
+        key = np.where(tied, self.actions, np.iinfo(np.int64).max)
+        lowest = np.minimum.reduceat(key, self.starts)
+        mask = tied & (self.actions == lowest[self.pair_state])  # a state's actions are distinct
+        choice = np.full(n, -1, dtype=np.int64)
+        choice[self.pair_state[mask]] = np.flatnonzero(mask)
+        return choice
+
+    def rate(self, choice: np.ndarray, i: int) -> float:
+        """Exact tasks per hour of the policy ``choice`` (a pair per state) against human ``i``."""
+        t_pair, t_next, t_prob, t_tau = self.arrays(i)
+        n = self.n
+        chosen = np.zeros(self.n_pairs, dtype=bool)
+        chosen[choice] = True
+        done = self.terminal[choice]  # states whose chosen pair completes the task
+        keep = chosen[t_pair]
+        rows = self.pair_state[t_pair[keep]]
+        cols, probs, taus = t_next[keep], t_prob[keep], t_tau[keep]
+        graph = sparse.csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(n, n))
+        # states that can reach a completion, then those that may reach a state that cannot
+        reach = _backward(graph, done)
+        doomed = _backward(graph, ~reach)
+        certain = ~doomed
+        idx = np.flatnonzero(certain)
+        pos = np.full(n, -1, dtype=np.int64)
+        pos[idx] = np.arange(len(idx))
+        values = np.full(n, math.inf)
+        if len(idx):
+            inner = certain[rows] & certain[cols] & ~done[rows]
+            m = len(idx)
+            p = sparse.csr_matrix((probs[inner], (pos[rows[inner]], pos[cols[inner]])), shape=(m, m))
+            c = np.bincount(pos[rows[certain[rows] & ~done[rows]]], weights=(probs * taus)[certain[rows] & ~done[rows]], minlength=m)
+            values[idx] = np.atleast_1d(spsolve((sparse.identity(m, format="csr") - p).tocsc(), c))
+        d = self.dynamics[i]
+        expected = math.fsum(p * (tau + values[s]) for s, p, tau in d.regen)
+        return 0.0 if math.isinf(expected) else HOUR / expected
+
+
+def _backward(graph: sparse.csr_matrix, seeds: np.ndarray) -> np.ndarray:
+    """States from which some path of ``graph`` reaches a ``seeds`` state."""
+    reverse = graph.T.tocsr()
+    found = seeds.copy()
+    frontier = np.flatnonzero(seeds)
+    while len(frontier):
+        hit = reverse[frontier].indices
+        new = np.unique(hit[~found[hit]])
+        found[new] = True
+        frontier = new
+    return found
+
+
+@dataclass(frozen=True)
+class HeadroomResult:
+    """The matrix ``ratio[A][T]`` and the rates it is made of."""
+
+    scenario: str
+    assumed: tuple[str, ...]
+    """Row labels: the partners the robot's policy is optimal against."""
+    true: tuple[str, ...]
+    """Column labels: the partners it plays with."""
+    rates: np.ndarray
+    """``rates[a, t]``: tasks per hour of ``pi_assumed[a]`` against ``true[t]``."""
+    optimum: np.ndarray
+    """``optimum[t]``: the optimal tasks per hour against ``true[t]``."""
+    held_out: tuple[str, ...]
+    """The columns the headroom number is taken over."""
+    n_states: int
+    seconds: float
+
+    @property
+    def ratio(self) -> np.ndarray:
+        """``rates / optimum`` (NaN where the optimum is 0: no robot completes with that partner)."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(self.optimum > 0, self.rates / np.where(self.optimum > 0, self.optimum, 1.0), np.nan)
+
+    @property
+    def headroom(self) -> float:
+        """``1 - IQM`` over the held-out columns of the cooperative row (NaN if none is defined)."""
+        from scipy.stats import trim_mean
+
+        row = self.ratio[self.assumed.index(COOPERATIVE)]
+        values = [row[self.true.index(h)] for h in self.held_out]
+        values = [v for v in values if not np.isnan(v)]
+        return float("nan") if not values else 1.0 - float(trim_mean(np.array(values), 0.25))  # rliable's IQM
+
+
+def headroom(
+    scenario: str | Scenario | World,
+    true: Sequence[tuple[str, str]],
+    held_out: Sequence[str] | None = None,
+    *,
+    assumed: Sequence[tuple[str, str]] = (),
+    failed_actions: bool = True,
+    max_states: int = 1_500_000,
+    max_seconds: float | None = DEFAULT_SECONDS,
+    max_memory: int | None = DEFAULT_MEMORY,
+    progress: bool = False,
+) -> HeadroomResult:
+    """The headroom matrix of ``scenario``.
+
+    Args:
+        scenario: scenario name / path / Scenario / World.
+        true: (label, human spec) of the true partners (the columns).
+        held_out: labels of the columns the headroom number is taken over (default: all).
+        assumed: extra (label, spec) rows; the cooperative model and every true partner
+            are always rows (cooperative first).
+        failed_actions: as :func:`~hg_marl.agents.oracle.oracle_rate`.
+        max_states, max_seconds, max_memory: the model's budget (:class:`OracleTooLarge` beyond).
+        progress: progress bars on stderr.
+    """
+    start = time.perf_counter()
+    world = scenario if isinstance(scenario, World) else World(scenario)
+    rows: dict[str, str] = {COOPERATIVE: COOPERATIVE}
+    for label, spec in [*assumed, *true]:
+        rows.setdefault(label, spec)
+    specs = dict(rows)
+    for label, spec in true:
+        specs.setdefault(label, spec)
+    labels = list(specs)
+    humans = [_human_policy(specs[label], world) for label in labels]
+    budget = Budget(max_seconds, max_memory, start)
+    model = JointModel(world, humans, failed_actions, max_states, budget, progress)
+    col = [labels.index(label) for label, _ in true]
+    policies = {}
+    for label in tqdm(list(rows), desc="headroom: policies", disable=not progress, file=sys.stderr):
+        policies[label] = model.optimal_policy(labels.index(label))
+    rates = np.array([[model.rate(policies[a], j) for j in col] for a in rows])
+    optimum = np.array([model.rate(policies[label], labels.index(label)) for label, _ in true])
+    return HeadroomResult(
+        scenario=world.scenario.name,
+        assumed=tuple(rows),
+        true=tuple(label for label, _ in true),
+        rates=rates,
+        optimum=optimum,
+        held_out=tuple(held_out) if held_out is not None else tuple(label for label, _ in true),
+        n_states=model.n,
+        seconds=time.perf_counter() - start,
+    )
