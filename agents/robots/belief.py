@@ -20,8 +20,11 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   ``hedge="map"`` plays the most probable member's best response. ``Q_m`` is the
   oracle's one-step backup of ``V_m`` through member ``m``'s replies
   (``_Model.replies``, the oracle's own transition rule).
-- **Off every member's model** (a state no member's dynamics reach) it plays the
-  oracle robot's fallback: the planner's move, never a wait that changes nothing.
+- **Off every member's model** (a state no member's dynamics reach), and when it would
+  wait a second time at an unchanged unfinished table (the partner waits too, which no
+  member predicts, so the belief cannot move), it plays the oracle robot's fallback:
+  the planner's move, or a feasible non-wait move when the planner would wait as well;
+  once stalled, the planner drives until the partner does something or a task is solved.
 
 The members' oracles are solved at the first reset in a world and kept for the
 robot's lifetime (a pure cache: the same inputs give the same values).
@@ -103,6 +106,8 @@ class BeliefRobot(Robot):
             self._models = [_Model(world, h, True, 1) for h in humans]
             self._world = world
         self._relabel = Relabel(world)
+        self._wait = world.n_actions(Agent.ROBOT) - 1
+        self._planner_mode = False
         self.posterior.reset()
         self._prev = None
         self._fallback.result = self._results[0]
@@ -154,13 +159,31 @@ class BeliefRobot(Robot):
             for a, v in q.items():
                 mixed[a] = mixed.get(a, 0.0) + w * v
         best = self.member_names[int(np.argmax(weights))]
-        if total <= 0.0 or not mixed or all(math.isinf(v) for v in mixed.values()):
+        action = min(mixed, key=lambda a: (mixed[a], a)) if mixed else -1
+        off_model = total <= 0.0 or not mixed or math.isinf(mixed[action])
+        # A wait on an unfinished table at the very state of the previous decision: the
+        # partner waited too (no member predicted that, so it is no evidence and the
+        # belief cannot move). Waiting again would wait forever: play the fallback.
+        stalled = (
+            not off_model
+            and action == self._wait
+            and self._prev is not None
+            and self._prev[0] == state
+            and not world.is_clean(state)
+        )
+        # Once stalled, the planner drives until the partner acts or a task is solved (new
+        # evidence): alternating between two experts that disagree would loop.
+        human_acted = turn.last_actions[1] >= 0 and turn.last_actions[1] != world.n_actions(Agent.HUMAN) - 1
+        if human_acted or turn.reward > 0:
+            self._planner_mode = False
+        self._planner_mode = self._planner_mode or stalled
+        if off_model or self._planner_mode:
             action = self._fallback._fallback(turn)
             record = self._fallback.last_decision
             assert record is not None
-            self.last_decision = replace(record, reason="off every member's model: " + record.reason, partner=best)
+            why = "off every member's model: " if off_model else "partner stalled, the planner drives: "
+            self.last_decision = replace(record, reason=why + record.reason, partner=best)
         else:
-            action = min(mixed, key=lambda a: (mixed[a], a))
             self.last_decision = Decision(
                 "belief",
                 int(action),
