@@ -21,8 +21,9 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   oracle's one-step backup of ``V_m`` through member ``m``'s replies
   (``_Model.replies``, the oracle's own transition rule).
 - **Off every member's model** (a state no member's dynamics reach), and when it would
-  wait a second time at an unchanged unfinished table (the partner waits too, which no
-  member predicts, so the belief cannot move), it plays the oracle robot's fallback:
+  wait again at an unchanged unfinished table after a run of shared waits that the
+  belief makes unlikely (< 5%: the partner waits where its members would act, so the
+  belief cannot move), it plays the oracle robot's fallback:
   the planner's move, or a feasible non-wait move when the planner would wait as well;
   once stalled, the planner drives until the partner does something or a task is solved.
 
@@ -47,6 +48,10 @@ from hg_marl.core.errors import RobotError
 from hg_marl.policy import Decision, Turn
 
 HEDGES = ("qmdp", "map")
+NEGLIGIBLE = 1e-3
+"""Members with less posterior mass than this have no say in the mixture (nor its cost)."""
+STALL_LIKELIHOOD = 0.05
+"""A run of shared waits less likely than this under the belief means the partner is stalled."""
 
 
 class BeliefRobot(Robot):
@@ -108,6 +113,7 @@ class BeliefRobot(Robot):
         self._relabel = Relabel(world)
         self._wait = world.n_actions(Agent.ROBOT) - 1
         self._planner_mode = False
+        self._wait_run = 1.0
         self.posterior.reset()
         self._prev = None
         self._fallback.result = self._results[0]
@@ -140,6 +146,29 @@ class BeliefRobot(Robot):
             out[a] = q
         return out
 
+    def _unexplained_waits(self, turn: Turn, weights: list[float]) -> bool:
+        """Whether robot and partner have both been waiting at this unfinished table longer than the belief explains.
+
+        The run of cycles in which both waited and nothing changed is scored by the
+        mixture's probability that the partner waits each time (with the posterior's
+        ``epsilon`` slack); below ``STALL_LIKELIHOOD`` the wait is unexplained: an idle
+        member makes long waits likely, a busy one makes even two unlikely.
+        """
+        world, state = turn.world, turn.state
+        if self._prev is None or self._prev != (state, self._wait) or world.is_clean(state):
+            self._wait_run = 1.0
+            return False
+        mid = world.step(state, Agent.ROBOT, self._wait).state
+        n = len(world.feasible_indices(mid, Agent.HUMAN))
+        eps = self.posterior.epsilon
+        human_wait = world.n_actions(Agent.HUMAN) - 1
+        p = 0.0
+        for w, human in zip(weights, self.posterior.humans, strict=True):
+            dist = dict(human.distribution(world, mid, self._wait if human.uses_robot_action else -1))
+            p += w * ((1.0 - eps) * dist.get(human_wait, 0.0) + eps / max(n, 1))
+        self._wait_run *= p
+        return self._wait_run < STALL_LIKELIHOOD
+
     def act(self, turn: Turn) -> int:
         """Update the belief, then the action with the least expected seconds under it."""
         start = time.perf_counter()
@@ -151,6 +180,8 @@ class BeliefRobot(Robot):
         mixed: dict[int, float] = {}
         total = 0.0
         for m in order:
+            if weights[m] < NEGLIGIBLE:
+                continue  # no say: also keeps 0 * inf (a hopeless action under it) out of the sum
             q = self.q_values(world, state, m)
             if not q or all(math.isinf(v) for v in q.values()):
                 continue  # off this member's model (or hopeless there): no say
@@ -164,13 +195,7 @@ class BeliefRobot(Robot):
         # A wait on an unfinished table at the very state of the previous decision: the
         # partner waited too (no member predicted that, so it is no evidence and the
         # belief cannot move). Waiting again would wait forever: play the fallback.
-        stalled = (
-            not off_model
-            and action == self._wait
-            and self._prev is not None
-            and self._prev[0] == state
-            and not world.is_clean(state)
-        )
+        stalled = not off_model and action == self._wait and self._unexplained_waits(turn, weights)
         # Once stalled, the planner drives until the partner acts or a task is solved (new
         # evidence): alternating between two experts that disagree would loop.
         human_acted = turn.last_actions[1] >= 0 and turn.last_actions[1] != world.n_actions(Agent.HUMAN) - 1
