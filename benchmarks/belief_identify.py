@@ -47,14 +47,16 @@ def identify(population: str, scenario: str, seeds: int, duration: float) -> dic
         result = headroom(scenario, [(target.name, target.spec)], assumed=[(m.name, m.spec) for m in believed])
         column = result.ratio[:, 0]
         near = {
-            m.spec for m in believed if m.name in result.assumed and column[result.assumed.index(m.name)] >= NEIGHBOURHOOD
+            m.spec
+            for m in believed
+            if m.name in result.assumed and column[result.assumed.index(m.name)] >= NEIGHBOURHOOD
         }
         for seed in range(seeds):
             robot: Any = make_robot("belief", population=population)
             trace: list[tuple[float, float, int]] = []
             inner = robot.act
 
-            def act(turn: Any, robot: Any = robot, inner: Any = inner, trace: list = trace) -> int:
+            def act(turn: Any, robot: Any = robot, inner: Any = inner, trace: list = trace, near: set = near) -> int:
                 action = inner(turn)
                 post = robot.posterior.posterior()
                 trace.append((turn.clock, sum(post[s] for s in near), robot.posterior.observations))
@@ -65,9 +67,8 @@ def identify(population: str, scenario: str, seeds: int, duration: float) -> dic
             out = run(robot, make_human(target.spec), RunConfig(scenario=scenario, duration=duration, seed=seed))
             wall = (time.perf_counter() - start) / max(len(out.log), 1)
             start = time.perf_counter()
-            plain = run(
-                make_robot("planner"), make_human(target.spec), RunConfig(scenario=scenario, duration=duration, seed=seed)
-            )
+            config = RunConfig(scenario=scenario, duration=duration, seed=seed)
+            plain = run(make_robot("planner"), make_human(target.spec), config)
             plain_wall = (time.perf_counter() - start) / max(len(plain.log), 1)
             when = next(
                 (i for i in range(len(trace)) if all(mass >= MASS for _, mass, _ in trace[i:])),
@@ -95,7 +96,8 @@ def main() -> None:
     parser.add_argument("--duration", type=float, default=600.0)
     args = parser.parse_args()
     rows = identify(args.population, args.scenario, args.seeds, args.duration)["rows"]
-    print(f"{'member':8} {'seed':>4} {'|nbhd|':>6} {'identified (s)':>15} {'(actions)':>9} {'ms/decision':>12} {'planner':>8}")
+    head = ("member", "seed", "|nbhd|", "identified (s)", "(actions)", "ms/decision", "planner")
+    print(f"{head[0]:8} {head[1]:>4} {head[2]:>6} {head[3]:>15} {head[4]:>9} {head[5]:>12} {head[6]:>8}")
     for r in rows:
         print(
             f"{r['member']:8} {r['seed']:>4} {r['neighbourhood']:>6} {r['seconds']:>15.1f} {r['actions']:>9} "
