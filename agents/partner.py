@@ -144,9 +144,7 @@ class PartnerPosterior:
         self.decay, self.epsilon, self.idle_in_model = decay, epsilon, idle_in_model
         self.humans: list[Any] = []
         for spec in self.types:
-            name, _, params = spec.partition(":")
-            kwargs = dict(kv.split("=", 1) for kv in params.split(",")) if params else {}
-            self.humans.append(make_human(name, **kwargs))
+            self.humans.append(make_human(spec))  # the registry's one spec parser types the values
         self.reset()
 
     def reset(self) -> None:

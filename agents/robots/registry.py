@@ -6,6 +6,7 @@ import inspect
 from typing import Any
 
 from hg_marl.agents.robots.base import Robot
+from hg_marl.agents.robots.belief import BeliefRobot
 from hg_marl.agents.robots.habit import HabitRobot
 from hg_marl.agents.robots.hybrid import HybridRobot
 from hg_marl.agents.robots.planner import PlannerRobot
@@ -14,7 +15,9 @@ from hg_marl.agents.robots.uniform import RandomRobot
 from hg_marl.core.errors import RobotError
 from hg_marl.core.spec import construct
 
-ROBOTS: dict[str, type[Robot]] = {c.name: c for c in (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot)}
+ROBOTS: dict[str, type[Robot]] = {
+    c.name: c for c in (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot, BeliefRobot)
+}
 """Robot classes by name (a registry of classes: the only module-level table)."""
 
 

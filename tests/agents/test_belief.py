@@ -1,0 +1,107 @@
+"""The belief robot: a posterior over a population's members, acting on their exact best responses."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from partners import PARTNERS
+
+from hg_marl.agents.humans import make_human
+from hg_marl.agents.oracle import oracle_rate
+from hg_marl.agents.robots import make_robot
+from hg_marl.agents.robots.belief import BeliefRobot
+from hg_marl.core import Agent, World
+from hg_marl.core.errors import RobotError
+from hg_marl.training.runner import RunConfig, run
+
+FORCED = "forced_coordination"
+MEMBERS = {
+    "coop": ("train", "preference"),
+    "mat": ("train", "preference:handover=-1.0,shared=1.0"),
+    "idler": ("validation", "preference:p_idle=0.5,accept=0.3"),
+    "other": ("held_out", "preference:handover=-0.5,shared=0.8,accept=0.2"),
+}
+
+
+def _population(tmp_path: Path, scenario: str = "paper2015") -> str:
+    text = f'name = "t"\nscenario = "{scenario}"\n'
+    for name, (split, spec) in MEMBERS.items():
+        text += f'\n[[members]]\nname = "{name}"\nsplit = "{split}"\nspec = "{spec}"\n'
+    path = tmp_path / "population.toml"
+    path.write_text(text)
+    return str(path)
+
+
+class _Fixed:
+    """A stand-in member that always does one action."""
+
+    uses_robot_action = False
+
+    def __init__(self, action: int) -> None:
+        self.action = action
+
+    def distribution(self, world: World, state: object, robot_action: int = -1) -> list[tuple[int, float]]:
+        return [(self.action, 1.0)]
+
+
+def test_belief_follows_a_switch_within_the_bound_worked_by_hand(tmp_path: Path) -> None:
+    """decay 0.9, epsilon 0.05, two members each sure of a different action.
+
+    Each telling action moves the log-odds by L = log((0.95 + 0.05/n) / (0.05/n)). After
+    many actions of A the odds saturate at -L / (1 - 0.9) = -10 L; after k actions of B
+    they are 10 L (1 - 2 * 0.9**k), which passes log(9) (90% on B) at the first k with
+    0.9**k <= (1 - log(9) / (10 L)) / 2.
+    """
+    robot = BeliefRobot(population=_population(tmp_path), splits="train", decay=0.9, epsilon=0.05)
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(0))
+    feasible = world.feasible_indices(state, Agent.HUMAN)
+    a, b = feasible[0], feasible[-1]
+    post = robot.posterior
+    post.humans = [_Fixed(a), _Fixed(b)]
+    for _ in range(200):
+        post.observe(world, state, -1, a)
+    n = len(feasible)
+    big_l = math.log((0.95 + 0.05 / n) / (0.05 / n))
+    expected = next(k for k in range(1, 100) if 0.9**k <= (1 - math.log(9) / (10 * big_l)) / 2)
+    steps = 0
+    while post.posterior()[post.types[1]] < 0.9:
+        post.observe(world, state, -1, b)
+        steps += 1
+    assert steps == expected
+
+
+def test_a_robot_that_knows_its_partner_plays_near_its_best_response(tmp_path: Path) -> None:
+    """Forced coordination with an idle partner who rarely accepts: the fixed-model planner
+    waits at the handover place in vain; the belief robot identifies the member and plays
+    its exact best response (within 10% of the oracle's expected tasks)."""
+    population = _population(tmp_path, FORCED)
+    partner = MEMBERS["idler"][1]
+    config = RunConfig(scenario=FORCED, duration=1100, seed=0)
+    oracle_tasks = oracle_rate(FORCED, partner).rate_per_hour * 1100 / 3600
+    belief = run(make_robot("belief", population=population), make_human(partner), config)
+    planner = run(make_robot("planner"), make_human(partner), config)
+    assert belief.summary["tasks_solved"] >= 0.9 * oracle_tasks
+    assert belief.summary["tasks_solved"] > planner.summary["tasks_solved"]
+    assert belief.log["partner"].iloc[-1] == "idler"
+
+
+@pytest.mark.parametrize("partner", sorted(PARTNERS))
+def test_off_every_members_model_the_robot_keeps_solving(tmp_path: Path, partner: str) -> None:
+    log = run(
+        make_robot("belief", population=_population(tmp_path)), PARTNERS[partner](), RunConfig(duration=600, seed=0)
+    ).log
+    second_half = log[log["time"] > 300]
+    assert second_half["tasks_solved"].max() > log[log["time"] <= 300]["tasks_solved"].max()
+
+
+def test_bad_settings_are_one_line(tmp_path: Path) -> None:
+    with pytest.raises(RobotError, match="population"):
+        make_robot("belief")
+    with pytest.raises(RobotError, match="hedge"):
+        make_robot("belief", population=_population(tmp_path), hedge="maybe")
+    with pytest.raises(RobotError, match="splits"):
+        make_robot("belief", population=_population(tmp_path), splits=",")
