@@ -13,11 +13,16 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   with ``epsilon`` uniform slack so that no single surprise rules a member out) and old
   evidence decays by ``decay`` per telling action, so a partner who changes is followed
   within about ``1 / (1 - decay)`` telling actions (``tests/agents/test_belief.py``).
-- **Plans.** ``hedge="qmdp"`` (default) takes ``argmin_a sum_m b(m) Q_m(s, a)``, the
-  expected seconds to the next success under the posterior mixture, assuming the
-  partner's identity is revealed after this step (QMDP): a robot that is unsure hedges
-  between the members' best responses, one that knows commits to its member's.
-  ``hedge="map"`` plays the most probable member's best response. ``Q_m`` is the
+- **Plans.** ``hedge="map"`` (default) plays the most probable member's best response;
+  ``hedge="qmdp"`` takes ``argmin_a sum_m b(m) Q_m(s, a)``, the expected seconds to the
+  next success under the posterior mixture, assuming the partner's identity is revealed
+  after this step (QMDP): a robot that is unsure hedges between the members' best
+  responses, one that knows commits to its member's. MAP is the default because it
+  measured better on the bundled hard layouts (BR-Prox IQM on held-out members, 3
+  seeds: 0.98 / 0.96 against QMDP's 0.90 / 0.95 on ``forced_coordination`` /
+  ``asymmetric_advantages``): the belief settles within a few telling actions, and
+  QMDP's mixture, which assumes the uncertainty resolves after one step, keeps paying
+  for members the partner has already ruled out in the states where they disagree. ``Q_m`` is the
   oracle's one-step backup of ``V_m`` through member ``m``'s replies
   (``_Model.replies``, the oracle's own transition rule).
 - **Off every member's model** (a state no member's dynamics reach), and when it would
@@ -62,7 +67,7 @@ class BeliefRobot(Robot):
         splits: the members the robot may believe in, comma-separated splits of the file.
         decay: weight kept by past evidence per telling action (1: never forget).
         epsilon: probability the partner does any feasible action whatever its member.
-        hedge: ``"qmdp"`` (expected seconds under the mixture) or ``"map"`` (most probable member).
+        hedge: ``"map"`` (most probable member) or ``"qmdp"`` (expected seconds under the mixture).
     """
 
     name = "belief"
@@ -73,7 +78,7 @@ class BeliefRobot(Robot):
         splits: str = "train,validation",
         decay: float = 0.9,
         epsilon: float = 0.05,
-        hedge: str = "qmdp",
+        hedge: str = "map",
     ) -> None:
         from hg_marl.agents.humans.population import load_population
 

@@ -105,3 +105,23 @@ def test_bad_settings_are_one_line(tmp_path: Path) -> None:
         make_robot("belief", population=_population(tmp_path), hedge="maybe")
     with pytest.raises(RobotError, match="splits"):
         make_robot("belief", population=_population(tmp_path), splits=",")
+
+
+def test_the_readme_command_runs_as_written() -> None:
+    import shlex
+    import subprocess
+    import sys
+
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
+    line = next(x for x in readme.splitlines() if x.startswith("hg-marl run --robot belief"))
+    args = shlex.split(line)[1:]
+    proc = subprocess.run(
+        [sys.executable, "-c", "from hg_marl.training.cli import main; main()", *args],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        cwd=Path(__file__).resolve().parents[2],
+    )
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    solved = int(next(x for x in proc.stdout.splitlines() if "tasks solved" in x).split()[-1])
+    assert solved > 0
