@@ -36,7 +36,8 @@ def _bootstrap_median(values: list[float], reps: int = 2000) -> tuple[float, flo
     rng = np.random.default_rng(0)
     arr = np.asarray(values, dtype=float)
     meds = np.median(rng.choice(arr, size=(reps, arr.size)), axis=1)
-    return float(np.percentile(meds, 2.5)), float(np.percentile(meds, 97.5))
+    # no interpolation: a resample whose median is "never" (inf) gives inf, not NaN
+    return float(np.percentile(meds, 2.5, method="lower")), float(np.percentile(meds, 97.5, method="higher"))
 
 
 def identify(population: str, scenario: str, seeds: int, duration: float) -> dict[str, Any]:
