@@ -19,7 +19,7 @@ nox.options.error_on_missing_interpreters = True
 
 TORCH = "torch==2.13.0"
 # The lowest versions pyproject.toml declares; core_lowest proves them.
-LOWEST = ["gymnasium==1.0.0", "pettingzoo==1.27.0", "numpy==1.26.4"]
+LOWEST = ["gymnasium==1.1.0", "pettingzoo==1.27.0", "numpy==1.26.4"]
 CORE_TESTS = ["tests/env", "tests/core"]
 
 
