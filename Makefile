@@ -19,10 +19,10 @@ $(BIN)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	@echo "setup [2/3]: upgrading pip"
 	$(BIN)/python -m pip install --upgrade --progress-bar on pip
-	@echo "setup [3/3]: installing hg-marl with its dev, sb3 and video extras: numpy, gymnasium, pettingzoo,"
+	@echo "setup [3/3]: installing hg-marl with its dev, sb3, video and play extras: numpy, gymnasium, pettingzoo,"
 	@echo "             matplotlib, pandas, torch==2.13.0 (CPU), stable-baselines3, sb3-contrib, imageio-ffmpeg,"
-	@echo "             pytest, ruff, mypy, nox (1-7 min; pip prints each package as it goes)"
-	$(BIN)/python -m pip install --progress-bar on -e ".[dev,sb3,video]"
+	@echo "             starlette, uvicorn, pytest, ruff, mypy, nox (1-7 min; pip prints each package as it goes)"
+	$(BIN)/python -m pip install --progress-bar on -e ".[dev,sb3,video,play]"
 	@echo "setup: done ($(VENV))"
 	touch $@
 
@@ -53,7 +53,7 @@ test-browser: setup
 # Mutation testing (mutation/README.md): a seeded sample of mutants per module of
 # mutation/modules.toml; prints the score per module and every survivor.
 $(BIN)/.mutation: $(BIN)/.installed
-	$(BIN)/python -m pip install --quiet -e ".[dev,sb3,video,mutation]"
+	$(BIN)/python -m pip install --quiet -e ".[dev,sb3,video,play,mutation]"
 	touch $@
 
 test-mutation: $(BIN)/.mutation

@@ -87,11 +87,18 @@ class Study:
     validation: tuple[str, ...] = ()
     """Labels of the validation partners (population members of the ``validation`` split)."""
 
-    def narrowed(self, seeds: int | None = None, robots: Sequence[str] = (), humans: Sequence[str] = ()) -> Study:
-        """The first ``seeds`` seeds and the named robots and humans (by exact label, else registry name).
+    def narrowed(
+        self,
+        seeds: int | None = None,
+        robots: Sequence[str] = (),
+        humans: Sequence[str] = (),
+        scenarios: Sequence[str] = (),
+    ) -> Study:
+        """The first ``seeds`` seeds, the named robots and humans (by exact label, else registry name) and scenarios.
 
         Raises:
-            StudyError: a name that is in the study under neither label nor registry name.
+            StudyError: a name that is in the study under neither label nor registry name, or
+                a scenario the study does not name.
         """
 
         def pick(actors: tuple[Actor, ...], names: Sequence[str], option: str) -> tuple[Actor, ...]:
@@ -111,8 +118,20 @@ class Study:
         labels = {h.label for h in chosen_humans}
         if seeds is not None and seeds < 1:
             raise StudyError(f"--seeds: expected at least 1, got {seeds}")
+
+        # A scenario is named as in the study, or a .toml path by its file stem.
+        def named(scenario: str) -> bool:
+            return scenario in scenarios or (scenario.endswith(".toml") and Path(scenario).stem in scenarios)
+
+        known_names = set(self.scenarios) | {Path(s).stem for s in self.scenarios if s.endswith(".toml")}
+        unknown = [s for s in scenarios if s not in known_names]
+        if unknown:
+            raise StudyError(
+                f"--scenarios: {', '.join(unknown)} not in {self.path} (it has {', '.join(self.scenarios)})"
+            )
         return replace(
             self,
+            scenarios=tuple(s for s in self.scenarios if named(s)) if scenarios else self.scenarios,
             robots=pick(self.robots, robots, "--robots"),
             humans=chosen_humans,
             seeds=self.seeds[:seeds] if seeds is not None else self.seeds,

@@ -99,7 +99,9 @@ def test_vectorised_bootstrap_matches_rliable() -> None:
     ours = stratified_bootstrap([x, y], improvement, 4000)[:, 0]
     np.random.seed(0)
     _, theirs = rly.get_interval_estimates(
-        {"p": [x, y]}, lambda a, b: np.array([metrics.probability_of_improvement(a, b)]), reps=400,
+        {"p": [x, y]},
+        lambda a, b: np.array([metrics.probability_of_improvement(a, b)]),
+        reps=400,
         random_state=np.random.RandomState(0),
     )
     assert ours == pytest.approx(theirs["p"][:, 0], abs=0.05)

@@ -77,6 +77,17 @@ def test_narrowing_picks_seeds_robots_humans() -> None:
         load_study(TINY).narrowed(robots=["nobody"])
 
 
+def test_narrowing_picks_scenarios_by_name_or_file_stem(tmp_path: Path) -> None:
+    layout = tmp_path / "my_layout.toml"
+    layout.write_text((Path(__file__).parents[2] / "hg_marl/core/scenarios/forced_coordination.toml").read_text())
+    study = load_study(_study(tmp_path, GOOD + 'scenarios = ["paper2015", "my_layout.toml"]\n'))
+    assert study.narrowed(scenarios=["paper2015"]).scenarios == ("paper2015",)
+    assert study.narrowed(scenarios=["my_layout"]).scenarios == (str(layout.resolve()),)
+    assert study.narrowed().scenarios == study.scenarios
+    with pytest.raises(StudyError, match="--scenarios: roboergosum not in"):
+        study.narrowed(scenarios=["roboergosum"])
+
+
 def test_scores_are_rate_over_oracle_rate(tmp_path: Path) -> None:
     agg = evaluate(load_study(TINY).narrowed(seeds=2), tmp_path)
     frame = pd.read_csv(tmp_path / "scores.csv")

@@ -28,6 +28,7 @@ def register(app: typer.Typer) -> None:
         seeds: Annotated[int | None, typer.Option(help="Only the study's first N seeds.")] = None,
         robots: Annotated[str | None, typer.Option(help="Only these robots (comma list of labels or names).")] = None,
         humans: Annotated[str | None, typer.Option(help="Only these humans (comma list of labels or names).")] = None,
+        scenarios: Annotated[str | None, typer.Option(help="Only these of the study's scenarios (comma list).")] = None,
     ) -> None:
         """Every robot with every human: scores.csv, aggregate.json, crossplay/profiles/intervals PNGs, report.md."""
         import time
@@ -39,7 +40,9 @@ def register(app: typer.Typer) -> None:
 
         check_out_dir(out, "--out")
         check_workers(workers)
-        chosen = load_study(study).narrowed(seeds, name_list(robots, "--robots"), name_list(humans, "--humans"))
+        chosen = load_study(study).narrowed(
+            seeds, name_list(robots, "--robots"), name_list(humans, "--humans"), name_list(scenarios, "--scenarios")
+        )
         executor = make_backend(backend, workers, address)
         start = time.perf_counter()
         bar, done = counting_bar(len(cells(chosen)), chosen.name)
