@@ -25,6 +25,14 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   for members the partner has already ruled out in the states where they disagree. ``Q_m`` is the
   oracle's one-step backup of ``V_m`` through member ``m``'s replies
   (``_Model.replies``, the oracle's own transition rule).
+- **An open world.** Beside the members the posterior holds "none of them": the uniform
+  partner (the registry's ``random`` human), prior ``unknown`` (5%). A partner the
+  members explain worse than chance (one who keeps to its own side where every member
+  would clear the middle) makes it the most probable hypothesis; the robot then hands
+  the decisions to a plain ``planner`` robot of its own, which replans from what it
+  sees and rules out the moves the partner refuses, until a member explains the partner
+  again. Measured on the hard layouts' ``h_own_side`` (asymmetric_advantages, 3 seeds x
+  1800 s): 32.7 tasks against the planner's 33.3, where the closed world made 25.0.
 - **Off every member's model** (a state no member's dynamics reach), and when it would
   wait again at an unchanged unfinished table after a run of shared waits that the
   belief makes unlikely (< 5%: the partner waits where its members would act, so the
@@ -48,6 +56,7 @@ from hg_marl.agents.oracle import OracleResult, OracleRobot, _human_policy, _Mod
 from hg_marl.agents.partner import PartnerPosterior
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.agents.robots.base import Robot
+from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.core import Agent, State, World
 from hg_marl.core.errors import RobotError
 from hg_marl.policy import Decision, Turn
@@ -55,6 +64,8 @@ from hg_marl.policy import Decision, Turn
 HEDGES = ("qmdp", "map")
 NEGLIGIBLE = 1e-3
 """Members with less posterior mass than this have no say in the mixture (nor its cost)."""
+UNKNOWN = "random"
+"""The "none of the members" hypothesis: a partner no likelier to do one feasible move than another."""
 STALL_LIKELIHOOD = 0.05
 """A run of shared waits less likely than this under the belief means the partner is stalled."""
 
@@ -68,6 +79,7 @@ class BeliefRobot(Robot):
         decay: weight kept by past evidence per telling action (1: never forget).
         epsilon: probability the partner does any feasible action whatever its member.
         hedge: ``"map"`` (most probable member) or ``"qmdp"`` (expected seconds under the mixture).
+        unknown: prior probability that the partner is none of the members (0: a closed world).
     """
 
     name = "belief"
@@ -79,6 +91,7 @@ class BeliefRobot(Robot):
         decay: float = 0.9,
         epsilon: float = 0.05,
         hedge: str = "map",
+        unknown: float = 0.05,
     ) -> None:
         from hg_marl.agents.humans.population import load_population
 
@@ -94,16 +107,24 @@ class BeliefRobot(Robot):
         self.population, self.splits, self.hedge = population, splits, hedge
         self.member_names = tuple(m.name for m in members)
         self.member_specs = tuple(m.spec for m in members)
+        if not (math.isfinite(unknown) and 0.0 <= unknown < 1.0):
+            raise RobotError(f"belief.unknown: expected a probability in [0, 1), got {unknown!r}")
+        if UNKNOWN in self.member_specs:
+            raise RobotError(f"belief.population: a member plays {UNKNOWN!r}, the robot's 'none of them' hypothesis")
+        # The open world: "none of the members" is the uniform partner (the registry's
+        # `random` human), so it wins only where the members explain the moves worse than chance.
+        types = (*self.member_specs, UNKNOWN) if unknown > 0 else self.member_specs
+        prior = [(1.0 - unknown) / len(members)] * len(members) + ([unknown] if unknown > 0 else [])
+        self.unknown = unknown
         try:
-            self.posterior = PartnerPosterior(
-                types=self.member_specs, prior=[1.0] * len(members), decay=decay, epsilon=epsilon
-            )
+            self.posterior = PartnerPosterior(types=types, prior=prior, decay=decay, epsilon=epsilon)
         except ValueError as exc:
             raise RobotError(f"belief: {exc}") from None
         self._world: World | None = None
         self._results: list[OracleResult] = []
         self._models: list[_Model] = []
         self._fallback = OracleRobot(result=None)
+        self._planner = PlannerRobot()
         self._prev: tuple[State, int] | None = None
 
     def _reset(self, world: World) -> None:
@@ -123,6 +144,8 @@ class BeliefRobot(Robot):
         self._prev = None
         self._fallback.result = self._results[0]
         self._fallback.reset(world, self.agent, self.rng)
+        self._planner.reset(world, self.agent, self.rng.spawn(1)[0])
+        self._off_population = False
 
     def _observe(self, turn: Turn) -> None:
         """Update the posterior from the human's move since the previous turn."""
@@ -168,7 +191,7 @@ class BeliefRobot(Robot):
         eps = self.posterior.epsilon
         human_wait = world.n_actions(Agent.HUMAN) - 1
         p = 0.0
-        for w, human in zip(weights, self.posterior.humans, strict=True):
+        for w, human in zip(weights, self.posterior.humans[: len(weights)], strict=True):
             dist = dict(human.distribution(world, mid, self._wait if human.uses_robot_action else -1))
             p += w * ((1.0 - eps) * dist.get(human_wait, 0.0) + eps / max(n, 1))
         self._wait_run *= p
@@ -196,6 +219,21 @@ class BeliefRobot(Robot):
                 mixed[a] = mixed.get(a, 0.0) + w * v
         best = self.member_names[int(np.argmax(weights))]
         action = min(mixed, key=lambda a: (mixed[a], a)) if mixed else -1
+        # The partner explained by no member better than by chance is off the population:
+        # a member's best response would be a guess, the planner replans from what it sees.
+        off_population = self.unknown > 0 and post[UNKNOWN] > max(weights)
+        if off_population:
+            if not self._off_population:
+                self._planner.last_decision = None  # its expectation from an earlier spell is stale
+            self._off_population = True
+            action = self._planner.act(turn)
+            record = self._planner.last_decision
+            assert record is not None
+            reason = "no member explains the partner, the planner drives: " + record.reason
+            self.last_decision = replace(record, reason=reason, partner=UNKNOWN)
+            self._prev = (state, int(action))
+            return int(action)
+        self._off_population = False
         off_model = total <= 0.0 or not mixed or math.isinf(mixed[action])
         # A wait on an unfinished table at the very state of the previous decision: the
         # partner waited too (no member predicted that, so it is no evidence and the

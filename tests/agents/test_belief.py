@@ -18,6 +18,7 @@ from hg_marl.core.errors import RobotError
 from hg_marl.training.runner import RunConfig, run
 
 FORCED = "forced_coordination"
+HARD_LAYOUTS = Path(__file__).resolve().parents[2] / "populations" / "hard_layouts.toml"
 MEMBERS = {
     "coop": ("train", "preference"),
     "mat": ("train", "preference:handover=-1.0,shared=1.0"),
@@ -55,7 +56,7 @@ def test_belief_follows_a_switch_within_the_bound_worked_by_hand(tmp_path: Path)
     they are 10 L (1 - 2 * 0.9**k), which passes log(9) (90% on B) at the first k with
     0.9**k <= (1 - log(9) / (10 L)) / 2.
     """
-    robot = BeliefRobot(population=_population(tmp_path), splits="train", decay=0.9, epsilon=0.05)
+    robot = BeliefRobot(population=_population(tmp_path), splits="train", decay=0.9, epsilon=0.05, unknown=0.0)
     world = World("paper2015")
     state = world.initial_state(np.random.default_rng(0))
     feasible = world.feasible_indices(state, Agent.HUMAN)
@@ -72,6 +73,44 @@ def test_belief_follows_a_switch_within_the_bound_worked_by_hand(tmp_path: Path)
         post.observe(world, state, -1, b)
         steps += 1
     assert steps == expected
+
+
+def test_the_open_world_posterior_worked_by_hand(tmp_path: Path) -> None:
+    """Two members sure of action a, "none of them" (uniform) with prior u = 0.05.
+
+    The partner does b != a. Each member gives it 0.05 / n, the uniform partner
+    (0.95 + 0.05) / n = 1 / n: a likelihood ratio of 20 for "none of them". After one such
+    action its posterior is 20 u / (20 u + (1 - u)) = 1 / 1.95, above each member's
+    (1 - u) / 2 / 1.95: the robot hands over to the planner.
+    """
+    robot = BeliefRobot(population=_population(tmp_path), splits="train", decay=0.9, epsilon=0.05, unknown=0.05)
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(0))
+    feasible = world.feasible_indices(state, Agent.HUMAN)
+    a, b = feasible[0], feasible[-1]
+    post = robot.posterior
+    post.humans = [_Fixed(a), _Fixed(a), post.humans[-1]]  # the last is the uniform partner
+    assert post.types[-1] == "random"
+    post.observe(world, state, -1, b)
+    got = post.posterior()
+    assert got["random"] == pytest.approx(1 / 1.95)
+    assert got[post.types[0]] == pytest.approx(0.95 / 2 / 1.95)
+
+
+def test_a_partner_no_member_explains_is_left_to_the_planner() -> None:
+    """On asymmetric_advantages, a partner who keeps to its own side and never hands over
+    is none of the hard layouts' believed members; a believed one (t_giver) is."""
+    config = RunConfig(scenario="asymmetric_advantages", duration=600, seed=0)
+
+    def share(spec: str, **params: float) -> float:
+        robot = make_robot("belief", population=str(HARD_LAYOUTS), **params)
+        log = run(robot, make_human(spec), config).log
+        return float(log["reason"].str.startswith("no member explains").mean())
+
+    own_side = "preference:handover=-1.0,shared=-1.0,self_work=1.0,robot_side=-2.0"
+    assert share(own_side) > 0.5
+    assert share(own_side, unknown=0.0) == 0.0
+    assert share("preference:handover=1.0,shared=-0.5") == 0.0
 
 
 def test_a_robot_that_knows_its_partner_plays_near_its_best_response(tmp_path: Path) -> None:
@@ -105,6 +144,9 @@ def test_bad_settings_are_one_line(tmp_path: Path) -> None:
         make_robot("belief", population=_population(tmp_path), hedge="maybe")
     with pytest.raises(RobotError, match="splits"):
         make_robot("belief", population=_population(tmp_path), splits=",")
+    for bad in (1.0, -0.1, math.nan):
+        with pytest.raises(RobotError, match="unknown"):
+            make_robot("belief", population=_population(tmp_path), unknown=bad)
 
 
 def test_the_readme_command_runs_as_written() -> None:
