@@ -417,12 +417,60 @@ class CompiledPopulation:
         return out
 
 
+class CompiledSchedule(CompiledPopulation):
+    """A ``switching`` human over compiled members: each table's phase read from its own clock.
+
+    The phase of a table is ``bisect_right(at, clock)`` (or of its tasks solved with
+    ``by="tasks"``), exactly :meth:`SwitchingHuman.phase_at`'s rule, applied to the whole
+    batch at once; a phase's member answers from its compiled table. A member that
+    appears in several phases is compiled once (``phase_member`` maps phase -> member).
+    """
+
+    def __init__(self, members: Sequence[Any], phase_member: Sequence[int], at: Sequence[float], by: str) -> None:
+        super().__init__(members)
+        self.name = "switching(" + ",".join(members[k].name for k in phase_member) + ")"
+        self.phase_member = np.asarray(phase_member, dtype=np.int64)
+        self.at = np.asarray(at, dtype=float)
+        self.by = by
+
+    def follow(self, clock: np.ndarray, tasks_solved: np.ndarray) -> None:
+        """Each table's member from its clock (or tasks solved), before the partner moves."""
+        value = clock if self.by == "time" else tasks_solved.astype(float)
+        self.member = self.phase_member[np.searchsorted(self.at, value, side="right")]
+
+    def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
+        """Nothing to draw: the phase follows the clock, which the reset set to 0."""
+
+
+def _compiled_schedule(world: World, human: Any, cache: Any, progress: bool) -> CompiledSchedule:
+    from hg_marl.agents.compiled import compile_human
+
+    keys: dict[Any, int] = {}
+    unique: list[Any] = []
+    phase_member = []
+    for spec, live in zip(human.specs, human.humans, strict=True):
+        key = spec if spec is not None else id(live)
+        if key not in keys:
+            keys[key] = len(unique)
+            unique.append(spec if spec is not None else live)
+        phase_member.append(keys[key])
+    # each member's table covers the states the other phases lead to (a switch mid-episode)
+    members = [
+        compile_human(world, h, cache=cache, progress=progress, closure=[o for o in unique if o is not h])
+        for h in unique
+    ]
+    return CompiledSchedule(members, phase_member, human.at, human.by)
+
+
 def compiled_humans(
     world: World, human: str | Actor | Sequence[str | Actor], cache: Any = True, progress: bool = False
 ) -> Any:
-    """One compiled human, or a :class:`CompiledPopulation` for a list of them."""
+    """One compiled human, a :class:`CompiledPopulation` for a list, a :class:`CompiledSchedule` for a switching one."""
     from hg_marl.agents.compiled import compile_human
+    from hg_marl.agents.humans.switching import SwitchingHuman
 
+    if isinstance(human, SwitchingHuman):
+        return _compiled_schedule(world, human, cache, progress)
     members = [compile_human(world, h, cache=cache, progress=progress) for h in as_list(human)]
     return members[0] if len(members) == 1 else CompiledPopulation(members)
 

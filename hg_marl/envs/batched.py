@@ -415,6 +415,9 @@ class BatchedTable(VectorEnv):
 
     def _partner_move(self, rows: np.ndarray, seen: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The partner's move on tables ``rows``: (actions, ok, duration)."""
+        follow = getattr(self.partner, "follow", None)
+        if follow is not None:  # a partner whose behaviour depends on each table's clock (a schedule)
+            follow(self.clock, self.tasks_solved)
         sub = self._sub(rows)
         other = self.seat.other
         if other is Agent.HUMAN and getattr(self.partner, "outcome", None) is not None:
