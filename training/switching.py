@@ -228,14 +228,14 @@ def switching_table(summary: dict[str, Any]) -> str:
         return f"{ci['mean']:.{digits}f} [{ci['low']:.{digits}f}, {ci['high']:.{digits}f}]"
 
     head = (
-        f"{'pair':<28}{'period s':>9}  {'robot':<46}{'tasks':>20}{'regret':>20}"
-        f"{'vs ' + summary['baseline']:>22}{'recover s':>20}"
+        f"{'pair':<28}{'period s':>9}  {'robot':<46}{'tasks':>23}{'regret':>23}"
+        f"{'vs ' + summary['baseline']:>23}{'recover s':>20}"
     )
     lines = [head, "-" * len(head)]
     for c in summary["cells"]:
         mark = "  LOSES" if c["loses"] else ""
         lines.append(
-            f"{c['pair']:<28}{c['period']:>9g}  {c['robot'][:45]:<46}{fmt(c['tasks']):>20}{fmt(c['regret']):>20}"
-            f"{fmt(c['difference']):>22}{fmt(c['recovery'], 0):>20}{mark}"
+            f"{c['pair']:<28}{c['period']:>9g}  {c['robot'][:45]:<46}{fmt(c['tasks']):>23}{fmt(c['regret']):>23}"
+            f"{fmt(c['difference']):>23}{fmt(c['recovery'], 0):>20}{mark}"
         )
     return "\n".join(lines)

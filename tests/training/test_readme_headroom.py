@@ -19,7 +19,7 @@ COMMANDS = [c for block in re.findall(r"```bash\n(.*?)```", SECTION, flags=re.S)
 
 
 def test_the_section_has_its_examples() -> None:
-    assert [shlex.split(c)[1] for c in COMMANDS] == ["headroom", "headroom", "evaluate", "run"]
+    assert [shlex.split(c)[1] for c in COMMANDS] == ["headroom", "headroom", "evaluate", "run", "switching"]
 
 
 @pytest.mark.parametrize("command", [c for c in COMMANDS if " headroom " in c])
@@ -49,3 +49,15 @@ def test_adaptation_study_example_runs_narrowed(tmp_path: Path, monkeypatch: pyt
         rows = list(csv.DictReader(f))
     oracle = [float(r["br_prox"]) for r in rows if r["robot"] == "oracle" and r["br_prox"]]
     assert len(oracle) >= 4 and min(oracle) >= 0.9, oracle
+
+
+def test_switching_example_runs_narrowed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(ROOT)
+    command = next(c for c in COMMANDS if " switching " in c)
+    args = shlex.split(command.replace("results/", f"{tmp_path}/"))[1:]
+    # the README's robots and pairs, one seed, two periods, a short run
+    args[args.index("--periods") + 1] = "20,120"
+    code, out, err = run_main([*args, "--seeds", "1", "--duration", "240"])
+    assert code == 0, err
+    assert "cells where a robot loses to planner" in out
+    assert {p.name for p in (tmp_path / "switching-forced").iterdir()} >= {"switching.json", "switching.png"}
