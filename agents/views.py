@@ -32,8 +32,9 @@ Batched seats: ``gymnasium.make_vec(id, num_envs=N, vectorization_mode="vector_e
 ...)`` reaches :func:`robot_vector_env` / :func:`human_vector_env`, ``N`` tables in one
 ``hg_marl.envs.batched.BatchedTable``: the robot's seat with the human(s) compiled
 (``agents/compiled.py``; a list is a :class:`CompiledPopulation`), the human's seat with
-one live robot per table (:class:`LiveRobots`: the planner robot revises its model of the
-human from history, so it is not a function of the state and is not compiled).
+the ``planner`` robot compiled (``agents/compiled_robot.py``: its plans per robot-turn
+state, with an array stall rule in place of its history-dependent partner monitor;
+``compiled=False`` keeps it live) and other robots live, one per table (:class:`LiveRobots`).
 
 Humans: a registry name (``"lazy:p_idle=0.5"``), an Actor, or a list of them (a
 population; one is drawn per episode with the view's generator). Robots likewise, with
@@ -43,6 +44,7 @@ names from ``hg_marl.agents.robots.make_robot`` (``planner``, ``habit``, ``hybri
 
 from __future__ import annotations
 
+import logging
 from collections.abc import Sequence
 from typing import Any
 
@@ -54,6 +56,8 @@ from hg_marl.agents.humans.registry import resolve_human
 from hg_marl.core import Agent, Durations, Scenario, World
 from hg_marl.envs.table_cleaning import EVENT_SEPARATOR, raw_env
 from hg_marl.policy import Actor
+
+logger = logging.getLogger(__name__)
 
 OBSERVATIONS = ("facts", "flat", "dict")
 
@@ -475,6 +479,26 @@ def compiled_humans(
     return members[0] if len(members) == 1 else CompiledPopulation(members)
 
 
+def compiled_robots(
+    world: World, robot: str | Actor | Sequence[str | Actor], num_envs: int, cache: Any = True, progress: bool = False
+) -> Any:
+    """A compiled robot when every spec is a compilable name (``"planner"``), else :class:`LiveRobots`.
+
+    A scenario over the compiler's budget (``roboergosum``) keeps live robots, with a warning.
+    """
+    from hg_marl.agents.compiled_robot import COMPILABLE, compile_robot
+
+    from hg_marl.agents.compiled import CompileError
+
+    specs = as_list(robot)
+    if all(isinstance(s, str) for s in specs) and len(set(specs)) == 1 and specs[0] in COMPILABLE:
+        try:
+            return compile_robot(world, str(specs[0]), cache=cache, progress=progress)
+        except CompileError as exc:  # over the budget (a large scenario): live robots, said once
+            logger.warning("%s; the human's seat uses live robots", exc)
+    return LiveRobots(world, robot, num_envs)
+
+
 def robot_vector_env(
     num_envs: int = 1,
     scenario: str | Scenario = "paper2015",
@@ -514,14 +538,23 @@ def human_vector_env(
     durations: Durations | None = None,
     autoreset_mode: str = "next_step",
     device: Any = None,
+    compiled: bool = True,
+    cache: Any = True,
+    progress: bool = False,
 ) -> Any:
-    """The human's seat batched, a live robot per table (see :class:`LiveRobots`)."""
+    """The human's seat batched: the ``planner`` robot compiled, other robots live (:class:`LiveRobots`).
+
+    ``compiled=True`` (default) compiles a ``"planner"`` spec (or a list of them) into
+    arrays with an array stall rule (``agents/compiled_robot.py``), so no Python runs per
+    table; ``compiled=False`` keeps one live robot per table. Any other robot, or a robot
+    instance, is live either way. ``cache``/``progress`` as for :func:`robot_vector_env`.
+    """
     from hg_marl.envs.batched import BatchedTable, check_batch
 
     world = World(scenario, durations)
     n = check_batch(world, num_envs)
     return BatchedTable(
-        LiveRobots(world, robot, n),
+        compiled_robots(world, robot, n, cache, progress) if compiled else LiveRobots(world, robot, n),
         n,
         world,
         Agent.HUMAN,

@@ -469,7 +469,12 @@ def test_human_seat_trajectories_equal_the_aec_env(
     n = 4
     world = world_of(scenario)
     env = human_vector_env(
-        num_envs=n, scenario=world.scenario, robot=robot, max_cycles=max_cycles, effort_weight=effort_weight
+        num_envs=n,
+        scenario=world.scenario,
+        robot=robot,
+        max_cycles=max_cycles,
+        effort_weight=effort_weight,
+        compiled=False,  # the live robots (the compiled planner: tests/env/test_compiled_robot.py)
     )
     rng = np.random.default_rng(seed)
     starts = [world.initial_state(rng) for _ in range(n)]

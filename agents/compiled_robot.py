@@ -1,0 +1,319 @@
+"""A compiled robot partner for the human's batched seat: the ``planner`` robot as arrays.
+
+Why. The human's batched seat (``agents/views.py: human_vector_env``) otherwise steps one
+live robot actor per table in a Python loop (:class:`~hg_marl.agents.views.LiveRobots`),
+which caps it at the planner's speed. The planner robot replans from the state at every
+decision, so its choice is a function of the robot-turn state (a cold
+``Planner(world).plan(state, to_move=Agent.ROBOT)`` and its proposal, ``plan_proposal``:
+the plan's first robot action, ``wait`` when no plan is found), except for its partner
+handling (:mod:`hg_marl.agents.partner`), which depends on history. The state function is
+compiled; the partner handling is replaced by an array rule (below).
+
+Compilation. :func:`enumerate_plans` visits every robot-turn state reachable from the
+layout distribution (``layout_distribution``, and each layout after the human's move: the
+continuing mode's re-drawn table meets the human first) under every feasible robot action (a
+superset of the robot's own compiled action and every stall move it may take, which are
+feasible non-wait actions; the budget is checked before any planning), followed by
+every human answer (every feasible human action and one failing one: a learner may send
+any index). Each state is planned once by a fresh planner (a warm planner's cached plan
+suffixes may break ties differently from a cold search, so the table holds the cold
+answer, the one a test recomputes independently). The packed keys
+(:class:`~hg_marl.agents.compiled.Packer`) are stored sorted with the actions; a batch is
+answered by one ``searchsorted``. A state outside the table (a reset to a given state of
+another scenario's reach, say) is planned live and counted in :attr:`CompiledRobot.fallbacks`.
+
+The stall rule (the project's rule that no robot waits forever on a partner who leaves
+the task solvable). Per table, ``unchanged`` counts the consecutive robot turns at which
+the state equals the state at that table's previous robot turn (the robot's move and the
+human's answer together changed nothing: the robot waited, or offered an object that
+lapsed, while the human did nothing useful). When ``unchanged >= stall_after`` (``K``,
+default :data:`STALL_AFTER` = 4, the live planner's ``PartnerMonitor.stall_after``), the
+robot takes, instead of the planner's action, the ``(m mod n)``-th feasible non-wait
+action in index order, where ``n`` is the number of such actions and ``m`` the stall moves
+this table took since its reset (so a stall that comes back tries the next move, as the
+oracle's off-model fallback does); ``wait`` only when nothing else is feasible. A stall
+move that changes the state resets the count at the next turn; one that does not is
+followed by the next option at once. A table reset zeroes both counters. So a partner
+who only waits sees the robot wait at most ``K`` cycles in a row before it moves: the
+move comes at the ``K + 1``-th cycle of an unchanged state.
+
+Difference from the live planner. The live monitor counts *unmet expectations* (the plan
+expected a non-wait human action the human did not do, or no plan was found), stalls
+after 4 of them and then drops the count to 2; it also blocks human actions refused twice
+(the planner then plans with a restricted model) and draws its stall move uniformly with
+the robot's generator. The compiled robot has no blocked actions (its plans always assume
+the cooperative model), counts unchanged states instead of unmet expectations, and chooses
+its stall move deterministically. Against a partner who follows the plans both act alike;
+against one who refuses, the live robot may find a detour sooner.
+
+Cost (``paper2015``: 1,892 robot-turn states, a few seconds to build; measured by
+``benchmarks/batched_throughput.py --human-seat``). Cached on disk like the compiled
+humans, only in a folder the user names (``cache=FOLDER``, or ``$HG_MARL_CACHE``).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import sys
+from collections import deque
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from tqdm import tqdm
+
+from hg_marl.agents.compiled import CompileError, Packer, default_cache, source_digest
+from hg_marl.agents.partner import PartnerMonitor
+from hg_marl.core import Agent, State, World
+from hg_marl.envs.batched import BatchedRules, BatchState
+
+STALL_AFTER = PartnerMonitor().stall_after
+"""Unchanged robot turns in a row after which the compiled robot takes a stall move (the live monitor's 4)."""
+
+MAX_STATES = 50_000
+"""The compiler's budget of robot-turn states (one cold plan each, a few ms); beyond it, a clear error.
+
+``roboergosum`` has 530,036 robot-turn states (about 270 s to enumerate and, at 3-7 ms a
+plan, most of an hour to plan), so it is refused and its human seat keeps live robots."""
+
+COMPILABLE = ("planner",)
+"""Robot specs that are compiled (the plain planner: its plans are a function of the state)."""
+
+_OWN_SOURCES = ("compiled_robot.py", "robots/planner.py", "robots/base.py", "partner.py")
+
+
+def planner_action(world: World, state: State) -> int:
+    """The planner robot's proposal at ``state`` from a cold planner (the compiled answer)."""
+    from hg_marl.agents.meta.cost import CostModel
+    from hg_marl.agents.robots.base import make_planner, plan_proposal
+
+    result = make_planner(world).plan(state, to_move=Agent.ROBOT)
+    return plan_proposal(result, world.n_actions(Agent.ROBOT), Agent.ROBOT, CostModel()).action
+
+
+def enumerate_plans(world: World, max_states: int = MAX_STATES, progress: bool = False) -> dict[State, int]:
+    """Every robot-turn state the human's seat can reach against the compiled robot, with its planner action.
+
+    See the module docstring for what is reached (every feasible robot action, then every
+    human answer); the states are planned once the set is known, so the budget is
+    checked before the first search.
+    """
+    from hg_marl.agents.oracle import layout_distribution
+
+    table = world.table
+    n_human = world.n_actions(Agent.HUMAN)
+    wait = table.wait[Agent.ROBOT]
+    known: set[State] = set()
+    queue: deque[State] = deque()
+
+    def reach(state: State) -> None:
+        if state not in known:
+            if len(known) >= max_states:
+                raise CompileError(
+                    f"scenario: {world.scenario.name!r} has over {max_states} robot-turn states for the compiled "
+                    "planner (max_states); use compiled=False for live robots"
+                )
+            known.add(state)
+            queue.append(state)
+
+    def answers(mid: State) -> None:
+        feasible = table.feasible_indices(mid, Agent.HUMAN)
+        taken = set(feasible)
+        failing = next((i for i in range(n_human) if i not in taken), None)
+        for h in [*feasible, *([failing] if failing is not None else [])]:
+            reach(table.successor(mid, Agent.HUMAN, h)[0])
+
+    layouts = [s for s, _ in layout_distribution(world)]
+    for layout in layouts:
+        reach(layout)
+    for layout in layouts:  # continuing mode: the re-drawn table meets the human first
+        answers(layout)
+    while queue:  # every feasible robot action: a superset of the compiled action and the stall moves
+        state = queue.popleft()
+        for a in table.feasible_indices(state, Agent.ROBOT):
+            mid, ok, _ = table.successor(state, Agent.ROBOT, a)
+            if ok and a == wait and table.is_clean(state.where):
+                continue  # the task is solved: the episode ends or the table is re-drawn (a layout)
+            answers(mid)
+    plans: dict[State, int] = {}
+    for state in tqdm(sorted(known), desc="compile planner", unit=" states", disable=not progress, file=sys.stderr):
+        plans[state] = planner_action(world, state)
+    return plans
+
+
+class CompiledRobot:
+    """The planner robot's actions as sorted arrays, with the stall rule per table (``ArrayPartner``).
+
+    Args:
+        world: the world it was compiled for.
+        arrays: ``keys`` (sorted packed states) and ``actions``.
+        stall_after: ``K`` of the stall rule (module docstring).
+    """
+
+    def __init__(
+        self, world: World, arrays: dict[str, np.ndarray], name: str = "planner", stall_after: int = STALL_AFTER
+    ) -> None:
+        if stall_after < 1:
+            raise CompileError(f"stall_after: expected a positive number of turns, got {stall_after}")
+        self.world, self.name, self.stall_after = world, name, int(stall_after)
+        self.packer = Packer(world)
+        self.rules = BatchedRules(world)
+        self.keys, self.actions = arrays["keys"], arrays["actions"]
+        self.wait = int(world.table.wait[Agent.ROBOT])
+        self.fallbacks = 0
+        """Tables answered by a live planner because their state was not in the table."""
+        self.stall_moves_taken = 0
+        """Stall moves over all tables (the rule fired)."""
+        n = world.n_objects
+        self._where = np.zeros((0, n), dtype=np.int64)
+        self._at = np.zeros(0, dtype=np.int64)
+        self._offer = np.zeros((0, 2), dtype=np.int64)
+        self._known = np.zeros(0, dtype=bool)
+        self.unchanged = np.zeros(0, dtype=np.int64)
+        """Per table, the consecutive robot turns at which the state had not changed."""
+        self.stall_count = np.zeros(0, dtype=np.int64)
+        """Per table, the stall moves taken since its reset."""
+        self.stalled = np.zeros(0, dtype=bool)
+        """Per table, whether its last robot move was a stall move."""
+
+    def __len__(self) -> int:
+        return len(self.keys)
+
+    def _grow(self, size: int) -> None:
+        if len(self._at) >= size:
+            return
+        extra = size - len(self._at)
+        self._where = np.concatenate([self._where, np.zeros((extra, self._where.shape[1]), dtype=np.int64)])
+        self._at = np.concatenate([self._at, np.zeros(extra, dtype=np.int64)])
+        self._offer = np.concatenate([self._offer, np.zeros((extra, 2), dtype=np.int64)])
+        self._known = np.concatenate([self._known, np.zeros(extra, dtype=bool)])
+        self.unchanged = np.concatenate([self.unchanged, np.zeros(extra, dtype=np.int64)])
+        self.stall_count = np.concatenate([self.stall_count, np.zeros(extra, dtype=np.int64)])
+        self.stalled = np.concatenate([self.stalled, np.zeros(extra, dtype=bool)])
+
+    def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
+        """Tables ``rows`` start afresh: no previous state, no stall count (``rng`` unused: the rule is deterministic)."""
+        self._grow(int(rows.max(initial=-1)) + 1)
+        self._known[rows] = False
+        self.unchanged[rows] = 0
+        self.stall_count[rows] = 0
+        self.stalled[rows] = False
+
+    def plan(self, batch: BatchState) -> tuple[np.ndarray, np.ndarray]:
+        """(planner action, found) per table, without the stall rule; tables not found are planned live."""
+        keys = self.packer.pack(batch, np.full(len(batch), -1, dtype=np.int64))
+        idx = np.minimum(np.searchsorted(self.keys, keys), max(len(self.keys) - 1, 0))
+        found = self.keys[idx] == keys if len(self.keys) else np.zeros(len(batch), dtype=bool)
+        out = self.actions[idx] if len(self.keys) else np.full(len(batch), self.wait, dtype=np.int64)
+        if not found.all():
+            missing = np.flatnonzero(~found)
+            self.fallbacks += len(missing)
+            for i in missing:
+                out[i] = planner_action(self.world, batch.state(int(i)))
+        return out, found
+
+    def act(self, batch: BatchState, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        """The planner's action per table, a stall move where the stall rule fires (module docstring)."""
+        rows = np.asarray(batch.rows, dtype=np.int64)
+        self._grow(int(rows.max(initial=-1)) + 1)
+        out, _ = self.plan(batch)
+        out = out.copy()
+        same = (
+            self._known[rows]
+            & (self._where[rows] == batch.where).all(axis=1)
+            & (self._at[rows] == batch.robot_at)
+            & (self._offer[rows, 0] == batch.offer_by)
+            & (self._offer[rows, 1] == batch.offer_obj)
+        )
+        self.unchanged[rows] = np.where(same, self.unchanged[rows] + 1, 0)
+        stall = self.unchanged[rows] >= self.stall_after
+        self.stalled[rows] = stall
+        if stall.any():
+            sel = np.flatnonzero(stall)
+            part = BatchState(batch.where[sel], batch.robot_at[sel], batch.offer_by[sel], batch.offer_obj[sel])
+            moves = self.rules.masks(part, Agent.ROBOT)
+            moves[:, self.wait] = False
+            count = moves.sum(axis=1)
+            has = count > 0
+            k = self.stall_count[rows[sel]] % np.maximum(count, 1)
+            pick = (moves & (moves.cumsum(axis=1) == (k + 1)[:, None])).argmax(axis=1)
+            out[sel] = np.where(has, pick, self.wait)
+            self.stall_count[rows[sel]] += has
+            self.stall_moves_taken += int(has.sum())
+        self._where[rows], self._at[rows] = batch.where, batch.robot_at
+        self._offer[rows, 0], self._offer[rows, 1] = batch.offer_by, batch.offer_obj
+        self._known[rows] = True
+        return out
+
+
+def robot_cache_key(world: World, spec: str, stall_after: int) -> str:
+    """Content key of a compiled robot: scenario, durations, spec, the rule's ``K`` and the code."""
+    here = Path(__file__).resolve().parent
+    h = hashlib.sha256()
+    for part in (repr(world.scenario), repr(world.durations), spec, str(stall_after), source_digest()):
+        h.update(part.encode())
+        h.update(b"\0")
+    for rel in _OWN_SOURCES:
+        f = here / rel
+        if f.exists():
+            h.update(rel.encode())
+            h.update(f.read_bytes())
+    return h.hexdigest()
+
+
+def compile_robot(
+    world: World,
+    robot: str = "planner",
+    *,
+    cache: Path | str | bool | None = True,
+    max_states: int = MAX_STATES,
+    stall_after: int = STALL_AFTER,
+    progress: bool = False,
+) -> CompiledRobot:
+    """A :class:`CompiledRobot` for ``robot`` (``"planner"``) in ``world``.
+
+    Args:
+        world: the world (scenario and durations) of the batched env.
+        robot: the robot spec; only the plain ``"planner"`` is a function of the state.
+        cache: True for ``$HG_MARL_CACHE/partners`` (no disk cache when unset), a folder, or None/False.
+        max_states: the compiler's budget (:class:`CompileError` beyond it).
+        stall_after: ``K`` of the stall rule.
+        progress: show a progress bar of the states planned.
+
+    Raises:
+        CompileError: a robot that is not compiled, or a scenario over the budget.
+    """
+    if robot not in COMPILABLE:
+        raise CompileError(f"robot: {robot!r} cannot be compiled (only {', '.join(COMPILABLE)}); use live robots")
+    folder = None if cache is None or cache is False else default_cache() if cache is True else Path(cache)
+    path = key = None
+    if folder is not None:
+        key = robot_cache_key(world, robot, stall_after)
+        path = folder / f"{world.scenario.name.split(':')[0]}-robot-{key[:24]}.npz"
+        if path.exists():
+            try:
+                with np.load(path, allow_pickle=False) as data:
+                    if str(data["key"]) == key:
+                        return CompiledRobot(
+                            world, {k: data[k] for k in ("keys", "actions")}, robot, stall_after=stall_after
+                        )
+            except (OSError, ValueError, KeyError):
+                pass  # a corrupt or foreign entry is rebuilt
+    plans = enumerate_plans(world, max_states, progress)
+    packer = Packer(world)
+    items = sorted((packer.pack_one(s, -1), a) for s, a in plans.items())
+    arrays = {
+        "keys": np.array([k for k, _ in items], dtype=np.int64),
+        "actions": np.array([a for _, a in items], dtype=np.int64),
+    }
+    if path is not None:
+        from hg_marl.training.io import atomic_write
+
+        def write(tmp: Path) -> None:
+            buf = io.BytesIO()
+            np.savez(buf, key=np.array(key), **arrays)  # type: ignore[arg-type]
+            tmp.write_bytes(buf.getvalue())
+
+        atomic_write(path, write)
+    return CompiledRobot(world, arrays, robot, stall_after=stall_after)
