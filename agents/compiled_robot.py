@@ -58,7 +58,6 @@ import io
 import sys
 from collections import deque
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 from tqdm import tqdm
@@ -193,7 +192,7 @@ class CompiledRobot:
         self.stalled = np.concatenate([self.stalled, np.zeros(extra, dtype=bool)])
 
     def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
-        """Tables ``rows`` start afresh: no previous state, no stall count (``rng`` unused: the rule is deterministic)."""
+        """Tables ``rows`` start afresh: no previous state, no stall count (``rng`` unused: a deterministic rule)."""
         self._grow(int(rows.max(initial=-1)) + 1)
         self._known[rows] = False
         self.unchanged[rows] = 0

@@ -486,9 +486,8 @@ def compiled_robots(
 
     A scenario over the compiler's budget (``roboergosum``) keeps live robots, with a warning.
     """
-    from hg_marl.agents.compiled_robot import COMPILABLE, compile_robot
-
     from hg_marl.agents.compiled import CompileError
+    from hg_marl.agents.compiled_robot import COMPILABLE, compile_robot
 
     specs = as_list(robot)
     if all(isinstance(s, str) for s in specs) and len(set(specs)) == 1 and specs[0] in COMPILABLE:

@@ -9,6 +9,12 @@ same ``num_envs`` measured in the same run, the single-table ``RobotView`` with 
 of the process (batched env + compiled partner; <= 2 GB for roboergosum). Run::
 
     python benchmarks/batched_throughput.py [--num-envs 4096] [--seconds 5] [--scenario paper2015 roboergosum]
+
+``--human-seat`` measures the human's seat instead (random masked human actions): the
+compiled planner robot (``agents/compiled_robot.py``) against one live planner robot per
+table (``LiveRobots``), in the same run, with the robot's compile time::
+
+    python benchmarks/batched_throughput.py --human-seat --num-envs 1024 --scenario paper2015
 """
 
 from __future__ import annotations
@@ -23,7 +29,7 @@ from gymnasium.envs.classic_control.cartpole import CartPoleVectorEnv
 
 from hg_marl.agents.compiled import compile_human
 from hg_marl.agents.views import RobotView
-from hg_marl.core import World
+from hg_marl.core import Agent, World
 from hg_marl.envs.batched import BatchedTable
 
 GOALS = {"paper2015": 0.10, "roboergosum": 0.03}
@@ -77,14 +83,47 @@ def single(scenario: str, seconds: float) -> float:
     return timed(step, seconds, 1)
 
 
+def human_seat(scenario: str, num_envs: int, seconds: float) -> None:
+    """The human's seat: compiled planner vs live planners, steps/s in the same run."""
+    from hg_marl.agents.compiled_robot import compile_robot
+    from hg_marl.agents.views import LiveRobots
+
+    world = World(scenario)
+    start = time.perf_counter()
+    robot = compile_robot(world, cache=None, progress=True)
+    built = time.perf_counter() - start
+    rates = {}
+    for label, partner in (("compiled", robot), ("live", LiveRobots(world, "planner", num_envs))):
+        env = BatchedTable(partner, num_envs, world, Agent.HUMAN)
+        env.reset(seed=0)
+        rng = np.random.default_rng(0)
+
+        def step(env: BatchedTable = env, rng: np.random.Generator = rng) -> None:
+            masks = env.action_masks()
+            env.step((rng.random(masks.shape) * masks).argmax(1))
+
+        rates[label] = timed(step, seconds, num_envs)
+        print(f"{scenario:12s} human seat, {label:8s} planner num_envs={num_envs}: {rates[label]:12,.0f} steps/s")
+    print(
+        f"{scenario:12s} compiled planner: {len(robot):,} states in {built:.1f} s; "
+        f"speed-up {rates['compiled'] / rates['live']:,.1f}x; fallbacks {robot.fallbacks}; "
+        f"stall moves {robot.stall_moves_taken}"
+    )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--num-envs", type=int, default=4096)
     parser.add_argument("--seconds", type=float, default=5.0)
     parser.add_argument("--scenario", nargs="+", default=["paper2015", "roboergosum"])
     parser.add_argument("--no-torch", action="store_true", help="skip the torch CPU backend")
+    parser.add_argument("--human-seat", action="store_true", help="the human's seat: compiled vs live planner robot")
     args = parser.parse_args()
     n = args.num_envs
+    if args.human_seat:
+        for scenario in args.scenario:
+            human_seat(scenario, n, args.seconds)
+        return
     ref = cartpole(n, args.seconds)
     print(f"CartPoleVectorEnv            num_envs={n}: {ref:12,.0f} steps/s (reference)")
     for scenario in args.scenario:

@@ -126,6 +126,7 @@ def test_human_seat_with_the_compiled_planner_equals_the_aec_env(
                 continue
             aec.step(int(actions[i]))
             done, cut = aec.terminations["human"], aec.truncations["human"]
+            task = 0.0
             if not (done or cut):
                 state = aec.world_state
                 unchanged[i] = unchanged[i] + 1 if state == prev[i] else 0
@@ -138,8 +139,9 @@ def test_human_seat_with_the_compiled_planner_equals_the_aec_env(
                     expected = fresh_proposal(world, state)
                 assert info["robot_action"][i] == expected
                 aec.step(int(info["robot_action"][i]))
-                done = aec.rewards["human"] > 0
-            assert (term[i], trunc[i]) == (done, cut)
+                task = aec.rewards["human"]
+                done = task > 0
+            assert reward[i] == task and (term[i], trunc[i]) == (done, cut)
             assert info["clock"][i] == aec.clock and info["tasks_solved"][i] == aec.tasks_solved
             if not (done or cut):
                 assert (obs[i] == aec.observe("human")["observation"]).all()
@@ -214,3 +216,20 @@ def test_compiled_false_and_other_robots_stay_live(cache: Path) -> None:
         compile_robot(world_of("paper2015"), "random", cache=None)
     with pytest.raises(CompileError, match="max_states"):
         compile_robot(world_of("paper2015"), cache=None, max_states=10)
+
+
+def test_a_state_that_never_changes_gets_the_planner_k_times_then_each_option_in_turn(cache: Path) -> None:
+    """The rule on one frozen table: turns 1..K the planner's move, then options 0, 1, 2, ... of the mask."""
+    world = world_of("paper2015")
+    robot = compile_robot(world, cache=cache)
+    state = world.initial_state(np.random.default_rng(11))
+    wait = world.n_actions(Agent.ROBOT) - 1
+    options = [int(a) for a in np.flatnonzero(world.mask(state, Agent.ROBOT)) if a != wait]
+    assert len(options) >= 2
+    robot.reset_rows(np.array([0]), np.random.default_rng(0))
+    got = [int(robot.act(BatchState.of([state]), np.array([-1]), np.random.default_rng(0))[0]) for _ in range(K + 5)]
+    planned = fresh_proposal(world, state)
+    assert got[:K] == [planned] * K
+    assert got[K:] == [options[j % len(options)] for j in range(5)]
+    robot.reset_rows(np.array([0]), np.random.default_rng(0))  # a reset forgets the count and the rotation
+    assert int(robot.act(BatchState.of([state]), np.array([-1]), np.random.default_rng(0))[0]) == planned
