@@ -46,8 +46,9 @@ the cooperative model), counts unchanged states instead of unmet expectations, a
 its stall move deterministically. Against a partner who follows the plans both act alike;
 against one who refuses, the live robot may find a detour sooner.
 
-Cost (``paper2015``: 1,892 robot-turn states, a few seconds to build; measured by
-``benchmarks/batched_throughput.py --human-seat``). Cached on disk like the compiled
+Cost (``paper2015``: 1,892 robot-turn states, 3.3-3.7 s to build on the shared 2-core
+machine, then about 100x the live robots' steps/s; ``benchmarks/batched_throughput.py
+--human-seat``; ``roboergosum`` is over :data:`MAX_STATES`). Cached on disk like the compiled
 humans, only in a folder the user names (``cache=FOLDER``, or ``$HG_MARL_CACHE``).
 """
 

@@ -233,3 +233,11 @@ def test_a_state_that_never_changes_gets_the_planner_k_times_then_each_option_in
     assert got[K:] == [options[j % len(options)] for j in range(5)]
     robot.reset_rows(np.array([0]), np.random.default_rng(0))  # a reset forgets the count and the rotation
     assert int(robot.act(BatchState.of([state]), np.array([-1]), np.random.default_rng(0))[0]) == planned
+
+
+def test_a_scenario_over_the_budget_keeps_live_robots_with_a_warning(caplog: pytest.LogCaptureFixture) -> None:
+    """roboergosum has 530,036 robot-turn states, over the 50,000 budget: refused at once, live robots."""
+    with caplog.at_level("WARNING"):
+        env = human_vector_env(num_envs=2, scenario="roboergosum", cache=None)
+    assert isinstance(env.partner, LiveRobots)
+    assert "max_states" in caplog.text
