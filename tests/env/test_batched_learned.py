@@ -82,7 +82,8 @@ def test_batched_actions_are_the_live_humans_on_sampled_states(spec: str) -> Non
         state = batch.state(i)
         f, m = world.facts(state), world.mask(state, Agent.HUMAN)
         assert (facts[i] == f).all() and (masks[i] == m).all()
-        expected = live.act(Turn(world=world, state=state, agent=Agent.HUMAN, observation={"observation": f, "action_mask": m}))
+        turn = Turn(world=world, state=state, agent=Agent.HUMAN, observation={"observation": f, "action_mask": m})
+        expected = live.act(turn)
         assert got[i] == expected
         infeasible += not m[expected]
     assert len(set(got.tolist())) > 3  # the policy answers differently across states
@@ -200,5 +201,5 @@ def test_a_policy_saved_for_the_robot_seat_is_refused_naming_the_file(tmp_path: 
 
     model = MaskablePPO("MlpPolicy", RobotView(SCENARIO), n_steps=16, batch_size=16, seed=0, device="cpu")
     folder = save_sb3_policy(tmp_path / "robot", model, SCENARIO, seat=Agent.ROBOT)
-    with pytest.raises(ModelFileError, match="policy.json"):
+    with pytest.raises(ModelFileError, match=r"policy\.json: saved for .*\(robot\)"):
         BatchedLearned(World(SCENARIO), make_human(f"learned:path={folder}"))
