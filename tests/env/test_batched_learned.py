@@ -203,3 +203,20 @@ def test_a_policy_saved_for_the_robot_seat_is_refused_naming_the_file(tmp_path: 
     folder = save_sb3_policy(tmp_path / "robot", model, SCENARIO, seat=Agent.ROBOT)
     with pytest.raises(ModelFileError, match=r"policy\.json: saved for .*\(robot\)"):
         BatchedLearned(World(SCENARIO), make_human(f"learned:path={folder}"))
+
+
+def test_the_benchmarks_learned_option_prints_both_rows(tmp_path: Path) -> None:
+    """``batched_throughput.py --learned FOLDER`` (the README's command) on a short budget."""
+    import subprocess
+    import sys
+
+    folder = tmp_path / "policy"
+    _policy("maskable-facts", folder)
+    script = Path(__file__).resolve().parents[2] / "benchmarks" / "batched_throughput.py"
+    argv = [str(script), "--learned", str(folder), "--num-envs", "8", "--seconds", "0.2", "--no-compiled"]
+    out = subprocess.run(
+        [sys.executable, *argv, "--scenario", SCENARIO], capture_output=True, text=True, timeout=300, check=False
+    )
+    assert out.returncode == 0, out.stderr
+    assert "batched learned-sb3 num_envs=8:" in out.stdout and "single RobotView learned-sb3:" in out.stdout
+    assert "CartPole" not in out.stdout
