@@ -219,6 +219,14 @@ def run_switching(
     }
 
 
+def _short(label: str, width: int) -> str:
+    """``label`` within ``width`` characters, keeping its start and its end (where specs differ)."""
+    if len(label) <= width:
+        return label
+    keep = width - 3
+    return label[: keep // 2] + "..." + label[len(label) - (keep - keep // 2) :]
+
+
 def switching_table(summary: dict[str, Any]) -> str:
     """The printed table: one row per (pair, period, robot), mean [95% CI]."""
 
@@ -229,13 +237,13 @@ def switching_table(summary: dict[str, Any]) -> str:
 
     head = (
         f"{'pair':<28}{'period s':>9}  {'robot':<46}{'tasks':>23}{'regret':>23}"
-        f"{'vs ' + summary['baseline']:>23}{'recover s':>20}"
+        f"{_short('vs ' + summary['baseline'], 22):>23}{'recover s':>20}"
     )
     lines = [head, "-" * len(head)]
     for c in summary["cells"]:
         mark = "  LOSES" if c["loses"] else ""
         lines.append(
-            f"{c['pair']:<28}{c['period']:>9g}  {c['robot'][:45]:<46}{fmt(c['tasks']):>23}{fmt(c['regret']):>23}"
+            f"{c['pair']:<28}{c['period']:>9g}  {_short(c['robot'], 45):<46}{fmt(c['tasks']):>23}{fmt(c['regret']):>23}"
             f"{fmt(c['difference']):>23}{fmt(c['recovery'], 0):>20}{mark}"
         )
     return "\n".join(lines)
