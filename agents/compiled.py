@@ -1,7 +1,8 @@
 """Compiled partners: a stationary scripted human as an action distribution per reachable state.
 
 A stationary human (every registry human but ``switching`` and ``replay``; ``learned``
-in its numpy kinds, not SB3's)
+in its numpy kinds, not SB3's, which the batched env runs as one forward pass per step
+instead: ``agents/batched_learned.py``)
 answers as a function of the mid-cycle state and the robot's action seen
 (``StationaryHuman.distribution``). :func:`compile_human` enumerates every mid-cycle
 state the robot-turn states of the scenario can reach, whatever the robot does (the

@@ -31,7 +31,9 @@ seeds the table and the partner's own generator from ``s``.
 Batched seats: ``gymnasium.make_vec(id, num_envs=N, vectorization_mode="vector_entry_point",
 ...)`` reaches :func:`robot_vector_env` / :func:`human_vector_env`, ``N`` tables in one
 ``hg_marl.envs.batched.BatchedTable``: the robot's seat with the human(s) compiled
-(``agents/compiled.py``; a list is a :class:`CompiledPopulation`), the human's seat with
+(``agents/compiled.py``; a list is a :class:`CompiledPopulation`; a learned SB3 human,
+which cannot be compiled, answers every table with one forward pass of its policy,
+``agents/batched_learned.py``), the human's seat with
 the ``planner`` robot compiled (``agents/compiled_robot.py``: its plans per robot-turn
 state, with an array stall rule in place of its history-dependent partner monitor;
 ``compiled=False`` keeps it live) and other robots live, one per table (:class:`LiveRobots`).
@@ -469,14 +471,32 @@ def _compiled_schedule(world: World, human: Any, cache: Any, progress: bool) -> 
 def compiled_humans(
     world: World, human: str | Actor | Sequence[str | Actor], cache: Any = True, progress: bool = False
 ) -> Any:
-    """One compiled human, a :class:`CompiledPopulation` for a list, a :class:`CompiledSchedule` for a switching one."""
-    from hg_marl.agents.compiled import compile_human
+    """One compiled human, a :class:`CompiledPopulation` for a list, a :class:`CompiledSchedule` for a switching one.
+
+    A learned SB3 human cannot be compiled (no exact distribution); it plays as a
+    :class:`~hg_marl.agents.batched_learned.BatchedLearned` (one forward pass of its
+    policy per step over all tables), alone or as a member of a population.
+    """
     from hg_marl.agents.humans.switching import SwitchingHuman
 
     if isinstance(human, SwitchingHuman):
         return _compiled_schedule(world, human, cache, progress)
-    members = [compile_human(world, h, cache=cache, progress=progress) for h in as_list(human)]
+    members = [_batched_member(world, h, cache, progress) for h in as_list(human)]
     return members[0] if len(members) == 1 else CompiledPopulation(members)
+
+
+def _batched_member(world: World, human: str | Actor, cache: Any, progress: bool) -> Any:
+    """A human as an array partner: a learned SB3 policy batched, any other compiled (a spec keeps its cache key)."""
+    from hg_marl.agents.batched_learned import BatchedLearned, is_sb3_learned
+    from hg_marl.agents.compiled import compile_human
+    from hg_marl.agents.humans.registry import parse_human
+
+    live: Any = human
+    if isinstance(human, str):
+        live = resolve_human(human) if parse_human(human)[0] == "learned" else None
+    if is_sb3_learned(live):
+        return BatchedLearned(world, live, name=human if isinstance(human, str) else None)
+    return compile_human(world, human, cache=cache, progress=progress)
 
 
 def compiled_robots(
@@ -511,7 +531,7 @@ def robot_vector_env(
     cache: Any = True,
     progress: bool = False,
 ) -> Any:
-    """The robot's seat batched, the human compiled.
+    """The robot's seat batched, the human compiled (a learned SB3 human batched instead, see :func:`compiled_humans`).
 
     Gymnasium reaches it as ``gymnasium.make_vec(ROBOT_VIEW_ID, num_envs=N,
     vectorization_mode="vector_entry_point", human=...)``.
