@@ -1,7 +1,8 @@
 """Compiled partners: a stationary scripted human as an action distribution per reachable state.
 
 A stationary human (every registry human but ``switching`` and ``replay``; ``learned``
-in its numpy kinds, not SB3's)
+in its numpy kinds, not SB3's, which the batched env runs as one forward pass per step
+instead: ``agents/batched_learned.py``)
 answers as a function of the mid-cycle state and the robot's action seen
 (``StationaryHuman.distribution``). :func:`compile_human` enumerates every mid-cycle
 state the robot-turn states of the scenario can reach, whatever the robot does (the
@@ -33,6 +34,7 @@ import io
 import os
 import sys
 from collections import deque
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -91,7 +93,7 @@ class Packer:
 
 
 def enumerate_answers(
-    world: World, human: Any, max_keys: int = MAX_KEYS, progress: bool = False
+    world: World, human: Any, max_keys: int = MAX_KEYS, progress: bool = False, closure: Sequence[Any] = ()
 ) -> dict[tuple[State, int], list[tuple[int, float]]]:
     """Every (mid-cycle state, robot action seen) the human can face, with its distribution.
 
@@ -99,7 +101,9 @@ def enumerate_answers(
     robot action (feasible ones and one failing one: all failing actions lead to the same
     mid-cycle state) followed by every answer of the human. The completing ``wait`` is
     followed by the human's move on the clean table (episodic mode) and by the re-drawn
-    tables (continuing mode), both enumerated.
+    tables (continuing mode), both enumerated. ``closure``: other humans whose answers
+    also lead on (a switching partner's other phases reach states this one alone never
+    would); only ``human``'s own answers are stored.
     """
     from hg_marl.agents.oracle import layout_distribution
 
@@ -125,7 +129,11 @@ def enumerate_answers(
             dist = answers[key] = [(h, p) for h, p in human.distribution(world, mid, key[1]) if p > 0.0]
             bar.update(1)
         if expand:
-            for h, _ in dist:
+            moves = {h for h, _ in dist}
+            for other in closure:
+                other_seen = seen if getattr(other, "uses_robot_action", False) else -1
+                moves.update(h for h, p in other.distribution(world, mid, other_seen) if p > 0.0)
+            for h in sorted(moves):
                 nxt, _, _ = table.successor(mid, Agent.HUMAN, h)
                 if nxt not in seen_states:
                     seen_states.add(nxt)
@@ -287,25 +295,33 @@ def source_digest(root: Path | None = None) -> str:
     return h.hexdigest()
 
 
-def cache_key(world: World, spec: str) -> str:
+def cache_key(world: World, spec: str, closure: Sequence[str] = ()) -> str:
     """Content key of a compiled table: scenario, durations, human spec, the files it names, and code.
 
     A ``path=`` parameter (a learned policy's folder or file) is keyed by the content of
-    every file under it, so retraining into the same folder compiles again.
+    every file under it, so retraining into the same folder compiles again. ``closure``
+    (the specs whose answers also lead on) widens the table, so it is part of the key.
     """
     from hg_marl.agents.humans.registry import parse_human
 
     h = hashlib.sha256()
-    for part in (repr(world.scenario), repr(world.durations), spec, source_digest()):
+    for part in (
+        repr(world.scenario),
+        repr(world.durations),
+        spec,
+        source_digest(),
+        *(f"closure {c}" for c in closure),
+    ):
         h.update(part.encode())
         h.update(b"\0")
-    _, params = parse_human(spec)
-    if "path" in params:
-        named = Path(params["path"])
-        for f in sorted(named.rglob("*")) if named.is_dir() else [named]:
-            if f.is_file():
-                h.update(f.name.encode())
-                h.update(f.read_bytes())
+    for named_spec in (spec, *closure):
+        _, params = parse_human(named_spec)
+        if "path" in params:
+            named = Path(params["path"])
+            for f in sorted(named.rglob("*")) if named.is_dir() else [named]:
+                if f.is_file():
+                    h.update(f.name.encode())
+                    h.update(f.read_bytes())
     return h.hexdigest()
 
 
@@ -322,6 +338,7 @@ def compile_human(
     cache: Path | str | bool | None = True,
     max_keys: int = MAX_KEYS,
     progress: bool = False,
+    closure: Sequence[str | Any] = (),
 ) -> CompiledHuman:
     """A :class:`CompiledHuman` for ``human`` (a registry spec or a stationary instance) in ``world``.
 
@@ -332,6 +349,8 @@ def compile_human(
             (instances are never cached on disk: only a spec string names their content).
         max_keys: the compiler's budget (:class:`CompileError` beyond it).
         progress: show a progress bar of the keys compiled.
+        closure: other humans (specs or instances) whose answers also lead on, so the table
+            covers the states a partner switching between them reaches (keyed by their specs).
 
     Raises:
         CompileError: the human is not stationary, or the scenario is over the budget.
@@ -344,6 +363,13 @@ def compile_human(
             "(switching and replay humans are not functions of the state)"
         )
     live.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    others = [make_human(h) if isinstance(h, str) else h for h in closure]
+    for other in others:
+        if not callable(getattr(other, "distribution", None)):
+            raise CompileError(f"human: {getattr(other, 'name', other)!r} cannot be compiled (no distribution)")
+        other.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    if any(not isinstance(h, str) for h in closure):
+        spec = None  # an instance in the closure has no content key: no disk cache
     packer = Packer(world)
     name = spec or str(getattr(live, "name", "human"))
     folder = (
@@ -352,7 +378,7 @@ def compile_human(
     path = key = None
     if folder is not None:
         assert spec is not None
-        key = cache_key(world, spec)
+        key = cache_key(world, spec, tuple(str(h) for h in closure))
         path = folder / f"{world.scenario.name.split(':')[0]}-{key[:24]}.npz"
         if path.exists():
             try:
@@ -363,7 +389,7 @@ def compile_human(
             except (OSError, ValueError, KeyError):
                 pass  # a corrupt or foreign entry is rebuilt
     try:
-        answers = enumerate_answers(world, live, max_keys, progress)
+        answers = enumerate_answers(world, live, max_keys, progress, others)
     except CompileError:
         raise
     except ValueError as exc:  # e.g. a learned SB3 policy: no exact distribution

@@ -31,7 +31,9 @@ seeds the table and the partner's own generator from ``s``.
 Batched seats: ``gymnasium.make_vec(id, num_envs=N, vectorization_mode="vector_entry_point",
 ...)`` reaches :func:`robot_vector_env` / :func:`human_vector_env`, ``N`` tables in one
 ``hg_marl.envs.batched.BatchedTable``: the robot's seat with the human(s) compiled
-(``agents/compiled.py``; a list is a :class:`CompiledPopulation`), the human's seat with
+(``agents/compiled.py``; a list is a :class:`CompiledPopulation`; a learned SB3 human,
+which cannot be compiled, answers every table with one forward pass of its policy,
+``agents/batched_learned.py``), the human's seat with
 one live robot per table (:class:`LiveRobots`: the planner robot revises its model of the
 human from history, so it is not a function of the state and is not compiled).
 
@@ -417,14 +419,80 @@ class CompiledPopulation:
         return out
 
 
+class CompiledSchedule(CompiledPopulation):
+    """A ``switching`` human over compiled members: each table's phase read from its own clock.
+
+    The phase of a table is ``bisect_right(at, clock)`` (or of its tasks solved with
+    ``by="tasks"``), exactly :meth:`SwitchingHuman.phase_at`'s rule, applied to the whole
+    batch at once; a phase's member answers from its compiled table. A member that
+    appears in several phases is compiled once (``phase_member`` maps phase -> member).
+    """
+
+    def __init__(self, members: Sequence[Any], phase_member: Sequence[int], at: Sequence[float], by: str) -> None:
+        super().__init__(members)
+        self.name = "switching(" + ",".join(members[k].name for k in phase_member) + ")"
+        self.phase_member = np.asarray(phase_member, dtype=np.int64)
+        self.at = np.asarray(at, dtype=float)
+        self.by = by
+
+    def follow(self, clock: np.ndarray, tasks_solved: np.ndarray) -> None:
+        """Each table's member from its clock (or tasks solved), before the partner moves."""
+        value = clock if self.by == "time" else tasks_solved.astype(float)
+        self.member = self.phase_member[np.searchsorted(self.at, value, side="right")]
+
+    def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
+        """Nothing to draw: the phase follows the clock, which the reset set to 0."""
+
+
+def _compiled_schedule(world: World, human: Any, cache: Any, progress: bool) -> CompiledSchedule:
+    from hg_marl.agents.compiled import compile_human
+
+    keys: dict[Any, int] = {}
+    unique: list[Any] = []
+    phase_member = []
+    for spec, live in zip(human.specs, human.humans, strict=True):
+        key = spec if spec is not None else id(live)
+        if key not in keys:
+            keys[key] = len(unique)
+            unique.append(spec if spec is not None else live)
+        phase_member.append(keys[key])
+    # each member's table covers the states the other phases lead to (a switch mid-episode)
+    members = [
+        compile_human(world, h, cache=cache, progress=progress, closure=[o for o in unique if o is not h])
+        for h in unique
+    ]
+    return CompiledSchedule(members, phase_member, human.at, human.by)
+
+
 def compiled_humans(
     world: World, human: str | Actor | Sequence[str | Actor], cache: Any = True, progress: bool = False
 ) -> Any:
-    """One compiled human, or a :class:`CompiledPopulation` for a list of them."""
-    from hg_marl.agents.compiled import compile_human
+    """One compiled human, a :class:`CompiledPopulation` for a list, a :class:`CompiledSchedule` for a switching one.
 
-    members = [compile_human(world, h, cache=cache, progress=progress) for h in as_list(human)]
+    A learned SB3 human cannot be compiled (no exact distribution); it plays as a
+    :class:`~hg_marl.agents.batched_learned.BatchedLearned` (one forward pass of its
+    policy per step over all tables), alone or as a member of a population.
+    """
+    from hg_marl.agents.humans.switching import SwitchingHuman
+
+    if isinstance(human, SwitchingHuman):
+        return _compiled_schedule(world, human, cache, progress)
+    members = [_batched_member(world, h, cache, progress) for h in as_list(human)]
     return members[0] if len(members) == 1 else CompiledPopulation(members)
+
+
+def _batched_member(world: World, human: str | Actor, cache: Any, progress: bool) -> Any:
+    """A human as an array partner: a learned SB3 policy batched, any other compiled (a spec keeps its cache key)."""
+    from hg_marl.agents.batched_learned import BatchedLearned, is_sb3_learned
+    from hg_marl.agents.compiled import compile_human
+    from hg_marl.agents.humans.registry import parse_human
+
+    live: Any = human
+    if isinstance(human, str):
+        live = resolve_human(human) if parse_human(human)[0] == "learned" else None
+    if is_sb3_learned(live):
+        return BatchedLearned(world, live, name=human if isinstance(human, str) else None)
+    return compile_human(world, human, cache=cache, progress=progress)
 
 
 def robot_vector_env(
@@ -440,7 +508,7 @@ def robot_vector_env(
     cache: Any = True,
     progress: bool = False,
 ) -> Any:
-    """The robot's seat batched, the human compiled.
+    """The robot's seat batched, the human compiled (a learned SB3 human batched instead, see :func:`compiled_humans`).
 
     Gymnasium reaches it as ``gymnasium.make_vec(ROBOT_VIEW_ID, num_envs=N,
     vectorization_mode="vector_entry_point", human=...)``.

@@ -9,6 +9,11 @@ same ``num_envs`` measured in the same run, the single-table ``RobotView`` with 
 of the process (batched env + compiled partner; <= 2 GB for roboergosum). Run::
 
     python benchmarks/batched_throughput.py [--num-envs 4096] [--seconds 5] [--scenario paper2015 roboergosum]
+
+``--learned FOLDER`` (a human-seat SB3 policy, e.g. from ``hg-marl train --seat human``)
+adds, per scenario, the batched env with that learned human (one forward pass of its
+policy per step over all tables) beside the single ``RobotView`` with the same live
+learned human, both measured in the same run; torch runs on one thread.
 """
 
 from __future__ import annotations
@@ -63,8 +68,8 @@ def batched(world: World, partner: Any, num_envs: int, seconds: float, device: A
     return timed(step, seconds, num_envs)
 
 
-def single(scenario: str, seconds: float) -> float:
-    env = RobotView(scenario=scenario, human="cooperative")
+def single(scenario: str, seconds: float, human: str = "cooperative") -> float:
+    env = RobotView(scenario=scenario, human=human)
     env.reset(seed=0)
     rng = np.random.default_rng(0)
 
@@ -77,14 +82,39 @@ def single(scenario: str, seconds: float) -> float:
     return timed(step, seconds, 1)
 
 
+def learned(world: World, spec: str, num_envs: int, seconds: float) -> None:
+    """Batched env with a learned SB3 human beside the single view with the same live human."""
+    from hg_marl.agents.views import compiled_humans
+
+    partner = compiled_humans(world, spec, cache=None)
+    name = world.scenario.name
+    fast = batched(world, partner, num_envs, seconds)
+    one = single(name, seconds, spec)
+    print(
+        f"{name:12s} batched learned-sb3 num_envs={num_envs}: {fast:12,.0f} steps/s "
+        f"({type(partner).__name__}: one forward pass per step)"
+    )
+    print(f"{name:12s} single RobotView learned-sb3: {one:12,.0f} steps/s; batched = {fast / one:,.0f}x")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--num-envs", type=int, default=4096)
     parser.add_argument("--seconds", type=float, default=5.0)
     parser.add_argument("--scenario", nargs="+", default=["paper2015", "roboergosum"])
     parser.add_argument("--no-torch", action="store_true", help="skip the torch CPU backend")
+    parser.add_argument("--learned", metavar="FOLDER", help="also measure this human-seat SB3 policy as the partner")
+    parser.add_argument("--no-compiled", action="store_true", help="skip CartPole and the compiled cooperative rows")
     args = parser.parse_args()
     n = args.num_envs
+    if args.learned is not None:
+        import torch
+
+        torch.set_num_threads(1)
+        for scenario in args.scenario:
+            learned(World(scenario), f"learned:path={args.learned}", n, args.seconds)
+    if args.no_compiled:
+        return
     ref = cartpole(n, args.seconds)
     print(f"CartPoleVectorEnv            num_envs={n}: {ref:12,.0f} steps/s (reference)")
     for scenario in args.scenario:

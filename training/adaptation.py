@@ -118,10 +118,22 @@ def adaptation_jobs(config: AdaptationConfig) -> list[Job]:
 
 
 def rate_curve(log: pd.DataFrame, grid: np.ndarray, window: float = WINDOW) -> np.ndarray:
-    """Tasks per hour over the trailing window ``(t - window, t]`` at each grid time."""
-    done = np.sort(log.loc[log["reward"] > 0, "time"].to_numpy())
-    counts = np.searchsorted(done, grid, side="right") - np.searchsorted(done, grid - window, side="right")
-    return counts * 3600.0 / window
+    """Tasks per hour over the trailing window ``(t - window, t]`` at each grid time.
+
+    The tasks solved by time t are counted with the count interpolated linearly between
+    completions (a task counts as it is being done, from the previous completion on), so
+    the rate is continuous in t. Counting whole tasks instead made every curve a
+    saw-tooth: each completion entering or leaving the window moves it by 3600 / window
+    tasks/h (12 for 300 s), the size of the differences the figures compare. At
+    completion times the two counts agree; after the last completion the count stays.
+    """
+    done = np.sort(log.loc[log["reward"] > 0, "time"].to_numpy(dtype=float))
+    times, counts = np.unique(done, return_counts=True)
+    xs = np.concatenate([[0.0], times])
+    ys = np.concatenate([[0.0], np.cumsum(counts)]).astype(float)
+    grid = np.asarray(grid, dtype=float)
+    solved = np.interp(grid, xs, ys) - np.interp(grid - window, xs, ys, left=0.0)
+    return solved * 3600.0 / window
 
 
 def _ci(values: list[float]) -> dict[str, float | None]:
@@ -149,8 +161,12 @@ def run_adaptation(
     config: AdaptationConfig | None = None,
     workers: int = 1,
     on_done: Callable[[Job, dict[str, Any]], None] | None = None,
+    on_figure: Callable[[None, Path], None] | None = None,
 ) -> tuple[dict[str, Any], dict[str, Path]]:
-    """Run (or resume) the adaptation sweep; return its summary and figure paths."""
+    """Run (or resume) the adaptation sweep; return its summary and figure paths.
+
+    ``on_figure(None, path)`` is called after each figure is written (a progress bar's update).
+    """
     from hg_marl.agents.oracle import oracle_rate
     from hg_marl.training import plots
 
@@ -180,7 +196,11 @@ def run_adaptation(
             f"Human: {' -> '.join(sw.humans)}; trailing {c.window:.0f} s rate, mean and 95% CI of {c.seeds} seeds",
             out / f"adaptation_{label}.png",
         )
+        if on_figure:
+            on_figure(None, figures[f"adaptation_{label}"])
     figures["adaptation_regret"] = plots.regret_bars(summary["results"], out / "adaptation_regret.png")
+    if on_figure:
+        on_figure(None, figures["adaptation_regret"])
     return summary, figures
 
 

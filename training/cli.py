@@ -32,6 +32,7 @@ COMMANDS = (
     "evaluate",
     "population",
     "headroom",
+    "switching",
 )
 """Subcommand modules, in the order ``--help`` lists them."""
 

@@ -305,3 +305,63 @@ def regret_bars_figure(results: dict[str, Any]) -> Any:
     axes[0][0].set_ylabel("tasks lost to the oracle (mean, 95% CI)")
     fig.tight_layout()
     return fig
+
+
+def switching(summary: dict[str, Any], path: Path) -> Path:
+    """:func:`switching_figure` as a PNG."""
+    return _save(switching_figure(summary), path)
+
+
+def switching_figure(summary: dict[str, Any]) -> Any:
+    """Tasks per run against the switching period, one panel per partner pair.
+
+    Each robot is a line of means with 95% CI bars over seeds (its own colour,
+    :mod:`hg_marl.training.colours`); the per-phase best response is the black dashed
+    reference. The period axis is logarithmic (seconds to many minutes), with a tick at
+    every period run. A robot that loses to the baseline on a cell (the CI of the paired
+    difference below 0) gets a red ring there, so a reader sees where adaptation hurts.
+    """
+    from hg_marl.training.colours import styles
+
+    plt = _pyplot()
+    cells = summary["cells"]
+    pairs = list(dict.fromkeys(c["pair"] for c in cells))
+    robots = list(dict.fromkeys(c["robot"] for c in cells))
+    style = styles(robots)
+    fig, axes = plt.subplots(1, len(pairs), figsize=(4.6 * len(pairs), 3.6), squeeze=False, sharey=False)
+    for ax, pair in zip(axes[0], pairs, strict=True):
+        mine = [c for c in cells if c["pair"] == pair]
+        periods = sorted({float(c["period"]) for c in mine})
+        reference = [next(c["reference_tasks"] for c in mine if c["period"] == p) for p in periods]
+        ax.plot(periods, reference, color="k", linestyle="--", marker="_", label="per-phase best response")
+        for k, robot in enumerate(robots):
+            rows = sorted((c for c in mine if c["robot"] == robot), key=lambda c: c["period"])
+            x = np.array([float(c["period"]) for c in rows])
+            # robots side by side at each period, so their bars never cover each other
+            x = x * (1.0 + 0.04 * (k - (len(robots) - 1) / 2))
+            mean = np.array([c["tasks"]["mean"] for c in rows], dtype=float)
+            low = np.array([c["tasks"]["low"] for c in rows], dtype=float)
+            high = np.array([c["tasks"]["high"] for c in rows], dtype=float)
+            ax.errorbar(x, mean, yerr=[mean - low, high - mean], capsize=3, marker="o", markersize=4, label=robot,
+                        **style[robot])  # fmt: skip
+            lost = np.array([c["loses"] for c in rows], dtype=bool)
+            if lost.any():
+                ax.scatter(x[lost], mean[lost], s=140, facecolors="none", edgecolors="red", linewidths=1.5,
+                           label=f"{robot}: loses to {summary['baseline']}", zorder=5)  # fmt: skip
+        ax.set_xscale("log")
+        ax.set_xticks(periods, [f"{p:g}" for p in periods])
+        ax.minorticks_off()
+        ax.set_xlabel("switching period (simulated s)")
+        ax.set_title(f"partner switches {pair.replace('/', ' <-> ')}", fontsize=9)
+        ax.grid(alpha=0.3)
+        ax.margins(y=0.12)
+    axes[0][0].set_ylabel(f"tasks per {summary['duration']:g} s run (mean, 95% CI)")
+    # one legend for all panels, below them: it never covers a curve nor squeezes a panel
+    handles: dict[str, Any] = {}
+    for ax in axes[0]:
+        for handle, label in zip(*ax.get_legend_handles_labels(), strict=True):
+            handles.setdefault(label, handle)
+    fig.suptitle(f"{summary['scenario']}: {summary['seeds']} seeds per point", fontsize=10)
+    fig.tight_layout(rect=(0.0, 0.1 + 0.035 * len(handles) // 2, 1.0, 1.0))
+    fig.legend(list(handles.values()), list(handles), loc="lower center", ncol=2, fontsize=8, frameon=False)
+    return fig

@@ -42,8 +42,9 @@ class ReproduceConfig:
     """Local worker processes (the default backend's, and the adaptation stage's)."""
 
 
-Progress = Callable[[str, int], Callable[[Job, Any], None]]
-"""``progress(stage, total)`` returns the per-job callback of that stage (a progress bar's update)."""
+Progress = Callable[[str, int], Callable[[Job | None, Any], None]]
+"""``progress(stage, total)`` returns the per-item callback of that stage (a progress bar's update):
+called with each finished job, or with ``None`` and each figure written."""
 
 
 def reproduce(
@@ -77,17 +78,26 @@ def reproduce(
     }
     for job, run in zip(jobs, runs, strict=True):
         summary["runs"][job.label].append(run.key)
-    figures = {
-        "fig3": plots.cumulative_reward(logs, config.duration, out / "fig3_cumulative_reward.png"),
-        "fig4": plots.actions_per_run(logs, out / "fig4_actions_per_run.png"),
-        "fig5": plots.weight_amplitude(logs, out / "fig5_weight_amplitude.png"),
-    }
+    # drawing takes seconds: the figures are a stage of their own, so the wait is never silent
+    drawn = progress("paper figures", 3) if progress else None
+    figures: dict[str, Path] = {}
+    for name, draw in (
+        ("fig3", lambda: plots.cumulative_reward(logs, config.duration, out / "fig3_cumulative_reward.png")),
+        ("fig4", lambda: plots.actions_per_run(logs, out / "fig4_actions_per_run.png")),
+        ("fig5", lambda: plots.weight_amplitude(logs, out / "fig5_weight_amplitude.png")),
+    ):
+        figures[name] = draw()
+        if drawn:
+            drawn(None, figures[name])
     if config.adaptation:
         from hg_marl.training.adaptation import AdaptationConfig, adaptation_jobs, run_adaptation
 
         adapt = AdaptationConfig(scenario=config.scenario, seeds=config.adaptation_seeds)
         stage = progress("adaptation", len(adaptation_jobs(adapt))) if progress else None
-        summary["adaptation"], more = run_adaptation(out, adapt, workers=config.workers, on_done=stage)
+        on_figure = progress("adaptation figures", len(adapt.switches) + 1) if progress else None
+        summary["adaptation"], more = run_adaptation(
+            out, adapt, workers=config.workers, on_done=stage, on_figure=on_figure
+        )
         figures.update(more)
     summary["figures"] = {k: str(v) for k, v in figures.items()}
     write_json(out / "summary.json", summary)

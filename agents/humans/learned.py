@@ -214,14 +214,36 @@ class LearnedHuman(StationaryHuman):
         facts, mask = turn.observation["observation"], turn.observation["action_mask"]
         if self.kind != "sb3":
             return sample(self._pick(self.probabilities(facts, mask)), self.rng)
+        obs, kwargs = self.sb3_inputs(facts, mask)
+        action, _ = self._model.predict(obs, **kwargs)
+        return int(action)
+
+    def sb3_inputs(self, facts: np.ndarray, mask: np.ndarray) -> tuple[Any, dict[str, Any]]:
+        """The SB3 model's ``predict`` input and keyword arguments for one observation or a batch of them.
+
+        ``facts`` and ``mask`` are one table's vectors or ``(N, F)`` / ``(N, A)`` rows: the
+        header's observation mode builds the model's input (facts, facts then mask, or the
+        dict), and a masked model (sb3-contrib's) gets the mask as ``action_masks``. One
+        function for both, so the batched partner (``agents/batched_learned.py``) feeds the
+        policy exactly what the live human does. Greedy: see the module docstring.
+        """
         mode = self.header.get("observation", "facts")
         obs: Any = (
             {"observation": facts, "action_mask": mask}
             if mode == "dict"
-            else (np.concatenate([facts, mask]) if mode == "flat" else facts)
+            else (np.concatenate([facts, mask], axis=-1) if mode == "flat" else facts)
         )
         kwargs: dict[str, Any] = {"deterministic": True}
-        if hasattr(self._model, "action_masks") or type(self._model).__name__.startswith("Maskable"):
+        if self.masked:
             kwargs["action_masks"] = np.asarray(mask).astype(bool)
-        action, _ = self._model.predict(obs, **kwargs)
-        return int(action)
+        return obs, kwargs
+
+    @property
+    def model(self) -> Any:
+        """The SB3 model (None for the numpy kinds)."""
+        return self._model
+
+    @property
+    def masked(self) -> bool:
+        """Whether the SB3 model takes the action mask (sb3-contrib's maskable algorithms)."""
+        return hasattr(self._model, "action_masks") or type(self._model).__name__.startswith("Maskable")

@@ -51,6 +51,8 @@ class SwitchingHuman:
         if any(b <= a for a, b in itertools.pairwise(at)):
             raise ValueError(f"thresholds must increase, got at={list(at)}")
         self.humans: list[Actor] = [resolve_human(h) for h in humans]
+        self.specs: list[str | None] = [h if isinstance(h, str) else None for h in humans]
+        """Each phase's registry spec (None for an instance): a batched env compiles and caches by it."""
         self.at = [float(x) for x in at]
         self.by = by
         self.phase = 0

@@ -33,6 +33,15 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   sees and rules out the moves the partner refuses, until a member explains the partner
   again. Measured on the hard layouts' ``h_own_side`` (asymmetric_advantages, 3 seeds x
   1800 s): 32.7 tasks against the planner's 33.3, where the closed world made 25.0.
+- **Probing** (``probe=S``, default off). While no member holds 90% of the belief, the
+  robot may take, instead of its best action, the action whose reply tells the members
+  apart most (mutual information between member and reply, :meth:`information`) if it
+  costs at most ``S`` expected seconds more and tells at least 0.05 nats more. Measured,
+  it does not pay here: on the hard layouts' held-out members (3 seeds x 1800 s)
+  ``probe=5`` changes no member's tasks by more than 0.4 and ``probe=20`` loses 1-5 tasks
+  on four of ten; against a partner switching at 20-180 s it loses 0.8-1.6 tasks (CIs
+  reaching 0). The replies to the moves the robot makes anyway tell the members apart
+  within a few actions, so a move bought for information is a move lost.
 - **Off every member's model** (a state no member's dynamics reach), and when it would
   wait again at an unchanged unfinished table after a run of shared waits that the
   belief makes unlikely (< 5%: the partner waits where its members would act, so the
@@ -66,6 +75,10 @@ NEGLIGIBLE = 1e-3
 """Members with less posterior mass than this have no say in the mixture (nor its cost)."""
 UNKNOWN = "random"
 """The "none of the members" hypothesis: a partner no likelier to do one feasible move than another."""
+PROBE_BELOW = 0.9
+"""A robot probes only while no member holds this much of the belief."""
+MIN_GAIN = 0.05
+"""Nats a probe must tell beyond the best action's own reply."""
 STALL_LIKELIHOOD = 0.05
 """A run of shared waits less likely than this under the belief means the partner is stalled."""
 
@@ -80,6 +93,7 @@ class BeliefRobot(Robot):
         epsilon: probability the partner does any feasible action whatever its member.
         hedge: ``"map"`` (most probable member) or ``"qmdp"`` (expected seconds under the mixture).
         unknown: prior probability that the partner is none of the members (0: a closed world).
+        probe: expected seconds the robot may give up to learn who its partner is (0: never probes).
     """
 
     name = "belief"
@@ -92,6 +106,7 @@ class BeliefRobot(Robot):
         epsilon: float = 0.05,
         hedge: str = "map",
         unknown: float = 0.05,
+        probe: float = 0.0,
     ) -> None:
         from hg_marl.agents.humans.population import load_population
 
@@ -116,6 +131,9 @@ class BeliefRobot(Robot):
         types = (*self.member_specs, UNKNOWN) if unknown > 0 else self.member_specs
         prior = [(1.0 - unknown) / len(members)] * len(members) + ([unknown] if unknown > 0 else [])
         self.unknown = unknown
+        if not (math.isfinite(probe) and probe >= 0.0):
+            raise RobotError(f"belief.probe: expected seconds >= 0, got {probe!r}")
+        self.probe = probe
         try:
             self.posterior = PartnerPosterior(types=types, prior=prior, decay=decay, epsilon=epsilon)
         except ValueError as exc:
@@ -252,12 +270,65 @@ class BeliefRobot(Robot):
             why = "off every member's model: " if off_model else "partner stalled, the planner drives: "
             self.last_decision = replace(record, reason=why + record.reason, partner=best)
         else:
+            reason = ""
+            if self.probe > 0 and max(weights) < PROBE_BELOW:
+                probe, gain = self._probe(world, state, weights, mixed, total)
+                if probe != action:
+                    cost = (mixed[probe] - mixed[action]) / total
+                    reason = f"probe: {gain:.2f} nats about the partner for {cost:.1f} s"
+                    action = probe
             self.last_decision = Decision(
                 "belief",
                 int(action),
                 planning_time=time.perf_counter() - start,
                 partner=best,
+                reason=reason,
                 stats=(("expected_seconds", mixed[action] / total), ("belief_top", float(max(weights)))),
             )
         self._prev = (state, int(action))
         return int(action)
+
+    def information(self, world: World, state: State, action: int, weights: list[float]) -> float:
+        """Mutual information (nats) between the member and the partner's reply to ``action``.
+
+        ``I = H(sum_m b(m) p_m) - sum_m b(m) H(p_m)`` over the partner's feasible replies at
+        the mid-cycle state the action leads to, each member's ``p_m`` with the posterior's
+        ``epsilon`` slack (the likelihood the belief is updated with): how much, in
+        expectation, the next reply will tell the members apart.
+        """
+        mid, ok, _ = world.table.successor(state, Agent.ROBOT, action)
+        replies = world.feasible_indices(mid, Agent.HUMAN)
+        n = max(len(replies), 1)
+        eps = self.posterior.epsilon
+        kept = [(w, h) for w, h in zip(weights, self.posterior.humans[: len(weights)], strict=True) if w >= NEGLIGIBLE]
+        total = sum(w for w, _ in kept)
+        mix = np.zeros(len(replies))
+        inner = 0.0
+        for w, human in kept:
+            seen = (action if ok else -1) if human.uses_robot_action else -1
+            dist = dict(human.distribution(world, mid, seen))
+            p = np.array([(1.0 - eps) * dist.get(h, 0.0) + eps / n for h in replies])
+            inner += w / total * float(-(p * np.log(p)).sum())
+            mix += w / total * p
+        outer = float(-(mix * np.log(mix)).sum())
+        return max(outer - inner, 0.0)
+
+    def _probe(
+        self, world: World, state: State, weights: list[float], mixed: dict[int, float], total: float
+    ) -> tuple[int, float]:
+        """The most telling action within ``probe`` expected seconds of the best one (and its information).
+
+        A probe must tell at least :data:`MIN_GAIN` nats more than the best action does, so
+        a robot never pays for information it would get anyway.
+        """
+        best = min(mixed, key=lambda a: (mixed[a], a))
+        limit = mixed[best] / total + self.probe
+        base = self.information(world, state, best, weights)
+        choice, gain = best, base
+        for a in sorted(mixed):
+            if a == best or mixed[a] / total > limit or math.isinf(mixed[a]):
+                continue
+            info = self.information(world, state, a, weights)
+            if info > gain + 1e-12:
+                choice, gain = a, info
+        return (choice, gain) if gain >= base + MIN_GAIN else (best, base)

@@ -11,7 +11,8 @@ action sequences and requires identical trajectories.
 
 :class:`BatchedTable` is one seat's Gymnasium ``VectorEnv``: the learning seat's action
 per table, then the partner's, which reaches it as arrays through :class:`ArrayPartner`
-(``agents/compiled.py`` compiles scripted partners into one; a partner that also has
+(``agents/compiled.py`` compiles scripted partners into one, ``agents/batched_learned.py``
+runs a learned SB3 human as one forward pass per step; a partner that also has
 ``answer`` and ``outcome`` tables, as a compiled human does, hands the next state, its
 facts and its robot mask, which ``BatchedRules`` computed for every entry at compile
 time, so the human's half of a cycle is a few gathers). Observations, rewards,
@@ -415,6 +416,9 @@ class BatchedTable(VectorEnv):
 
     def _partner_move(self, rows: np.ndarray, seen: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The partner's move on tables ``rows``: (actions, ok, duration)."""
+        follow = getattr(self.partner, "follow", None)
+        if follow is not None:  # a partner whose behaviour depends on each table's clock (a schedule)
+            follow(self.clock, self.tasks_solved)
         sub = self._sub(rows)
         other = self.seat.other
         if other is Agent.HUMAN and getattr(self.partner, "outcome", None) is not None:

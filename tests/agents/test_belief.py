@@ -97,6 +97,49 @@ def test_the_open_world_posterior_worked_by_hand(tmp_path: Path) -> None:
     assert got[post.types[0]] == pytest.approx(0.95 / 2 / 1.95)
 
 
+def test_the_information_of_a_reply_worked_by_hand(tmp_path: Path) -> None:
+    """Two members, equally believed: one sure of reply a, the other of reply b.
+
+    With n feasible replies and slack epsilon, member i gives its reply q = 0.95 + 0.05/n
+    and every other reply r = 0.05/n. The mixture gives a and b (q + r)/2 each, the rest
+    r. Mutual information = H(mixture) - H(member) (both members have the same entropy).
+    A member set that agrees on every reply tells nothing: 0 nats.
+    """
+    robot = BeliefRobot(population=_population(tmp_path), splits="train", epsilon=0.05, unknown=0.0)
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(0))
+    wait = world.n_actions(Agent.ROBOT) - 1
+    mid, _, _ = world.table.successor(state, Agent.ROBOT, wait)
+    replies = world.feasible_indices(mid, Agent.HUMAN)
+    a, b = replies[0], replies[-1]
+    n = len(replies)
+    q, r = 0.95 + 0.05 / n, 0.05 / n
+
+    def h(ps: list[float]) -> float:
+        return -sum(p * math.log(p) for p in ps)
+
+    member = h([q] + [r] * (n - 1))
+    mixture = h([(q + r) / 2] * 2 + [r] * (n - 2))
+    robot.posterior.humans = [_Fixed(a), _Fixed(b)]
+    assert robot.information(world, state, wait, [0.5, 0.5]) == pytest.approx(mixture - member)
+    robot.posterior.humans = [_Fixed(a), _Fixed(a)]
+    assert robot.information(world, state, wait, [0.5, 0.5]) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_a_probe_costs_at_most_its_budget_and_no_budget_never_probes() -> None:
+    import re
+
+    config = RunConfig(scenario=FORCED, duration=900, seed=0)
+    partner = "preference:handover=1.0,shared=-0.5,accept=0.3,p_idle=0.2"  # h_hesitant, held out
+    never = run(make_robot("belief", population=str(HARD_LAYOUTS)), make_human(partner), config).log
+    assert not never["reason"].str.startswith("probe").any()
+    log = run(make_robot("belief", population=str(HARD_LAYOUTS), probe=20.0), make_human(partner), config).log
+    probes = log.loc[log["reason"].str.startswith("probe"), "reason"]
+    assert len(probes) > 0
+    costs = [float(re.search(r"for (-?[\d.]+) s", x).group(1)) for x in probes]  # type: ignore[union-attr]
+    assert all(0.0 <= c <= 20.0 for c in costs), costs
+
+
 def test_a_partner_no_member_explains_is_left_to_the_planner() -> None:
     """On asymmetric_advantages, a partner who keeps to its own side and never hands over
     is none of the hard layouts' believed members; a believed one (t_giver) is."""
@@ -147,6 +190,9 @@ def test_bad_settings_are_one_line(tmp_path: Path) -> None:
     for bad in (1.0, -0.1, math.nan):
         with pytest.raises(RobotError, match="unknown"):
             make_robot("belief", population=_population(tmp_path), unknown=bad)
+    for bad in (-1.0, math.inf, math.nan):
+        with pytest.raises(RobotError, match="probe"):
+            make_robot("belief", population=_population(tmp_path), probe=bad)
 
 
 def test_the_readme_command_runs_as_written() -> None:

@@ -248,6 +248,77 @@ def test_population_draws_a_member_per_table() -> None:
     assert members == {0, 1}
 
 
+def test_a_switching_partner_plays_each_tables_phase_from_its_clock() -> None:
+    """cooperative until 20 s of an episode, adversarial until 60 s, then cooperative.
+
+    Each table is replayed in the AEC env (autoresets included): at every cycle the member
+    that answered must be the phase's, ``bisect_right(at, clock at the cycle's start)``
+    (the switching human's own rule, stated here as thresholds), its answer must have
+    positive probability under that phase's live human, and observations and clocks stay
+    identical.
+    """
+    import bisect
+
+    at = [20.0, 60.0]
+    human = make_human("switching", humans=["cooperative", "adversarial", "cooperative"], at=at)
+    n = 6
+    env = robot_vector_env(num_envs=n, human=human, cache=None, max_cycles=None)
+    world = env.world
+    lives = {0: make_human("cooperative"), 1: make_human("adversarial")}
+    for live in lives.values():
+        live.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    obs, _ = env.reset(seed=3)
+    aecs = []
+    for i in range(n):
+        aec = raw_env(scenario=world.scenario, max_cycles=None)
+        aec.world = world
+        aec.reset(options={"state": env.state.state(i)})
+        aecs.append(aec)
+    rng = np.random.default_rng(3)
+    phases_seen = set()
+    pending = np.zeros(n, dtype=bool)
+    for _ in range(150):
+        masks = env.action_masks()
+        actions = (rng.random(masks.shape) * masks).argmax(1)
+        start = [aec.clock for aec in aecs]
+        obs, _, term, trunc, info = env.step(actions)
+        for i, aec in enumerate(aecs):
+            if pending[i]:  # autoreset step: the new table
+                aec.reset(options={"state": env.state.state(i)})
+                continue
+            phase = bisect.bisect_right(at, start[i])
+            phases_seen.add(phase)
+            member = int(env.partner.member[i])  # type: ignore[attr-defined]
+            assert member == (1 if phase == 1 else 0)
+            aec.step(int(actions[i]))
+            h = int(info["human_action"][i])
+            live = lives[member]
+            seen = int(actions[i]) if not aec.infos["robot"]["failed"] and live.uses_robot_action else -1
+            assert dict(live.distribution(world, aec.world_state, seen)).get(h, 0.0) > 0.0
+            aec.step(h)
+            assert (obs[i] == aec.observe("robot")["observation"]).all()
+            assert info["clock"][i] == aec.clock
+        pending = term | trunc
+    assert phases_seen == {0, 1, 2}
+    assert env.partner.fallbacks == 0  # type: ignore[attr-defined]
+
+
+def test_a_switching_partner_by_tasks_follows_each_tables_count() -> None:
+    human = make_human("switching", humans=["cooperative", "adversarial"], at=[2.0], by="tasks")
+    env = robot_vector_env(num_envs=8, human=human, cache=None, continuing=True, max_cycles=None)
+    env.reset(seed=0)
+    rng = np.random.default_rng(0)
+    for _ in range(200):
+        before = env.tasks_solved.copy()
+        masks = env.action_masks()
+        env.step((rng.random(masks.shape) * masks).argmax(1))
+        member = env.partner.member  # type: ignore[attr-defined]
+        # the phase is read at the partner's move, after the robot's move of the same cycle
+        # (the AEC human's turn sees the robot's success too): adversarial from 2 tasks on
+        assert (member[before >= 2] == 1).all() and (member[env.tasks_solved < 2] == 0).all()
+    assert (env.tasks_solved >= 2).any() and (env.tasks_solved < 2).any()
+
+
 @pytest.mark.parametrize("num_envs", [0, -3, 1.5, "4"])
 def test_bad_num_envs_is_one_error_naming_it(num_envs: object) -> None:
     with pytest.raises(ConfigError, match="num_envs"):

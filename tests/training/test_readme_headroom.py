@@ -21,7 +21,7 @@ COMMANDS = [c for block in re.findall(r"```bash\n(.*?)```", SECTION, flags=re.S)
 def test_the_section_has_its_examples() -> None:
     # the learned robot's example trains, then evaluates, once per hard layout
     learned = ["train", "evaluate"] * 2
-    assert [shlex.split(c)[1] for c in COMMANDS] == ["headroom", "headroom", "evaluate", *learned, "run"]
+    assert [shlex.split(c)[1] for c in COMMANDS] == ["headroom", "headroom", "evaluate", *learned, "run", "switching"]
 
 
 @pytest.mark.parametrize("command", [c for c in COMMANDS if " headroom " in c])
@@ -110,3 +110,15 @@ def test_learned_example_runs_narrowed(tmp_path: Path, monkeypatch: pytest.Monke
     # the report's BR-Prox table scores it on the held-out (test) split
     row = "| test | sb3:path=runs/adaptation_learned/forced_coordination/model.json |"
     assert row in (out / "report.md").read_text()
+
+
+def test_switching_example_runs_narrowed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(ROOT)
+    command = next(c for c in COMMANDS if " switching " in c)
+    args = shlex.split(command.replace("results/", f"{tmp_path}/"))[1:]
+    # the README's robots and pairs, one seed, two periods, a short run
+    args[args.index("--periods") + 1] = "20,120"
+    code, out, err = run_main([*args, "--seeds", "1", "--duration", "240"])
+    assert code == 0, err
+    assert "cells where a robot loses to planner" in out
+    assert {p.name for p in (tmp_path / "switching-forced").iterdir()} >= {"switching.json", "switching.png"}

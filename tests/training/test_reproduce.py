@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import pytest
 from typer.testing import CliRunner
 
 from hg_marl.training import adaptation
@@ -37,6 +38,8 @@ def test_reproduce_smoke(tmp_path: Path) -> None:
     for key in ("fig3", "fig4", "fig5"):
         png = Path(summary["figures"][key])
         assert png.exists() and png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # drawing the figures is a stage with its own bar: the wait is never silent
+    assert "paper figures: 100%" in result.output and "3/3" in result.output
     assert "paper" in result.output and "planner" in result.output
     # resuming finds every run done and reproduces the same summary
     again = CliRunner().invoke(app, args)
@@ -49,6 +52,17 @@ def test_rate_on_a_constructed_log() -> None:
     log = pd.DataFrame({"time": times, "reward": 1.0})
     grid = np.array([600.0, 1800.0])
     assert rate_curve(log, grid, window=300.0).tolist() == [120.0, 60.0]
+
+
+def test_rate_is_continuous_between_completions() -> None:
+    """One task every 120 s: the interpolated count solves 2.5 tasks in any 300 s window
+    (30 tasks/h) wherever the window lies, where whole-task counts jump between 2 and 3
+    (24 and 36 tasks/h)."""
+    log = pd.DataFrame({"time": np.arange(120.0, 2401.0, 120.0), "reward": 1.0})
+    grid = np.arange(400.0, 2200.0, 7.0)
+    assert rate_curve(log, grid, window=300.0) == pytest.approx(np.full(len(grid), 30.0))
+    # before the first completion the count rises from 0 at t = 0: half a task by 60 s
+    assert rate_curve(log, np.array([60.0]), window=300.0)[0] == pytest.approx(0.5 * 3600 / 300)
 
 
 def test_adaptation_smoke(tmp_path: Path) -> None:

@@ -101,7 +101,14 @@ def run_cell(config: CompareConfig, algo: str, human: str, seed: int, directory:
     )
     if not curve.curve or curve.curve[-1][0] != result.num_timesteps:
         curve.curve.append((result.num_timesteps, evaluate(result.model)))
-    record = {
+    return _record(config, algo, human, seed, result, curve.curve)
+
+
+def _record(
+    config: CompareConfig, algo: str, human: str, seed: int, result: Any, curve: list[tuple[int, float]]
+) -> dict[str, Any]:
+    """One cell's record (every algorithm's the same fields, so the table and plots read them alike)."""
+    return {
         "algo": algo,
         "human": human,
         "seed": seed,
@@ -113,10 +120,9 @@ def run_cell(config: CompareConfig, algo: str, human: str, seed: int, directory:
         "duration": config.duration,
         "train_seconds": result.seconds,
         "steps_per_second": result.steps_per_second,
-        "curve": [[s, r] for s, r in curve.curve],
+        "curve": [[s, r] for s, r in curve],
         "model": str(result.path),
     }
-    return record
 
 
 def _run_batched_cell(config: CompareConfig, human: str, seed: int, directory: Path, evaluate: Any) -> dict[str, Any]:
@@ -137,21 +143,7 @@ def _run_batched_cell(config: CompareConfig, human: str, seed: int, directory: P
     result = train_ppo_batched(batched, on_update)
     if curve[-1][0] != result.num_timesteps:
         curve.append((result.num_timesteps, float(evaluate(result_model(result.path)))))
-    return {
-        "algo": "ppo_batched",
-        "human": human,
-        "seed": seed,
-        "scenario": config.scenario,
-        "budget": config.steps,
-        "deterministic": config.deterministic,
-        "steps": result.num_timesteps,
-        "eval_seeds": list(config.eval_seeds),
-        "duration": config.duration,
-        "train_seconds": result.seconds,
-        "steps_per_second": result.steps_per_second,
-        "curve": [[s, r] for s, r in curve],
-        "model": str(result.path),
-    }
+    return _record(config, "ppo_batched", human, seed, result, curve)
 
 
 def result_model(path: Path) -> Any:
