@@ -19,7 +19,9 @@ COMMANDS = [c for block in re.findall(r"```bash\n(.*?)```", SECTION, flags=re.S)
 
 
 def test_the_section_has_its_examples() -> None:
-    assert [shlex.split(c)[1] for c in COMMANDS] == ["headroom", "headroom", "evaluate", "run", "switching"]
+    # the learned robot's example trains, then evaluates, once per hard layout
+    learned = ["train", "evaluate"] * 2
+    assert [shlex.split(c)[1] for c in COMMANDS] == ["headroom", "headroom", "evaluate", *learned, "run", "switching"]
 
 
 @pytest.mark.parametrize("command", [c for c in COMMANDS if " headroom " in c])
@@ -49,6 +51,65 @@ def test_adaptation_study_example_runs_narrowed(tmp_path: Path, monkeypatch: pyt
         rows = list(csv.DictReader(f))
     oracle = [float(r["br_prox"]) for r in rows if r["robot"] == "oracle" and r["br_prox"]]
     assert len(oracle) >= 4 and min(oracle) >= 0.9, oracle
+
+
+LEARNED = [c for c in COMMANDS if "adaptation_learned" in c]
+"""The learned robot's example: ``train`` then ``evaluate`` per hard layout."""
+
+
+def test_learned_example_trains_where_its_study_reads_the_model() -> None:
+    # the study names the model by a path read from the repository root; the README's
+    # train command must write exactly there, or the evaluate command fails to load it
+    import tomllib
+
+    pairs = list(zip(LEARNED[::2], LEARNED[1::2], strict=True))
+    assert [s for t, e in pairs for s in (shlex.split(t)[1], shlex.split(e)[1])] == ["train", "evaluate"] * 2
+    layouts = []
+    for train, evaluate in pairs:
+        t, e = shlex.split(train), shlex.split(evaluate)
+        scenario = t[t.index("--scenario") + 1]
+        layouts.append(scenario)
+        study = tomllib.loads((ROOT / e[2]).read_text())
+        assert study["scenarios"] == [scenario] and study["splits"] == ["held_out"]
+        assert f"sb3:path={t[t.index('--out') + 1]}/model.json" in study["robots"]
+        assert {"planner", "oracle"} <= set(study["robots"])
+        assert t[t.index("--population") + 1] == "populations/hard_layouts.toml"
+    assert layouts == ["forced_coordination", "asymmetric_advantages"]
+
+
+@pytest.mark.slow
+def test_learned_example_runs_narrowed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    pytest.importorskip("sb3_contrib")
+    # run from an empty folder so the model lands in tmp_path/runs, where the study
+    # (read from the repository) looks for it relative to the working directory
+    monkeypatch.chdir(tmp_path)
+    train, evaluate = (
+        shlex.split(c.replace(" populations/", f" {ROOT}/populations/").replace(" studies/", f" {ROOT}/studies/"))[1:]
+        for c in LEARNED[:2]
+    )
+    assert train[train.index("--scenario") + 1] == "forced_coordination"
+    # a tiny budget: the run must work end to end, not learn (the README measures that)
+    narrow_train = ["--steps", "2048", "--hp", "num_envs=64", "--hp", "eval_envs=4", "--no-tensorboard"]
+    code, _, err = run_main([*train, *narrow_train])
+    assert code == 0, err
+    assert (tmp_path / "runs" / "adaptation_learned" / "forced_coordination" / "model.json").is_file()
+    # two held-out members, one seed: a 1800 s run of the sb3 robot is its forward passes (~10 s)
+    members = ["h_giver_only", "h_soft_giver"]
+    narrow = ["--seeds", "1", "--robots", "sb3", "--humans", ",".join(members), "--workers", "1"]
+    code, _, err = run_main([*evaluate, *narrow])
+    assert code == 0, err
+    out = Path(evaluate[evaluate.index("--out") + 1])
+    with (out / "scores.csv").open() as f:
+        rows = list(csv.DictReader(f))
+    assert {r["robot"] for r in rows} == {"sb3:path=runs/adaptation_learned/forced_coordination/model.json"}
+    assert sorted(r["human"] for r in rows) == members
+    # both are held-out members the oracle completes with: each run has a BR-Prox
+    scored = {r["human"]: float(r["br_prox"]) for r in rows if r["br_prox"]}
+    assert sorted(scored) == members, rows
+    assert all(0.0 <= v <= 1.0 for v in scored.values()), scored
+    # the report's BR-Prox table scores it on the held-out (test) split
+    row = "| test | sb3:path=runs/adaptation_learned/forced_coordination/model.json |"
+    assert row in (out / "report.md").read_text()
 
 
 def test_switching_example_runs_narrowed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
