@@ -49,3 +49,44 @@ def test_the_train_rows_run_as_written_on_a_short_budget(tmp_path: Path) -> None
         code, out, err = run_main(argv)
         assert code == 0, err
         assert (tmp_path / str(k) / "model.json").exists() and "ppo_batched in the robot seat" in out
+
+
+def test_the_learned_partner_commands_run_as_written_on_a_short_budget(tmp_path: Path) -> None:
+    """The section's bash block (train a human, benchmark it batched) with /tmp moved to tmp_path."""
+    pytest.importorskip("torch")
+    import shlex
+
+    from tests.cli_helpers import run_main
+
+    blocks = re.findall(r"```bash\n(.*?)```", section("Batched training"), flags=re.S)
+    assert len(blocks) == 1
+    train, bench = [shlex.split(c.replace("/tmp/", f"{tmp_path}/")) for c in blocks[0].strip().splitlines()]
+    assert train[:2] == ["hg-marl", "train"] and bench[:2] == ["python", "benchmarks/batched_throughput.py"]
+    code, _, err = run_main(train[1:])
+    assert code == 0, err
+    bench[bench.index("--num-envs") + 1] = "16"
+    out = subprocess.run(
+        [sys.executable, *bench[1:], "--seconds", "0.2"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        cwd=README.parent,
+        check=False,
+    )
+    assert out.returncode == 0, out.stderr
+    assert "learned" in out.stdout and "RobotView" in out.stdout, out.stdout
+
+
+def test_the_human_seat_benchmark_line_runs_narrowed() -> None:
+    import shlex
+
+    line = next(x for x in section("Batched training").splitlines() if "--human-seat" in x)
+    argv = shlex.split(line.strip("`").split("`")[0])
+    assert argv[:2] == ["python", "benchmarks/batched_throughput.py"]
+    argv[argv.index("--num-envs") + 1] = "16"
+    argv[argv.index("--seconds") + 1] = "0.2"
+    out = subprocess.run(
+        [sys.executable, *argv[1:]], capture_output=True, text=True, timeout=300, cwd=README.parent, check=False
+    )
+    assert out.returncode == 0, out.stderr
+    assert "compiled" in out.stdout.lower(), out.stdout
