@@ -205,6 +205,16 @@ def adaptation(
     title: str,
     path: Path,
 ) -> Path:
+    """:func:`adaptation_figure` as a PNG."""
+    return _save(adaptation_figure(grid, curves, phases, title), path)
+
+
+def adaptation_figure(
+    grid: np.ndarray,
+    curves: dict[str, np.ndarray],
+    phases: list[tuple[float, float]],
+    title: str,
+) -> Any:
     """Reward rate around the human's changes: one panel per robot, so none hides another.
 
     Args:
@@ -212,7 +222,6 @@ def adaptation(
         curves: robot -> array (seeds x grid) of tasks per hour.
         phases: ``(start time, oracle rate)`` of each human, in order.
         title: the figure's title.
-        path: PNG to write.
     """
     from hg_marl.training.colours import colours
 
@@ -249,7 +258,9 @@ def adaptation(
         ax.set_ylabel("tasks per hour")
     axes.flat[0].legend(fontsize=7, loc="lower left")
     fig.suptitle(title, fontsize=10)
-    return _save(fig, path)
+    # tight_layout makes room for the figure's title above the panels' own (without it they overlap)
+    fig.tight_layout()
+    return fig
 
 
 CLIP = 4.0

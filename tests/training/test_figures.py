@@ -189,3 +189,15 @@ def test_regret_bars_scale_fits_the_compared_robots_and_cut_bars_say_their_value
     assert overlapping_texts(fig) == []
     heights = [round(p.get_height(), 3) for p in ax.patches]
     assert heights == [1.0, 2.0, 2.875, 0.5]
+
+
+@pytest.mark.parametrize("robots", [3, 5])
+def test_adaptation_title_clears_the_panel_titles(robots: int) -> None:
+    grid = np.arange(300.0, 1501.0, 10.0)
+    curves = {f"robot_{k}": np.full((2, len(grid)), 100.0 + k) for k in range(robots)}
+    fig = plots.adaptation_figure(grid, curves, [(0.0, 118.0), (600.0, 112.0)], "Human: a -> b; a long title")
+    assert overlapping_texts(fig) == []
+    for ax in fig.axes:
+        if ax.get_visible():  # the robot's curve shows (the switch's axvline lives in axes coordinates)
+            assert "robot (mean)" not in hidden_lines(ax) and "line 0" not in hidden_lines(ax)
+    plt.close(fig)
