@@ -93,6 +93,15 @@ def check_config(config: SwitchingConfig) -> None:
         raise ConfigError(f"--baseline {config.baseline}: not one of --robots ({', '.join(config.robots)})")
     if len(set(config.robots)) != len(config.robots):
         raise ConfigError("--robots: a robot is named twice")
+    from hg_marl.agents.robots import make_robot
+    from hg_marl.core.errors import HgMarlError
+
+    for robot in config.robots:  # built once here, so a bad spec is refused before any run
+        try:
+            job = _job(config, config.pairs[0], config.periods[0], robot, 0)
+            make_robot(job.robot, **job.robot_params)
+        except (HgMarlError, ValueError, TypeError) as exc:
+            raise ConfigError(f"--robots {robot}: {exc}") from None
 
 
 def schedule(names: tuple[str, str], period: float, duration: float) -> tuple[list[str], list[float]]:

@@ -54,6 +54,8 @@ def test_recovery_is_read_after_each_long_phase_change() -> None:
         (["--pairs", "h_giver_only/h_hesitant", "--baseline", "oracle"], "--baseline"),
         (["--pairs", "h_giver_only/h_hesitant", "--seeds", "0"], "--seeds"),
         (["--pairs", "h_giver_only/h_hesitant", "--duration", "inf"], "--duration"),
+        (["--pairs", "h_giver_only/h_hesitant", "--robots", "planner,bogus"], "--robots"),
+        (["--pairs", "h_giver_only/h_hesitant", "--robots", "planner,planner:partner_aware=maybe"], "--robots"),
     ],
 )
 def test_bad_arguments_are_one_line(args: list[str], option: str, tmp_path: Path) -> None:
