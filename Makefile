@@ -9,7 +9,7 @@ PYTEST_ARGS ?=
 NOX_ARGS ?=
 MUTATION_ARGS ?=
 RAY_VENV ?= .venv-ray
-SLOW_WORKERS ?= 2
+TEST_WORKERS ?= 2
 
 .PHONY: setup reproduce test test-slow test-browser test-ray test-integrations test-mutation mutation-full lint bench clean
 
@@ -32,12 +32,12 @@ setup: $(BIN)/.installed
 reproduce: setup
 	$(BIN)/hg-marl reproduce --out $(OUT)
 
+# The tests are independent: pytest-xdist spreads them over the cores (TEST_WORKERS=1: one process).
 test: setup lint
-	$(BIN)/python -m pytest -m "not slow and not integrations and not browser and not ray" $(PYTEST_ARGS)
+	$(BIN)/python -m pytest -n $(TEST_WORKERS) -m "not slow and not integrations and not browser and not ray" $(PYTEST_ARGS)
 
-# The long tests are independent CPU-bound runs: pytest-xdist spreads them over the cores.
 test-slow: setup
-	$(BIN)/python -m pytest -n $(SLOW_WORKERS) -m "slow and not integrations and not browser and not ray" $(PYTEST_ARGS)
+	$(BIN)/python -m pytest -n $(TEST_WORKERS) -m "slow and not integrations and not browser and not ray" $(PYTEST_ARGS)
 
 # The MARL libraries (Tianshou, RLlib, SuperSuit+SB3, CleanRL-style, make_vec) and the
 # lowest/newest gymnasium and pettingzoo, each in its own nox environment (noxfile.py).
