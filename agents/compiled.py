@@ -396,12 +396,18 @@ def compile_human(
         raise CompileError(f"human: {name!r} cannot be compiled: {exc}") from None
     arrays = CompiledHuman.arrays_of(world, packer, answers)
     if path is not None:
-        from hg_marl.training.io import atomic_write
-
-        def write(tmp: Path) -> None:
-            buf = io.BytesIO()
-            np.savez(buf, key=np.array(key), **arrays)  # type: ignore[arg-type]
-            tmp.write_bytes(buf.getvalue())
-
-        atomic_write(path, write)
+        assert key is not None
+        save_table(path, key, arrays)
     return CompiledHuman(world, live, arrays, name)
+
+
+def save_table(path: Path, key: str, arrays: dict[str, np.ndarray]) -> None:
+    """A compiled table as one ``.npz`` with its content key, written atomically (no pickle)."""
+    from hg_marl.training.io import atomic_write
+
+    def write(tmp: Path) -> None:
+        buf = io.BytesIO()
+        np.savez(buf, key=np.array(key), **arrays)  # type: ignore[arg-type]
+        tmp.write_bytes(buf.getvalue())
+
+    atomic_write(path, write)

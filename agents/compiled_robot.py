@@ -55,7 +55,6 @@ humans, only in a folder the user names (``cache=FOLDER``, or ``$HG_MARL_CACHE``
 from __future__ import annotations
 
 import hashlib
-import io
 import sys
 from collections import deque
 from pathlib import Path
@@ -63,7 +62,7 @@ from pathlib import Path
 import numpy as np
 from tqdm import tqdm
 
-from hg_marl.agents.compiled import CompileError, Packer, default_cache, source_digest
+from hg_marl.agents.compiled import CompileError, Packer, default_cache, save_table, source_digest
 from hg_marl.agents.partner import PartnerMonitor
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules, BatchState
@@ -308,12 +307,6 @@ def compile_robot(
         "actions": np.array([a for _, a in items], dtype=np.int64),
     }
     if path is not None:
-        from hg_marl.training.io import atomic_write
-
-        def write(tmp: Path) -> None:
-            buf = io.BytesIO()
-            np.savez(buf, key=np.array(key), **arrays)  # type: ignore[arg-type]
-            tmp.write_bytes(buf.getvalue())
-
-        atomic_write(path, write)
+        assert key is not None
+        save_table(path, key, arrays)
     return CompiledRobot(world, arrays, robot, stall_after=stall_after)
