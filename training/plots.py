@@ -26,6 +26,16 @@ def _save(fig: Any, path: Path) -> Path:
     return out
 
 
+def _label_panels(axes: Any, n: int, xlabel: str, ylabel: str) -> None:
+    """A grid of ``n`` used panels: the spare ones hidden, x labels on the bottom row, y on the left column."""
+    for ax in axes.flat[n:]:
+        ax.set_visible(False)
+    for ax in axes[-1]:
+        ax.set_xlabel(xlabel)
+    for ax in axes[:, 0]:
+        ax.set_ylabel(ylabel)
+
+
 def _legend_outside(ax: Any, source: Any = None) -> None:
     """The legend of ``source``'s lines (default: ``ax``'s), right of ``ax``, off the data."""
     handles, labels = (source or ax).get_legend_handles_labels()
@@ -175,12 +185,7 @@ def weight_amplitude_figure(logs: dict[str, list[pd.DataFrame]], threshold: floa
         ax.set_title(f"{_name(labels)}\n{where} (mean of {len(logs[first])} seeds)", fontsize=8)
         ax.set_yscale("log")
         ax.grid(alpha=0.3)
-    for ax in axes.flat[n:]:
-        ax.set_visible(False)
-    for ax in axes[-1]:
-        ax.set_xlabel("decision")
-    for ax in axes[:, 0]:
-        ax.set_ylabel("sum |w| (log)")
+    _label_panels(axes, n, "decision", "sum |w| (log)")
     title = f"Fig. 5: habit weight amplitude, mean over seeds (dotted: {threshold:g}, the habit has started learning)"
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
@@ -250,12 +255,7 @@ def adaptation_figure(
                 ax.axvline(start / 60, color="grey", linestyle=":")
         ax.set_title(label, fontsize=9)
         ax.grid(alpha=0.3)
-    for ax in axes.flat[n:]:
-        ax.set_visible(False)
-    for ax in axes[-1]:
-        ax.set_xlabel("simulated time (min)")
-    for ax in axes[:, 0]:
-        ax.set_ylabel("tasks per hour")
+    _label_panels(axes, n, "simulated time (min)", "tasks per hour")
     axes.flat[0].legend(fontsize=7, loc="lower left")
     fig.suptitle(title, fontsize=10)
     # tight_layout makes room for the figure's title above the panels' own (without it they overlap)

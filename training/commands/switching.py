@@ -34,7 +34,7 @@ def register(app: typer.Typer) -> None:
         import json
 
         from hg_marl.agents.humans.population import load_population
-        from hg_marl.core.errors import ConfigError, check_finite
+        from hg_marl.core.errors import ConfigError
         from hg_marl.core.scenario import load_scenario
         from hg_marl.training import plots
         from hg_marl.training.commands.common import check_duration, check_out_dir, check_workers, counting_bar
@@ -67,8 +67,6 @@ def register(app: typer.Typer) -> None:
             period_values = tuple(float(p) for p in periods.split(",") if p.strip())
         except ValueError:
             raise ConfigError(f"--periods {periods!r}: expected a comma list of seconds") from None
-        for p in period_values:
-            check_finite(p, "--periods", positive=True)
         robot_specs = tuple(split_specs(robots)) if robots else ("planner", f"belief:population={population}")
         config = SwitchingConfig(
             scenario=scenario,
