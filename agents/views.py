@@ -56,6 +56,7 @@ from gymnasium import spaces
 
 from hg_marl.agents.humans.registry import resolve_human
 from hg_marl.core import Agent, Durations, Scenario, World
+from hg_marl.core.cycle import ends_episode, seat_reward
 from hg_marl.envs.table_cleaning import EVENT_SEPARATOR, raw_env
 from hg_marl.policy import Actor
 
@@ -310,8 +311,8 @@ class HumanView(_View):
             task_reward = float(self.env.rewards["human"])
             # Episodic: the task is over once the robot completes it; the human's move left
             # in that cycle cannot matter, so the human's episode ends here.
-            done = task_reward > 0 and not self.env.continuing
-        reward = task_reward - self.effort_weight * work
+            done = bool(ends_episode(task_reward, self.env.continuing))
+        reward = seat_reward(task_reward, work, self.effort_weight)
         info = self._info(robot_action, events, work=work, task_reward=task_reward)
         return self._obs(), reward, done, truncated, info
 

@@ -38,7 +38,7 @@ import numpy as np
 from gymnasium import spaces
 from gymnasium.vector import AutoresetMode, VectorEnv
 
-from hg_marl.core import Agent, Kind, State, World
+from hg_marl.core import Agent, Kind, State, World, cycle
 from hg_marl.core.errors import ConfigError, check_int
 
 MEMORY_LIMIT = 2 * 2**30
@@ -491,19 +491,18 @@ class BatchedTable(VectorEnv):
         won: np.ndarray,
     ) -> tuple[np.ndarray, np.ndarray]:
         """Clock, effort, idle and cycle counters of a finished cycle; (terminated, truncated)."""
-        length = np.maximum(dur[0], dur[1])
+        waited = (
+            cycle.waited_batch(self.world, Agent.ROBOT, acts[0]),
+            cycle.waited_batch(self.world, Agent.HUMAN, acts[1]),
+        )
+        length, idle = cycle.close_batch(dur, waited)
         for a in (0, 1):
-            waited = acts[a] == self.rules.wait[a]
-            self.effort[rows, a] += np.where(ok[a] & ~waited, dur[a], 0.0)
-            self.idle[rows, a] += np.where(waited, length, length - dur[a])
+            self.effort[rows, a] += cycle.effort_batch(ok[a], waited[a], dur[a])
+            self.idle[rows, a] += idle[a]
         self.clock[rows] += length
         self.cycles[rows] += 1
-        truncate = np.zeros(len(rows), dtype=bool)
-        if self.max_cycles is not None:
-            truncate |= self.cycles[rows] >= self.max_cycles
-        if self.time_budget is not None:
-            truncate |= self.clock[rows] >= self.time_budget
-        done = won & (not self.continuing)
+        truncate = cycle.truncated_batch(self.cycles[rows], self.clock[rows], self.max_cycles, self.time_budget)
+        done = cycle.ends_episode(won, self.continuing)
         return done, truncate & ~done
 
     def _robot_cycle(self, rows: np.ndarray, actions: np.ndarray) -> tuple[Any, Any, Any, dict[str, Any]]:
@@ -512,7 +511,7 @@ class BatchedTable(VectorEnv):
         self.state.put(rows, sub)
         self._stale[rows] = True
         won = self._rewarded(rows, reward)
-        h_act, ok_h, d_h = self._partner_move(rows, np.where(ok_r, actions, -1))
+        h_act, ok_h, d_h = self._partner_move(rows, cycle.seen_batch(actions, ok_r))
         done, trunc = self._end_cycle(rows, (actions, h_act), (ok_r, ok_h), (d_r, d_h), won)
         info = self._info(rows, actions, ok_r, "human", h_act, ok_h)
         return reward, done, trunc, info
@@ -535,8 +534,8 @@ class BatchedTable(VectorEnv):
             acts, _, _ = self._partner_move(g, np.full(len(g), -1, dtype=np.int64))
             robot_action[go_on] = acts
             task_reward[go_on] = self._robot_won[g]
-            done = done | (go_on & (task_reward > 0) & (not self.continuing))
-        reward = task_reward - self.effort_weight * work
+            done = done | (go_on & cycle.ends_episode(task_reward, self.continuing))
+        reward = cycle.seat_reward(task_reward, work, self.effort_weight)
         info = self._info(rows, actions, ok_h, "robot", robot_action, np.ones(len(rows), bool))
         info["work"], info["task_reward"] = work, task_reward
         return reward, done, trunc, info
