@@ -78,6 +78,7 @@ test-ray: $(RAY_VENV)/bin/.installed
 lint: setup
 	$(BIN)/ruff check .
 	$(BIN)/mypy
+	$(BIN)/python .ci/lint_layers.py
 
 bench: setup
 	$(BIN)/python benchmarks/env_throughput.py

@@ -230,7 +230,7 @@ class World:
         return len(self.fact_names)
 
     @cached_property
-    def _fact_lookup(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+    def fact_lookup(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
         """Every fact but the offers as a look-up: ``table[robot_at][fact, place of its object]``.
 
         Each fact of the paper's vector depends on one object's place and the robot's
@@ -256,7 +256,7 @@ class World:
 
     def compute_facts(self, state: State) -> np.ndarray:
         """The paper's boolean fact vector for ``state`` (a fresh int8 array)."""
-        lookup, rows, objects, n_fixed = self._fact_lookup
+        lookup, rows, objects, n_fixed = self.fact_lookup
         fixed = lookup[state.robot_at][rows, np.array(state.where, dtype=np.intp)[objects]]
         out = np.zeros(n_fixed + 2 * self.n_objects, dtype=np.int8)
         out[:n_fixed] = fixed

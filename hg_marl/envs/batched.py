@@ -5,7 +5,7 @@ reaches which spot from where, where a throw lands, where a goto leads, each act
 kind, object, target and duration) as numpy arrays, and applies the preconditions and
 effects that ``RuleTable.feasible`` and ``RuleTable.successor`` state to a whole batch of
 states; nothing scenario-specific is computed here. The facts come from
-``World._fact_lookup`` (one fancy index), the table draw from ``World.initial_states``.
+``World.fact_lookup`` (one fancy index), the table draw from ``World.initial_states``.
 A property test (``tests/env/test_batched.py``) steps it beside ``World.step`` on random
 action sequences and requires identical trajectories.
 
@@ -32,7 +32,7 @@ gathers), so numpy is the default; no GPU was available to measure ``"cuda"``.
 
 from __future__ import annotations
 
-from typing import Any, Protocol
+from typing import Any, Protocol, cast, runtime_checkable
 
 import numpy as np
 from gymnasium import spaces
@@ -213,7 +213,7 @@ class BatchedRules:
 
     def facts(self, b: BatchState) -> np.ndarray:
         """(N, F) int8: ``World.compute_facts`` for every table (one fancy index)."""
-        lookup, rows, objects, n_fixed = self.world._fact_lookup
+        lookup, rows, objects, n_fixed = self.world.fact_lookup
         size = len(b)
         out = np.zeros((size, n_fixed + 2 * self.n_objects), dtype=np.int8)
         out[:, :n_fixed] = lookup[b.robot_at[:, None], rows[None, :], b.where[:, objects]]
@@ -232,12 +232,54 @@ class ArrayPartner(Protocol):
 
     ``seen`` is, per table, the learning robot's successful action of this cycle (-1 if it
     failed), for partners whose choice depends on it; a robot partner gets -1.
+
+    Optional capabilities, each declared by its own protocol below and detected once when
+    the table is built (never looked up on the hot path): :class:`FollowsClock`
+    (``follow``), :class:`ResetsRows` (``reset_rows``) and :class:`TabledHuman`
+    (``actions``, ``outcome``, ``answer``, ``fall_back``).
     """
 
     name: str
 
     def act(self, batch: BatchState, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
         """The partner's action index per table."""
+
+
+@runtime_checkable
+class FollowsClock(Protocol):
+    """A partner whose behaviour depends on each table's clock (a schedule of humans)."""
+
+    def follow(self, clock: np.ndarray, tasks_solved: np.ndarray) -> None:
+        """Called before each of its moves with every table's clock and tasks solved."""
+
+
+@runtime_checkable
+class ResetsRows(Protocol):
+    """A partner that keeps something per table (an actor, a member) to start afresh."""
+
+    def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
+        """Tables ``rows`` start a new episode."""
+
+
+@runtime_checkable
+class TabledHuman(Protocol):
+    """A compiled human: its answers' outcomes tabulated (``agents/compiled.py``).
+
+    ``outcome`` holds, per table entry, the next state's fields (``where``, ``robot_at``,
+    ``offer_by``, ``offer_obj``), its ``facts`` and robot ``mask``, and the action's
+    ``ok`` and ``duration``, all computed by :class:`BatchedRules` at compile time.
+    """
+
+    actions: np.ndarray
+    outcome: dict[str, np.ndarray]
+
+    def answer(self, batch: BatchState, seen: np.ndarray, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+        """(table entry, found) per table."""
+
+    def fall_back(
+        self, batch: BatchState, seen: np.ndarray, rng: np.random.Generator, out: np.ndarray, found: np.ndarray
+    ) -> np.ndarray:
+        """``out`` with the live partner's answers where ``found`` is False."""
 
 
 def check_batch(world: World, num_envs: Any, memory_limit: int = MEMORY_LIMIT) -> int:
@@ -299,6 +341,9 @@ class BatchedTable(VectorEnv):
         self.rules = BatchedRules(self.world)
         self.seat = Agent(seat)
         self.partner = partner
+        self._follows = isinstance(partner, FollowsClock)
+        self._resets = isinstance(partner, ResetsRows)
+        self._tabled = isinstance(partner, TabledHuman) and partner.outcome is not None
         self.continuing, self.max_cycles, self.time_budget = bool(continuing), max_cycles, time_budget
         self.effort_weight = float(effort_weight)
         self.device = device
@@ -416,12 +461,11 @@ class BatchedTable(VectorEnv):
 
     def _partner_move(self, rows: np.ndarray, seen: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The partner's move on tables ``rows``: (actions, ok, duration)."""
-        follow = getattr(self.partner, "follow", None)
-        if follow is not None:  # a partner whose behaviour depends on each table's clock (a schedule)
-            follow(self.clock, self.tasks_solved)
+        if self._follows:
+            cast(FollowsClock, self.partner).follow(self.clock, self.tasks_solved)
         sub = self._sub(rows)
         other = self.seat.other
-        if other is Agent.HUMAN and getattr(self.partner, "outcome", None) is not None:
+        if other is Agent.HUMAN and self._tabled:
             return self._compiled_move(rows, sub, seen)
         acts = np.asarray(self.partner.act(sub, seen, self._partner_rng), dtype=np.int64)
         ok, duration, reward = self.rules.step(sub, other, acts)
@@ -439,7 +483,7 @@ class BatchedTable(VectorEnv):
 
         Tables outside the table are answered by the live human and stepped by the rules.
         """
-        partner: Any = self.partner
+        partner = cast(TabledHuman, self.partner)
         pos, found = partner.answer(sub, seen, self._partner_rng)
         acts = partner.actions[pos]
         if found.all():
@@ -576,9 +620,8 @@ class BatchedTable(VectorEnv):
         return info
 
     def _reset_partner(self, rows: np.ndarray) -> None:
-        hook = getattr(self.partner, "reset_rows", None)
-        if hook is not None:
-            hook(rows, self._partner_rng)
+        if self._resets:
+            cast(ResetsRows, self.partner).reset_rows(rows, self._partner_rng)
 
     def _reset_rows(self, rows: np.ndarray) -> None:
         self.state.put(rows, self.rules.initial(self._rng, len(rows)))
