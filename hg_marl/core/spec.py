@@ -302,33 +302,3 @@ def bind(
         except SpecError as exc:
             raise error(str(exc)) from None
     return out
-
-
-def construct(
-    text: str | Spec,
-    classes: Mapping[str, Any],
-    params: Mapping[str, Any],
-    *,
-    kind: str,
-    error: type[HgMarlError],
-) -> Any:
-    """Build ``classes[name](**bound parameters)`` from a spec plus keyword overrides.
-
-    The one way registries of classes (robots, criteria) turn ``"hybrid:criterion=vpi"``
-    into an object: parameters are typed by the constructor's defaults (:func:`bind`),
-    and a ValueError/TypeError of the constructor becomes ``error`` naming the thing.
-    """
-    try:
-        spec = parse_spec(text, kind)
-    except SpecError as exc:
-        raise error(str(exc)) from None
-    cls = classes.get(spec.name)
-    if cls is None:
-        raise error(f"unknown {kind} {spec.name!r}; available: {', '.join(classes)}")
-    kwargs = bind(spec, signature_defaults(cls), params, what=f"{kind} {spec.name!r}", error=error)
-    try:
-        return cls(**kwargs)
-    except HgMarlError:
-        raise
-    except (TypeError, ValueError) as exc:
-        raise error(f"{kind} {spec.name!r}: {exc}") from None
