@@ -75,6 +75,23 @@ def _split_top_level(text: str) -> list[str]:
     return parts
 
 
+def split_specs(text: str) -> list[str]:
+    """A comma list of specs: ``a,b:k=1,j=2,c`` -> ``[a, b:k=1,j=2, c]``.
+
+    A piece ``k=v`` without a name continues the spec before it (command-line lists of
+    humans or robots, ``--humans`` and ``--robots``).
+    """
+    out: list[str] = []
+    for piece in (p.strip() for p in text.split(",")):
+        if not piece:
+            continue
+        if out and "=" in piece and ":" not in piece and ":" in out[-1]:
+            out[-1] += "," + piece
+        else:
+            out.append(piece)
+    return out
+
+
 def parse_spec(text: str | Spec, what: str = "spec") -> Spec:
     """Split ``"name:k=v,k2=v2"`` into a :class:`Spec` (values stay text until :func:`bind`).
 
