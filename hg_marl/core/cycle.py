@@ -40,6 +40,10 @@ import numpy as np
 from hg_marl.core.types import Agent, Event, State
 from hg_marl.core.world import World
 
+_new: Any = tuple.__new__
+"""Builds a result tuple without the named tuple's keyword-handling ``__new__``: a half
+is built at every turn of every environment, so its construction is kept to one call."""
+
 RESET_EVENT = Event("reset", "table", "", "new layout")
 """Added to the events of the action that solved the table when the run goes on (continuing)."""
 
@@ -94,13 +98,39 @@ class Cycle(NamedTuple):
 
 def half(world: World, state: State, agent: Agent, action: int, redraw: np.random.Generator | None = None) -> Half:
     """``agent`` plays ``action`` in ``state``; ``redraw``: the generator of a continuing run, else None."""
-    out = world.step(state, agent, action)
+    nxt, ok, duration, reward, events = world.step(state, agent, action)
     waited = action == world.table.wait[agent]
-    effort = out.duration if out.ok and not waited else 0.0
-    if out.reward and redraw is not None:
-        fresh = world.initial_state(redraw)
-        return Half(fresh, out.ok, out.duration, out.reward, (*out.events, RESET_EVENT), effort, waited)
-    return Half(out.state, out.ok, out.duration, out.reward, out.events, effort, waited)
+    out: Half = _new(Half, (nxt, ok, duration, reward, events, duration if ok and not waited else 0.0, waited))
+    return redrawn(world, out, redraw) if reward and redraw is not None else out
+
+
+def redrawn(world: World, solved: Half, rng: np.random.Generator) -> Half:
+    """A half that solved the table, in a run that goes on: a fresh table and a ``reset`` event."""
+    return solved._replace(state=world.initial_state(rng), events=(*solved.events, RESET_EVENT))
+
+
+class Halves:
+    """:func:`half` for one world, memoised: the environments' hot path.
+
+    A half without a redraw depends only on the state, the agent and the action, so it
+    is kept (the memo is cleared past the world's cache size, as the world's own memos
+    are); a redraw, which draws from the caller's generator, is applied afresh each time.
+    """
+
+    def __init__(self, world: World) -> None:
+        self.world = world
+        self._memo: dict[tuple[State, int, int], Half] = {}
+        self._limit = world.cache_limit
+
+    def __call__(self, state: State, agent: Agent, action: int, redraw: np.random.Generator | None = None) -> Half:
+        """:func:`half` (same arguments, less the world)."""
+        key = (state, agent, action)
+        out = self._memo.get(key)
+        if out is None:
+            if len(self._memo) > self._limit:
+                self._memo.clear()
+            out = self._memo[key] = half(self.world, state, agent, action)
+        return redrawn(self.world, out, redraw) if out.reward and redraw is not None else out
 
 
 def seen(action: int, ok: bool) -> int:
@@ -110,14 +140,10 @@ def seen(action: int, ok: bool) -> int:
 
 def close(durations: tuple[float, float], waited: tuple[bool, bool], charged: float = 0.0) -> CycleTime:
     """The cycle's length (the longer action plus ``charged`` decision time) and idle time per agent."""
-    length = max(durations[0], durations[1]) + charged
-    return CycleTime(
-        length,
-        (
-            length if waited[0] else length - durations[0],
-            length if waited[1] else length - durations[1],
-        ),
-    )
+    d_robot, d_human = durations
+    length = (d_robot if d_robot > d_human else d_human) + charged
+    idle = (length if waited[0] else length - d_robot, length if waited[1] else length - d_human)
+    return _new(CycleTime, (length, idle))
 
 
 def cycle_length(d_robot: float, d_human: float) -> float:

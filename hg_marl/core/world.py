@@ -62,12 +62,12 @@ class World:
         """Per object, the first bin that accepts it (names and facts; any of ``bins_of`` will do)."""
         self._actions = table.actions
         self._index = table.index
-        self._cache_limit = cache_entries(
+        self.cache_limit = cache_entries(
             table.n_objects,
             len(self.fact_names),
             max(len(table.actions[Agent.ROBOT]), len(table.actions[Agent.HUMAN])),
         )
-        """Entries each memo table may hold before it is cleared (:func:`cache_entries`)."""
+        """Entries each memo table may hold before it is cleared (:func:`cache_entries`; the cycle's too)."""
         self._step_cache: dict[tuple[State, int, int], Outcome] = {}
         self._facts_cache: dict[State, np.ndarray] = {}
         self._mask_cache: tuple[dict[State, np.ndarray], dict[State, np.ndarray]] = ({}, {})
@@ -202,7 +202,7 @@ class World:
         key = (state, agent, index)
         out = self._step_cache.get(key)
         if out is None:
-            if len(self._step_cache) > self._cache_limit:
+            if len(self._step_cache) > self.cache_limit:
                 self._step_cache.clear()
             out = self._step_cache[key] = self._outcome(state, agent, index)
         return out
@@ -270,7 +270,7 @@ class World:
         if arr is None:
             arr = self.compute_facts(state)
             arr.flags.writeable = False
-            if len(self._facts_cache) > self._cache_limit:
+            if len(self._facts_cache) > self.cache_limit:
                 self._facts_cache.clear()
             self._facts_cache[state] = arr
         return arr
@@ -287,7 +287,7 @@ class World:
             arr = np.zeros(self.n_actions(agent), dtype=np.int8)
             arr[self.feasible_indices(state, agent)] = 1
             arr.flags.writeable = False
-            if len(cache) > self._cache_limit:
+            if len(cache) > self.cache_limit:
                 cache.clear()
             cache[state] = arr
         return arr

@@ -60,7 +60,7 @@ from pettingzoo import AECEnv
 from pettingzoo.utils import wrappers
 
 from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Scenario, State, World
-from hg_marl.core.cycle import Half, close, half, truncated
+from hg_marl.core.cycle import Half, Halves, close, truncated
 from hg_marl.core.errors import ConfigError, check_bool, check_finite, check_int
 from hg_marl.envs.render import HUMAN_MESSAGE, caption_of, render_ansi, render_rgb
 from hg_marl.policy import Turn
@@ -143,6 +143,7 @@ class raw_env(AECEnv):
             )
             for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)
         }
+        self._half = Halves(self.world)
         self.events_tuple = bool(events_tuple)
         self._event_text: dict[tuple[Event, ...], str | tuple[str, ...]] = {}
         self._rng = np.random.default_rng()
@@ -224,7 +225,7 @@ class raw_env(AECEnv):
         agent = _AGENT_OF[name]
         if type(action) is not int or not 0 <= action < self._n_actions[agent]:
             action = self._check_action(agent, action)
-        out = half(self.world, self.world_state, agent, action, self._rng if self.continuing else None)
+        out = self._half(self.world_state, agent, action, self._rng if self.continuing else None)
         self.world_state = out.state
         self._halves[agent] = out
         self._last_actions[agent] = action

@@ -19,6 +19,7 @@ from hypothesis import strategies as st
 from hg_marl.core import Agent, World
 from hg_marl.core.cycle import (
     RESET_EVENT,
+    Halves,
     close,
     close_batch,
     cycle,
@@ -175,3 +176,18 @@ def test_the_scan_finds_a_restated_clock() -> None:
     assert _restates_the_clock(ast.parse("t = max(d_robot, d_human)"))
     assert _restates_the_clock(ast.parse("t = np.maximum(dur[0], dur[1])"))
     assert not _restates_the_clock(ast.parse("t = max(a, b)"))
+
+
+def test_the_memoised_halves_equal_the_pure_half() -> None:
+    world = World("roboergosum")
+    halves = Halves(world)
+    rng = np.random.default_rng(4)
+    state = world.initial_state(rng)
+    for _ in range(300):
+        agent = Agent(int(rng.integers(2)))
+        action = int(rng.integers(world.n_actions(agent)))
+        seed = int(rng.integers(100))
+        got = halves(state, agent, action, np.random.default_rng(seed))
+        assert got == half(world, state, agent, action, np.random.default_rng(seed))
+        assert halves(state, agent, action) == half(world, state, agent, action)
+        state = got.state

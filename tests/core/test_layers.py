@@ -22,9 +22,9 @@ DECLARED_EXCEPTIONS = {
     # promise of the package); their entry points build a scripted partner from a name,
     # which only the agents' registries can do.
     "hg_marl.agents.views:RobotView",
-    "hg_marl.agents.views:robot_vector_env",
+    "hg_marl.agents.vector_envs:robot_vector_env",
     "hg_marl.agents.views:HumanView",
-    "hg_marl.agents.views:human_vector_env",
+    "hg_marl.agents.vector_envs:human_vector_env",
 }
 
 
