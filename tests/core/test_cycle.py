@@ -76,6 +76,9 @@ def test_a_solved_table_is_redrawn_only_when_the_run_goes_on() -> None:
     expected = world.initial_state(np.random.default_rng(3))
     going_on = half(world, clean, Agent.ROBOT, wait, rng)
     assert going_on.state == expected and going_on.events[-1] == RESET_EVENT
+    halves = Halves(world)
+    assert halves(clean, Agent.ROBOT, wait) == episodic  # memoised without the redraw
+    assert halves(clean, Agent.ROBOT, wait, np.random.default_rng(3)) == going_on  # the redraw applied afresh
 
 
 # ---- the AEC environment runs exactly `cycle` ---------------------------------------------
