@@ -192,7 +192,7 @@ class World:
             events.append(Event("placed", name, objects[o], self.place_name(target)))
         elif kind is Kind.GOTO:
             events.append(Event("moved", name, "", self.scenario.robot_locations[nxt.robot_at]))
-        elif agent is Agent.ROBOT and table.is_clean(state.where):
+        elif table.solves(state, agent, index):
             reward = 1.0
             events.append(Event("completed", name, "", "task"))
         return Outcome(nxt, True, duration, reward, tuple(events))

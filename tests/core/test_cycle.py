@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ast
 import copy
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -143,12 +144,21 @@ def test_the_batched_twin_agrees_with_the_scalar_rules(d: st.DataObject) -> None
         assert ends[i] == truncated(cycles[i], d_r[i], *limits)
 
 
-# ---- no stray copy of the clock rule ------------------------------------------------------
+# ---- no stray copy of the clock rule or the reward rule -----------------------------------
 KNOWN_COPIES = {
     "agents/oracle.py",  # the robot-turn models (being moved to their own package)
     "agents/headroom.py",  # the exact headroom's model (same)
 }
 """Modules that still restate a cycle's length; each should call ``hg_marl.core.cycle``."""
+
+KNOWN_REWARD_COPIES = {
+    "agents/oracle.py",
+    "agents/headroom.py",
+    "agents/compiled.py",
+    "agents/compiled_robot.py",
+    "agents/robots/belief.py",
+}
+"""Modules that still restate the completing wait; each should call ``RuleTable.solves``."""
 
 
 def _restates_the_clock(tree: ast.AST) -> bool:
@@ -165,32 +175,52 @@ def _restates_the_clock(tree: ast.AST) -> bool:
     return False
 
 
-def test_no_module_restates_the_clock_rule() -> None:
-    offenders = set()
+def _restates_the_reward(tree: ast.AST) -> bool:
+    """An ``and`` of a ``wait`` comparison and an ``is_clean(...)`` call: the completing wait written out."""
+    for node in ast.walk(tree):
+        if isinstance(node, ast.BoolOp) and isinstance(node.op, ast.And):
+            parts = [ast.unparse(v) for v in node.values]
+            if any("wait" in p and isinstance(v, ast.Compare) for p, v in zip(parts, node.values, strict=True)) and any(
+                "is_clean(" in p for p in parts
+            ):
+                return True
+    return False
+
+
+def _offenders(restates: Callable[[ast.AST], bool]) -> set[str]:
+    found = set()
     for package in ("hg_marl", "agents", "training"):
         for path in sorted((ROOT / package).rglob("*.py")):
             rel = path.relative_to(ROOT).as_posix()
-            if rel != "hg_marl/core/cycle.py" and _restates_the_clock(ast.parse(path.read_text(encoding="utf-8"))):
-                offenders.add(rel)
-    assert offenders == KNOWN_COPIES, "call hg_marl.core.cycle (cycle_length, close) instead of restating it"
+            if not rel.startswith("hg_marl/core/") and restates(ast.parse(path.read_text(encoding="utf-8"))):
+                found.add(rel)
+    return found
 
 
-def test_the_scan_finds_a_restated_clock() -> None:
+def test_no_module_restates_the_clock_rule() -> None:
+    offenders = _offenders(_restates_the_clock)
+    assert offenders <= KNOWN_COPIES, "call hg_marl.core.cycle (cycle_length, close) instead of restating it"
+
+
+def test_no_module_restates_the_reward_rule() -> None:
+    offenders = _offenders(_restates_the_reward)
+    assert offenders <= KNOWN_REWARD_COPIES, "call RuleTable.solves instead of restating the completing wait"
+
+
+def test_the_scans_find_a_restated_rule() -> None:
     assert _restates_the_clock(ast.parse("t = max(d_robot, d_human)"))
     assert _restates_the_clock(ast.parse("t = np.maximum(dur[0], dur[1])"))
     assert not _restates_the_clock(ast.parse("t = max(a, b)"))
+    assert _restates_the_reward(ast.parse("done = ok and a == wait and table.is_clean(state.where)"))
+    assert not _restates_the_reward(ast.parse("done = table.solves(state, agent, a)"))
 
 
-def test_the_memoised_halves_equal_the_pure_half() -> None:
-    world = World("roboergosum")
-    halves = Halves(world)
-    rng = np.random.default_rng(4)
-    state = world.initial_state(rng)
-    for _ in range(300):
-        agent = Agent(int(rng.integers(2)))
-        action = int(rng.integers(world.n_actions(agent)))
-        seed = int(rng.integers(100))
-        got = halves(state, agent, action, np.random.default_rng(seed))
-        assert got == half(world, state, agent, action, np.random.default_rng(seed))
-        assert halves(state, agent, action) == half(world, state, agent, action)
-        state = got.state
+def test_solves_is_the_robots_wait_on_a_clean_table() -> None:
+    world = World("paper2015")
+    clean = world.initial_state(np.random.default_rng(0))._replace(where=(world.n_spots,) * world.n_objects)
+    messy = world.initial_state(np.random.default_rng(0))
+    table = world.table
+    assert table.solves(clean, Agent.ROBOT, table.wait[Agent.ROBOT])
+    assert not table.solves(clean, Agent.HUMAN, table.wait[Agent.HUMAN])
+    assert not table.solves(clean, Agent.ROBOT, 0)
+    assert not table.solves(messy, Agent.ROBOT, table.wait[Agent.ROBOT])
