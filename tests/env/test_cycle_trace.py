@@ -126,6 +126,14 @@ CASES: dict[str, tuple[Callable[[], str], str]] = {
         lambda: _view(lambda: RobotView(human="lazy", continuing=True, max_cycles=200), 600),
         "1b0bc390bd0fbed9",
     ),
+    "robot-view-cooperative": (
+        lambda: _view(lambda: RobotView(human="cooperative", continuing=True, max_cycles=200), 400),
+        "1e1842d02a47e49f",
+    ),
+    "robot-view-noisy": (
+        lambda: _view(lambda: RobotView(human="noisy:temperature=0.5", max_cycles=100), 300),
+        "353c40383384b3a9",
+    ),
     "human-view-planner": (
         lambda: _view(lambda: HumanView(robot="planner", effort_weight=0.05, max_cycles=60), 400),
         "0e92a5a9d5495339",
