@@ -206,7 +206,7 @@ def test_a_policy_saved_for_the_robot_seat_is_refused_naming_the_file(tmp_path: 
 
 
 def test_the_benchmarks_learned_option_prints_both_rows(tmp_path: Path) -> None:
-    """``batched_throughput.py --learned FOLDER`` (the README's command) on a short budget."""
+    """``batched_throughput.py --learned FOLDER`` (the command of docs/batched.md) on a short budget."""
     import subprocess
     import sys
 

@@ -1,25 +1,15 @@
-"""The README's "With MARL libraries" examples run as written, each in a fresh interpreter."""
+"""The "With MARL libraries" page's examples (``docs/libraries.md``) run as written, each in a fresh interpreter."""
 
 from __future__ import annotations
 
-import re
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
-README = Path(__file__).resolve().parents[2] / "README.md"
+from tests.docs_sections import blocks, section
 
-
-def section_blocks(title: str) -> list[str]:
-    text = README.read_text()
-    start = text.index(f"## {title}\n")
-    end = text.find("\n## ", start + 1)
-    return re.findall(r"```python\n(.*?)```", text[start : end if end > 0 else None], flags=re.S)
-
-
-BLOCKS = section_blocks("With MARL libraries")
+BLOCKS = blocks(section("libraries.md"), "python")
 
 
 def test_the_section_has_examples() -> None:

@@ -1,4 +1,4 @@
-"""Registered ids work the way the README shows, including from a fresh interpreter."""
+"""Registered ids work the way the README and docs/using.md show, including from a fresh interpreter."""
 
 from __future__ import annotations
 

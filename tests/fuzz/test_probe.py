@@ -8,7 +8,7 @@ Most cases run in-process (fast); :data:`SUBPROCESS` runs the worst ones as real
 under a 2 GiB address-space limit and a 10 s timeout. A larger hypothesis sweep over trace
 lines and scenario names is marked slow.
 
-Families (README "Bad input" states these counts): names, durations, traces, model
+Families (``docs/bad-input.md`` states these counts): names, durations, traces, model
 headers and weights, hyperparameters, output paths, workers and name lists, full disk.
 """
 
@@ -595,9 +595,11 @@ def test_sweep_any_name_loads_safely_or_is_refused(name: str, where: str) -> Non
     assert "/" not in scenario.name and not scenario.name.startswith(".")
 
 
-def test_case_counts_match_the_readme() -> None:
-    """The README states how many probe cases each family has; keep it honest."""
-    readme = (Path(__file__).parents[2] / "README.md").read_text()
+def test_case_counts_match_the_docs() -> None:
+    """The "Bad input" page states how many probe cases each family has; keep it honest."""
+    from tests.docs_sections import section
+
+    readme = section("bad-input.md")
     counts: dict[str, int] = {}
     for family, *_ in CASES:
         counts[family] = counts.get(family, 0) + 1

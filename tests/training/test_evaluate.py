@@ -185,7 +185,7 @@ def test_bundled_studies_are_valid(name: str) -> None:
 
 
 def test_readme_quick_look_command_runs(tmp_path: Path) -> None:
-    # The README's quick look: the bundled cross-play study narrowed to one seed, robot and human.
+    # The quick look of docs/studies.md: the bundled cross-play study narrowed to one seed, robot and human.
     study = Path(__file__).parents[2] / "studies" / "crossplay.toml"
     args = ["evaluate", str(study), "--out", str(tmp_path), "--seeds", "1", "--robots", "planner,habit"]
     result = CliRunner().invoke(app, [*args, "--humans", "lazy", "--workers", "1"])
