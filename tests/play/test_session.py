@@ -174,8 +174,8 @@ def test_play_command_in_the_terminal_and_bad_robot(tmp_path: Path, monkeypatch:
     [
         (["--port", "-1"], "--port -1: expected 0 (a free port) to 65535"),
         (["--port", "70000"], "--port 70000: expected 0 (a free port) to 65535"),
-        (["--record", "FILE"], "--record FILE: expected a directory for the traces, not a file"),
-        (["--tui", "--record", "FILE/sub"], "not a file (FILE is a file)"),
+        (["--record", "FILE"], "--record FILE: is a file; name a folder"),
+        (["--tui", "--record", "FILE/sub"], "--record FILE/sub: FILE is a file, not a folder"),
     ],
 )
 def test_play_bad_port_or_record_is_one_line(
