@@ -293,5 +293,16 @@ def test_docs_state_the_limits_the_code_enforces() -> None:
 
     text = DOCS.read_text()
     for value in (MAX_SEEDS, MAX_RUNS, MAX_MEMBERS, MAX_CYCLES, MAX_TABLE_ROWS, MAX_DIGITS):
-        assert f"{value:,}" in text, value
-    assert f"{MAX_ARRAY_BYTES >> 30} GiB" in text
+        assert f"| {value:,} |" in text or f"{value:,} rows" in text, value
+    assert f"| {MAX_ARRAY_BYTES >> 30} GiB |" in text
+
+
+def test_docs_state_the_play_server_defaults() -> None:
+    pytest.importorskip("uvicorn")
+    from hg_marl.training.play.server_limits import ServerLimits
+
+    text, limits = DOCS.read_text(), ServerLimits()
+    for name in ("idle_timeout", "header_timeout", "body_timeout"):
+        assert f"| `{name}` | {getattr(limits, name):g} s |" in text, name
+    assert f"| `max_connections` | {limits.max_connections} |" in text
+    assert f"| `max_header_bytes` | {limits.max_header_bytes:,} |" in text
