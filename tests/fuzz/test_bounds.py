@@ -30,7 +30,7 @@ from hg_marl.core.errors import MAX_DIGITS
 from hg_marl.training.limits import MAX_RUNS, MAX_SEEDS
 from hg_marl.training.runner import MAX_CYCLES
 from tests.cli_helpers import run_main
-from tests.fuzz.test_probe import PAPER, check_refused, files_under
+from tests.fuzz.test_probe import PAPER, check_refused, files_under, with_durations
 
 DOCS = Path(__file__).parents[2] / "docs" / "inputs.md"
 LONG = "7" * (MAX_DIGITS + 700)
@@ -49,6 +49,10 @@ def study(tmp: Path, *lines: str, name: str = "s.toml") -> str:
 def _write(tmp: Path, name: str, text: str) -> str:
     (tmp / name).write_text(text)
     return str(tmp / name)
+
+
+FAST = with_durations(*(f"{k} = 0.01" for k in ("pick", "throw", "give", "take", "place", "goto", "wait", "failed")))
+"""paper2015 with every action at the 0.01 s floor: 1e7 s is 1e9 cycles, over the limit."""
 
 
 CASES: dict[str, tuple[Callable[[Path], list[str]], str]] = {
@@ -71,6 +75,16 @@ CASES: dict[str, tuple[Callable[[Path], list[str]], str]] = {
     # counts on the command line
     "reproduce --seeds 1e9": (lambda t: ["reproduce", "--seeds", "1000000000", "--out", str(t / "o")],
                               f"--seeds: 1,000,000,000 is over the limit of {MAX_SEEDS:,}"),
+    "reproduce --duration over the cycle limit": (
+        lambda t: ["reproduce", "--duration", "1e7", "--scenario", _write(t, "f.toml", FAST), "--out", str(t / "o")],
+        f"--duration 1e+07: up to 1e+09 cycles at the shortest action duration (0.01 s), over the limit "
+        f"{MAX_CYCLES:,}"),
+    "switching --duration over the cycle limit": (
+        lambda t: ["switching", "--population", "p.toml", "--pairs", "a/b", "--duration", "1e7", "--scenario",
+                   _write(t, "f.toml", FAST), "--out", str(t / "o")], "--duration 1e+07"),
+    "population --duration over the cycle limit": (
+        lambda t: ["population", "generate", "--out", str(t / "p.toml"), "--duration", "1e7", "--scenario",
+                   _write(t, "f.toml", FAST)], "--duration 1e+07"),
     "reproduce --adaptation-seeds 1e9": (
         lambda t: ["reproduce", "--adaptation-seeds", "1000000000", "--out", str(t / "o")], "--adaptation-seeds"),
     "compare --seeds 1e9": (lambda t: ["compare", "--seeds", "1000000000", "--out", str(t / "o")], "--seeds"),

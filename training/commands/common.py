@@ -44,9 +44,19 @@ def spec_with(text: str, items: Iterable[str] | None, option: str, params_option
     return Spec(spec.name, {**spec.raw, **extra})
 
 
-def check_duration(value: float, option: str = "--duration") -> float:
-    """A simulated duration: finite, positive, at most :data:`MAX_DURATION`."""
-    return check_finite(value, option, positive=True, maximum=MAX_DURATION)
+def check_duration(value: float, option: str = "--duration", scenario: str | None = None) -> float:
+    """A simulated duration: finite, positive, at most :data:`MAX_DURATION`.
+
+    With ``scenario``, also within :data:`~hg_marl.training.runner.MAX_CYCLES` cycles of
+    its shortest action, so a sweep is refused before it claims its first run.
+    """
+    duration = check_finite(value, option, positive=True, maximum=MAX_DURATION)
+    if scenario is not None:
+        from hg_marl.core.scenario import load_scenario
+        from hg_marl.training.runner import check_cycles
+
+        check_cycles(duration, load_scenario(scenario).durations.shortest, option)
+    return duration
 
 
 def check_out_file(path: Path | None, option: str, suffixes: tuple[str, ...] = ()) -> Path | None:

@@ -83,7 +83,7 @@ def register(app: typer.Typer) -> None:
             candidates=candidates,
             sizes=sizes,
             robots=_robots(robots),
-            duration=check_duration(duration),
+            duration=check_duration(duration, scenario=scenario),
             seeds=seeds,
         )
         from hg_marl.agents.robots import make_robot

@@ -43,7 +43,7 @@ def register(app: typer.Typer) -> None:
         config = ReproduceConfig(
             out=out,
             seeds=seeds,
-            duration=paper.DEFAULT_DURATION if duration is None else check_duration(duration),
+            duration=check_duration(paper.DEFAULT_DURATION if duration is None else duration, scenario=scenario),
             scenario=scenario,
             paper_only=paper_only,
             adaptation=adaptation,
