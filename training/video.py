@@ -31,12 +31,14 @@ MAX_FRAMES = 3000
 
 
 def check_video_path(path: Path) -> Path:
-    """Refuse an unknown extension, or MP4 without ffmpeg, before a run starts.
+    """Refuse an unknown extension, MP4 without ffmpeg, or a place it cannot be written, before a run starts.
 
     Raises:
         ConfigError: one line naming ``--video`` and what to do.
     """
-    check_output(path, "--video", suffixes=FORMATS)
+    if path.suffix.lower() not in FORMATS:
+        raise ConfigError(f"--video {path}: expected a .gif or .mp4 file name")
+    check_output(path, "--video")
     if path.suffix.lower() == ".mp4" and importlib.util.find_spec("imageio_ffmpeg") is None:
         raise ConfigError(f"--video {path}: MP4 needs ffmpeg: pip install 'hg-marl[video]' (or write a .gif)")
     return path
