@@ -75,6 +75,8 @@ def check_output(path: Path, option: str, *, folder: bool = False, suffixes: tup
                 if found.exists() and not found.is_dir():
                     raise ConfigError(f"{option} {path}: {found} is a file, not a folder")
                 raise ConfigError(f"{option} {path}: folder {base} does not exist (create it first)")
+            if path.exists() and not path.is_file():  # a device or a pipe would be replaced, not written
+                raise ConfigError(f"{option} {path}: not a regular file (results replace the file they name)")
             if path.exists():
                 try:  # opened for appending and closed: the file is not changed
                     os.close(os.open(path, os.O_WRONLY | os.O_APPEND))

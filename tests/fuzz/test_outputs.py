@@ -145,6 +145,7 @@ def test_an_existing_file_is_kept_as_it_was(tmp_path: Path) -> None:
         (lambda t: t / "f", True, "is a file; name a folder"),
         (lambda t: t / "f" / "sub", True, "f is a file, not a folder"),
         (lambda t: t / ("n" * 300) / "x.png", False, "not a usable path"),
+        (lambda t: Path("/dev/null"), False, "not a regular file"),
     ],
 )
 def test_what_is_wrong_is_named(tmp_path: Path, make: Callable[[Path], Path], folder: bool, message: str) -> None:
@@ -153,7 +154,8 @@ def test_what_is_wrong_is_named(tmp_path: Path, make: Callable[[Path], Path], fo
     (tmp_path / "f").write_text("a file")
     (tmp_path / "d.png").mkdir()
     with pytest.raises(ConfigError, match=re.escape(message)):
-        check_output(make(tmp_path), "--png", folder=folder, suffixes=() if folder else (".png",))
+        path = make(tmp_path)
+        check_output(path, "--png", folder=folder, suffixes=() if folder or path.parent == Path("/dev") else (".png",))
 
 
 # ---- a trace without the optional action_name ------------------------------------------------
