@@ -40,7 +40,7 @@ def test_the_section_has_its_examples() -> None:
 @pytest.mark.parametrize("index", range(len(BLOCKS)))
 def test_readme_python_block_runs(index: int, tmp_path: Path) -> None:
     out = subprocess.run(
-        [sys.executable, "-c", BLOCKS[index]], capture_output=True, text=True, timeout=300, cwd=tmp_path, check=False
+        [sys.executable, "-c", BLOCKS[index]], capture_output=True, text=True, timeout=600, cwd=tmp_path, check=False
     )
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip(), "each block prints what it shows"
@@ -50,6 +50,6 @@ def test_readme_python_block_runs(index: int, tmp_path: Path) -> None:
 def test_readme_command_runs(command: str, tmp_path: Path) -> None:
     hg_marl = Path(sys.executable).with_name("hg-marl")
     argv = [str(hg_marl) if hg_marl.exists() else "hg-marl", *shlex.split(command)[1:]]
-    out = subprocess.run(argv, capture_output=True, text=True, timeout=300, cwd=tmp_path, check=False)
+    out = subprocess.run(argv, capture_output=True, text=True, timeout=600, cwd=tmp_path, check=False)
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip()

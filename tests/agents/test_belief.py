@@ -209,7 +209,7 @@ def test_the_readme_command_runs_as_written() -> None:
         [sys.executable, "-c", "from hg_marl.training.cli import main; main()", *args],
         capture_output=True,
         text=True,
-        timeout=300,
+        timeout=600,
         cwd=Path(__file__).resolve().parents[2],
     )
     assert proc.returncode == 0, proc.stderr[-2000:]

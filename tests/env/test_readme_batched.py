@@ -18,7 +18,7 @@ BLOCKS = blocks(PAGE, "python")
 def test_the_batched_training_block_runs_and_prints_its_shapes(tmp_path: Path) -> None:
     assert len(BLOCKS) == 1
     out = subprocess.run(
-        [sys.executable, "-c", BLOCKS[0]], capture_output=True, text=True, timeout=300, cwd=tmp_path, check=False
+        [sys.executable, "-c", BLOCKS[0]], capture_output=True, text=True, timeout=600, cwd=tmp_path, check=False
     )
     assert out.returncode == 0, out.stderr
     words = out.stdout.split()
@@ -63,7 +63,7 @@ def test_the_learned_partner_commands_run_as_written_on_a_short_budget(tmp_path:
         [sys.executable, *bench[1:], "--seconds", "0.2"],
         capture_output=True,
         text=True,
-        timeout=300,
+        timeout=600,
         cwd=ROOT,
         check=False,
     )
@@ -80,7 +80,7 @@ def test_the_human_seat_benchmark_line_runs_narrowed() -> None:
     argv[argv.index("--num-envs") + 1] = "16"
     argv[argv.index("--seconds") + 1] = "0.2"
     out = subprocess.run(
-        [sys.executable, *argv[1:]], capture_output=True, text=True, timeout=300, cwd=ROOT, check=False
+        [sys.executable, *argv[1:]], capture_output=True, text=True, timeout=600, cwd=ROOT, check=False
     )
     assert out.returncode == 0, out.stderr
     assert "compiled" in out.stdout.lower(), out.stdout

@@ -5,7 +5,8 @@ its one error line must contain (the option or file field to fix). The rule chec
 every case: exit code 2, exactly one ``error:`` line, no traceback, and no file created
 anywhere under the working folder (bad input is refused before anything is written).
 Most cases run in-process (fast); :data:`SUBPROCESS` runs the worst ones as real processes
-under a 2 GiB address-space limit and a 10 s timeout. A larger hypothesis sweep over trace
+under a 2 GiB address-space limit (the memory bound is what is tested; a 600 s timeout
+only guards against a hang, so a loaded machine cannot fail the test). A larger hypothesis sweep over trace
 lines and scenario names is marked slow.
 
 Families (``docs/bad-input.md`` states these counts): names, durations, traces, model
@@ -486,7 +487,7 @@ def test_a_forbidden_folder_is_one_line(tmp_path: Path, monkeypatch: pytest.Monk
     assert list(tmp_path.iterdir()) == []
 
 
-# ---- real processes: a 2 GiB address space, 10 s ------------------------------------------
+# ---- real processes: a 2 GiB address space (600 s: a hang guard only) ----------------------
 
 LIMIT_BYTES = 2 << 30
 
@@ -531,7 +532,7 @@ def test_worst_inputs_in_a_real_process_under_limits(game_lines: list[dict], cas
         [sys.executable, "-c", "from hg_marl.training.cli import main; main()", *args],
         capture_output=True,
         text=True,
-        timeout=10,
+        timeout=600,  # a hang guard only: the refusal takes seconds, but a loaded machine may be slow
         preexec_fn=_limit,
         cwd=tmp_path,
         env={**os.environ, "OMP_NUM_THREADS": "1"},
