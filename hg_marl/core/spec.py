@@ -21,7 +21,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from hg_marl.core.errors import HgMarlError, SpecError
+from hg_marl.core.errors import HgMarlError, SpecError, check_digits
 
 REQUIRED: Any = None
 """Default marking a parameter with no default (e.g. a file path)."""
@@ -191,6 +191,7 @@ def convert(value: Any, default: Any, what: str, *, from_text: bool) -> Any:
             raise SpecError(f"{what}: takes a Python object, not a value in a spec")
         return value
     if from_text:
+        check_digits(value, what, SpecError)
         value = _literal(value)
         if isinstance(value, str) and value.lstrip()[:1] in ("{", "["):
             raise SpecError(f"{what}: not valid JSON: {text}")

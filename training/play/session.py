@@ -363,10 +363,9 @@ def check_record_dir(record: Path) -> None:
     Raises:
         ConfigError: naming the option and the file in the way.
     """
-    for path in (record, *record.parents):
-        if path.exists() and not path.is_dir():
-            where = "" if path == record else f" ({path} is a file)"
-            raise ConfigError(f"--record {record}: expected a directory for the traces, not a file{where}")
+    from hg_marl.training.outputs import check_output
+
+    check_output(record, "--record", folder=True)
 
 
 def _login() -> str:
