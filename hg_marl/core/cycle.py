@@ -120,17 +120,23 @@ class Halves:
     def __init__(self, world: World) -> None:
         self.world = world
         self._memo: dict[tuple[State, int, int], Half] = {}
+        self._get = self._memo.get
         self._limit = world.cache_limit
 
-    def __call__(self, state: State, agent: Agent, action: int, redraw: np.random.Generator | None = None) -> Half:
-        """:func:`half` (same arguments, less the world)."""
-        key = (state, agent, action)
-        out = self._memo.get(key)
+    def play(self, state: State, agent: Agent, action: int, redraw: np.random.Generator | None = None) -> Half:
+        """:func:`half` (same arguments, less the world); hold the bound method on a hot path."""
+        out = self._get((state, agent, action))
         if out is None:
-            if len(self._memo) > self._limit:
-                self._memo.clear()
-            out = self._memo[key] = half(self.world, state, agent, action)
-        return redrawn(self.world, out, redraw) if out.reward and redraw is not None else out
+            out = self._fill(state, agent, action)
+        if redraw is not None and out.reward:
+            return redrawn(self.world, out, redraw)
+        return out
+
+    def _fill(self, state: State, agent: Agent, action: int) -> Half:
+        if len(self._memo) > self._limit:
+            self._memo.clear()
+        out = self._memo[(state, agent, action)] = half(self.world, state, agent, action)
+        return out
 
 
 def seen(action: int, ok: bool) -> int:
@@ -138,11 +144,11 @@ def seen(action: int, ok: bool) -> int:
     return action if ok else -1
 
 
-def close(durations: tuple[float, float], waited: tuple[bool, bool], charged: float = 0.0) -> CycleTime:
+def close(robot: Half, human: Half, charged: float = 0.0) -> CycleTime:
     """The cycle's length (the longer action plus ``charged`` decision time) and idle time per agent."""
-    d_robot, d_human = durations
+    d_robot, d_human = robot.duration, human.duration
     length = (d_robot if d_robot > d_human else d_human) + charged
-    idle = (length if waited[0] else length - d_robot, length if waited[1] else length - d_human)
+    idle = (length if robot.waited else length - d_robot, length if human.waited else length - d_human)
     return _new(CycleTime, (length, idle))
 
 
@@ -171,7 +177,7 @@ def cycle(
     """
     robot = half(world, state, Agent.ROBOT, robot_action, redraw)
     human = half(world, robot.state, Agent.HUMAN, human_action, redraw)
-    time = close((robot.duration, human.duration), (robot.waited, human.waited), charged)
+    time = close(robot, human, charged)
     return Cycle(robot, seen(robot_action, robot.ok), human, time)
 
 
@@ -204,7 +210,7 @@ def seen_batch(actions: np.ndarray, ok: np.ndarray) -> np.ndarray:
 
 def close_batch(
     durations: tuple[np.ndarray, np.ndarray], waited: tuple[np.ndarray, np.ndarray]
-) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:  # (robot, human) durations and waits per table
     """:func:`close` per table (no decision time: batched seats charge none): (length, idle per agent)."""
     length = np.maximum(durations[0], durations[1])
     return length, (

@@ -143,7 +143,7 @@ class raw_env(AECEnv):
             )
             for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)
         }
-        self._half = Halves(self.world)
+        self._half = Halves(self.world).play
         self.events_tuple = bool(events_tuple)
         self._event_text: dict[tuple[Event, ...], str | tuple[str, ...]] = {}
         self._rng = np.random.default_rng()
@@ -254,7 +254,7 @@ class raw_env(AECEnv):
 
     def _end_cycle(self) -> None:
         robot, human = self._halves
-        time = close((robot.duration, human.duration), (robot.waited, human.waited), self._charged)
+        time = close(robot, human, self._charged)
         idle = self._idle
         idle[0] += time.idle[0]
         idle[1] += time.idle[1]

@@ -17,9 +17,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from hg_marl.core import Agent, World
+from hg_marl.core import Agent, State, World
 from hg_marl.core.cycle import (
     RESET_EVENT,
+    Half,
     Halves,
     close,
     close_batch,
@@ -39,11 +40,16 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 # ---- worked by hand ---------------------------------------------------------------------
+def _played(duration: float, waited: bool) -> Half:
+    """A half as ``close`` reads it: its duration and whether it was a wait."""
+    return Half(State((), 0), True, duration, 0.0, (), 0.0 if waited else duration, waited)
+
+
 def test_a_cycle_lasts_the_longer_action_and_a_waiter_idles_all_of_it() -> None:
     # robot waits 1 s, human picks 2 s: the cycle lasts 2 s; the robot idles 2, the human 0
-    assert close((1.0, 2.0), (True, False)) == (2.0, (2.0, 0.0))
+    assert close(_played(1.0, True), _played(2.0, False)) == (2.0, (2.0, 0.0))
     # robot throws 3 s, human picks 2 s, 0.5 s of planning charged: 3.5 s; idle 0.5 and 1.5
-    assert close((3.0, 2.0), (False, False), charged=0.5) == (3.5, (0.5, 1.5))
+    assert close(_played(3.0, False), _played(2.0, False), charged=0.5) == (3.5, (0.5, 1.5))
 
 
 def test_the_human_sees_only_a_successful_robot_action() -> None:
@@ -77,7 +83,7 @@ def test_a_solved_table_is_redrawn_only_when_the_run_goes_on() -> None:
     expected = world.initial_state(np.random.default_rng(3))
     going_on = half(world, clean, Agent.ROBOT, wait, rng)
     assert going_on.state == expected and going_on.events[-1] == RESET_EVENT
-    halves = Halves(world)
+    halves = Halves(world).play
     assert halves(clean, Agent.ROBOT, wait) == episodic  # memoised without the redraw
     assert halves(clean, Agent.ROBOT, wait, np.random.default_rng(3)) == going_on  # the redraw applied afresh
 
@@ -137,7 +143,7 @@ def test_the_batched_twin_agrees_with_the_scalar_rules(d: st.DataObject) -> None
     limits = d.draw(st.sampled_from([(None, None), (10, None), (None, 4.0), (3, 2.5)]))
     ends = truncated_batch(np.array(cycles), np.array(d_r), *limits)
     for i in range(n):
-        t = close((d_r[i], d_h[i]), (w_r[i], w_h[i]))
+        t = close(_played(d_r[i], w_r[i]), _played(d_h[i], w_h[i]))
         assert (length[i], idle[0][i], idle[1][i]) == (t.length, t.idle[0], t.idle[1])
         assert effort[i] == (d_r[i] if ok[i] and not w_r[i] else 0.0)
         assert shown[i] == seen(acts[i], ok[i])
