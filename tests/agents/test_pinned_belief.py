@@ -23,8 +23,8 @@ from hg_marl.agents.humans import make_human
 from hg_marl.agents.oracle import OracleRobot, oracle_rate
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.agents.robots.belief import BeliefRobot
-from hg_marl.core import Agent, World
-from hg_marl.policy import Turn
+from hg_marl.core import Agent, State, World
+from hg_marl.policy import Decision, Turn
 from hg_marl.training.runner import RunConfig, run
 
 COOP = "preference"
@@ -79,7 +79,7 @@ def test_a_robot_reused_in_another_world_solves_that_worlds_oracles(tmp_path: Pa
     )
 
 
-def _first_decision(robot: BeliefRobot, seed: int = 0) -> tuple[World, object, int]:
+def _first_decision(robot: BeliefRobot, seed: int = 0) -> tuple[World, State, int]:
     world = World("paper2015")
     robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
     state = world.initial_state(np.random.default_rng(seed))
@@ -87,29 +87,34 @@ def _first_decision(robot: BeliefRobot, seed: int = 0) -> tuple[World, object, i
     return world, state, action
 
 
-def _value(world: World, spec: str, state: object) -> float:
-    return float(oracle_rate(world, spec).value_at(world, state, Relabel(world)))  # type: ignore[arg-type]
+def _decision(robot: BeliefRobot) -> Decision:
+    assert robot.last_decision is not None
+    return robot.last_decision
+
+
+def _value(world: World, spec: str, state: State) -> float:
+    return float(oracle_rate(world, spec).value_at(world, state, Relabel(world)))
 
 
 def test_map_reports_the_most_probable_members_expected_seconds_and_its_probability(tmp_path: Path) -> None:
     # equal priors (0.95 / 2 each, 0.05 on "none of them"): the first member is the most probable
     robot = BeliefRobot(population=_population(tmp_path), splits="train", hedge="map")
     world, state, action = _first_decision(robot)
-    stats = dict(robot.last_decision.stats)  # type: ignore[union-attr]
+    stats = dict(_decision(robot).stats)
     assert stats["belief_top"] == pytest.approx(0.475)
     assert stats["expected_seconds"] == pytest.approx(_value(world, COOP, state))
-    assert robot.last_decision.partner == "coop" and robot.last_decision.action == action  # type: ignore[union-attr]
+    assert _decision(robot).partner == "coop" and _decision(robot).action == action
 
 
 def test_map_follows_the_evidence_to_the_other_member(tmp_path: Path) -> None:
     robot = BeliefRobot(population=_population(tmp_path), splits="train", hedge="map")
     world, state, _ = _first_decision(robot)
     weights = {COOP: 0.2, MAT: 0.7, "random": 0.1}
-    robot.posterior.posterior = lambda: weights  # type: ignore[method-assign]
+    robot.posterior.posterior = lambda: weights
     robot._prev = None
     robot.act(Turn(world, state, Agent.ROBOT, {}))
-    stats = dict(robot.last_decision.stats)  # type: ignore[union-attr]
-    assert stats["belief_top"] == pytest.approx(0.7) and robot.last_decision.partner == "mat"  # type: ignore[union-attr]
+    stats = dict(_decision(robot).stats)
+    assert stats["belief_top"] == pytest.approx(0.7) and _decision(robot).partner == "mat"
     assert stats["expected_seconds"] == pytest.approx(_value(world, MAT, state))
 
 
@@ -122,7 +127,7 @@ def test_qmdp_reports_the_weighted_mean_of_the_members_expected_seconds(tmp_path
         oracle = OracleRobot(result=oracle_rate(world, spec))
         oracle.reset(world, Agent.ROBOT, np.random.default_rng(0))
         assert oracle.act(Turn(world, state, Agent.ROBOT, {})) == action
-    stats = dict(robot.last_decision.stats)  # type: ignore[union-attr]
+    stats = dict(_decision(robot).stats)
     expected = (_value(world, COOP, state) + _value(world, MAT, state)) / 2  # equal weights
     assert stats["expected_seconds"] == pytest.approx(expected)
     assert stats["belief_top"] == pytest.approx(0.475)
@@ -131,11 +136,11 @@ def test_qmdp_reports_the_weighted_mean_of_the_members_expected_seconds(tmp_path
 def test_qmdp_weights_the_members_by_the_posterior(tmp_path: Path) -> None:
     robot = BeliefRobot(population=_population(tmp_path), splits="train", hedge="qmdp")
     world, state, action = _first_decision(robot)
-    robot.posterior.posterior = lambda: {COOP: 0.6, MAT: 0.3, "random": 0.1}  # type: ignore[method-assign]
+    robot.posterior.posterior = lambda: {COOP: 0.6, MAT: 0.3, "random": 0.1}
     robot._prev = None
     assert robot.act(Turn(world, state, Agent.ROBOT, {})) == action
     expected = (0.6 * _value(world, COOP, state) + 0.3 * _value(world, MAT, state)) / 0.9
-    assert dict(robot.last_decision.stats)["expected_seconds"] == pytest.approx(expected)  # type: ignore[union-attr]
+    assert dict(_decision(robot).stats)["expected_seconds"] == pytest.approx(expected)
 
 
 def test_the_held_out_member_is_never_believed_by_default(tmp_path: Path) -> None:

@@ -93,7 +93,9 @@ def test_robots_compared_leave_entropy_to_the_hybrid_default() -> None:
     assert "entropy" not in ROBOTS and ROBOTS["hybrid_partner_aware"] == ("hybrid", {"partner_aware": True})
 
 
-def test_run_adaptation_measures_against_the_final_humans_oracle(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+def test_run_adaptation_measures_against_the_final_humans_oracle(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
     rates = {"cooperative": 72.0, "lazy": 18.0, "noisy": 36.0}
     drawn: dict[str, Any] = {}
 

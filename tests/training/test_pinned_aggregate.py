@@ -108,7 +108,10 @@ def test_iqm_of_bootstrap_replications_is_per_replication() -> None:
 def test_br_prox_rows_per_scenario_and_split() -> None:
     frame = _frame({"A": {"tr": [1.0, 1.0], "te": [0.5, 0.5]}}, column="br_prox")
     rows = br_prox(frame, {"tr": "train", "te": "test"}, reps=0)
-    assert [(r["split"], r["iqm"], r["runs"], r["ci"]) for r in rows] == [("train", 1.0, 2, None), ("test", 0.5, 2, None)]
+    assert [(r["split"], r["iqm"], r["runs"], r["ci"]) for r in rows] == [
+        ("train", 1.0, 2, None),
+        ("test", 0.5, 2, None),
+    ]
     assert [(r["split"], r["iqm"]) for r in br_prox(frame, None, reps=0)] == [("all", 0.75)]
 
 

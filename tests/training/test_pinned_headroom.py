@@ -66,7 +66,10 @@ def test_a_population_gives_every_member_as_a_column_and_its_held_out_ones_as_th
 
 
 def test_a_list_of_humans_is_summarised_whole() -> None:
-    assert partners(None, ["lazy", "cooperative"]) == ([("lazy", "lazy"), ("cooperative", "cooperative")], ["lazy", "cooperative"])
+    assert partners(None, ["lazy", "cooperative"]) == (
+        [("lazy", "lazy"), ("cooperative", "cooperative")],
+        ["lazy", "cooperative"],
+    )
 
 
 @pytest.mark.parametrize(

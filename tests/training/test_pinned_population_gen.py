@@ -54,7 +54,7 @@ def test_features_are_event_frequencies_per_cycle_and_the_mean_rate() -> None:
         FakeRun(["pick(tape1)", "place(tape1,mat_shared)", "wait", "wait"], 10.0),
         FakeRun(["place(tape1,human_mat_1)", "throw(tape1)", "give(tape1)", "take(tape1)"], 30.0),
     ]
-    got = features(runs, shared)  # type: ignore[arg-type]
+    got = features(runs, shared)
     assert got == {
         "pick": 1 / 8,
         "throw": 1 / 8,
@@ -97,7 +97,7 @@ def _scaled() -> np.ndarray:
 def _reference_spread(x: np.ndarray, chosen: list[int]) -> float:
     d = {(i, j): math.dist(x[i], x[j]) for i in range(3) for j in range(i + 1, 3)}
     h = float(np.median(list(d.values())))
-    k = math.exp(-d[tuple(chosen)] ** 2 / (2 * h * h))  # type: ignore[index]
+    k = math.exp(-(d[tuple(chosen)] ** 2) / (2 * h * h))  # type: ignore[index]
     return math.log((1 + RIDGE) ** 2 - k * k)
 
 
@@ -120,7 +120,7 @@ def test_members_keep_their_unscaled_behaviour(generated: tuple[GeneratorConfig,
 
 
 def test_the_candidate_without_a_task_is_dropped_by_spec(generated: tuple[GeneratorConfig, Any]) -> None:
-    config, result = generated
+    _, result = generated
     specs = [m["spec"] for m in result.members]
     assert len(result.dropped) == 1 and result.dropped[0] not in specs
     assert result.dropped[0].startswith("preference:")

@@ -8,6 +8,7 @@ not exclude it.
 from __future__ import annotations
 
 import json
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -69,7 +70,7 @@ def _frame(scores: dict[str, dict[str, list[float]]]) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def _agg(pairs: dict[str, list[float] | None], flag: str = "", seeds: int = 5) -> dict[str, Any]:
+def _agg(pairs: Mapping[str, list[float] | None], flag: str = "", seeds: int = 5) -> dict[str, Any]:
     return {
         "robots": {"A": {"iqm": 0.5, "iqm_ci": [0.4, 0.6], "mean": 0.55, "mean_ci": None, "runs": 4}},
         "improvement": {k: {"p": 0.5 if ci is None else sum(ci) / 2, "ci": ci} for k, ci in pairs.items()},
@@ -103,7 +104,9 @@ def test_clear_pairs_are_those_whose_interval_excludes_one_half() -> None:
 
 
 def test_a_flag_is_repeated_beside_the_clear_pairs() -> None:
-    text = markdown(_study(), _frame({"A": {"h": [0.5, 0.6]}}), _agg(PAIRS, flag="only 2 seeds"), {"ran": 2, "reused": 0})
+    text = markdown(
+        _study(), _frame({"A": {"h": [0.5, 0.6]}}), _agg(PAIRS, flag="only 2 seeds"), {"ran": 2, "reused": 0}
+    )
     assert "2 of 5 pairs have a 95% CI that excludes 0.5 (all pairs in aggregate.json) (only 2 seeds):" in text
     assert "**Caution: only 2 seeds.**" in text
 
@@ -146,12 +149,16 @@ def test_br_prox_section_lists_every_row_with_its_headroom() -> None:
     ]
     lines = br_prox_section({"br_prox": rows}, {"paper2015": 0.25})
     assert lines[0].startswith("## BR-Prox")
-    assert lines[-3:] == ["| paper2015 | 0.25 | test | A | 0.80 | [0.70, 0.90] | 4 |", "| other | - | all | B | 1.00 | - | 2 |", ""]
+    assert lines[-3:] == [
+        "| paper2015 | 0.25 | test | A | 0.80 | [0.70, 0.90] | 4 |",
+        "| other | - | all | B | 1.00 | - | 2 |",
+        "",
+    ]
     assert br_prox_section({"br_prox": []}, {}) == [] and br_prox_section({}, {}) == []
 
 
 def test_intervals_figure_height_grows_with_the_robots() -> None:
-    agg = {
+    agg: dict[str, Any] = {
         "robots": {r: {"iqm": 0.5, "iqm_ci": [0.4, 0.6], "mean": 0.5, "mean_ci": [0.4, 0.6]} for r in "ABC"},
         "bootstrap": {"flag": ""},
     }

@@ -90,7 +90,9 @@ def test_jobs_play_the_members_specs_on_the_schedule() -> None:
     assert jobs[0].label == "switch_A_B_400_planner"
 
 
-def test_run_switching_pairs_each_robot_with_the_baseline_by_seed(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+def test_run_switching_pairs_each_robot_with_the_baseline_by_seed(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
     """Stand-ins: the planner solves 3 tasks on seed 0 and 5 on seed 1; "other" solves 1 on each seed."""
     solved = {("planner", 0): [500.0, 600.0, 900.0], ("planner", 1): [100.0, 200.0, 500.0, 600.0, 900.0]}
 
@@ -107,7 +109,9 @@ def test_run_switching_pairs_each_robot_with_the_baseline_by_seed(monkeypatch: p
     monkeypatch.setattr(switching, "check_config", lambda config: None)
     monkeypatch.setattr(switching, "run_sweep", lambda jobs, out, workers=1, on_done=None: None)
     monkeypatch.setattr(switching, "load_log", log_of)
-    monkeypatch.setattr("hg_marl.agents.oracle.oracle_rate", lambda s, spec: Rate({"lazy": 0.0, "cooperative": 36.0}[spec]))
+    monkeypatch.setattr(
+        "hg_marl.agents.oracle.oracle_rate", lambda s, spec: Rate({"lazy": 0.0, "cooperative": 36.0}[spec])
+    )
     summary = switching.run_switching(CONFIG, tmp_path)
     assert summary["oracle_rate_per_hour"] == {"A": 0.0, "B": 36.0} and summary["baseline"] == "planner"
     cells = {c["robot"]: c for c in summary["cells"]}
@@ -118,7 +122,9 @@ def test_run_switching_pairs_each_robot_with_the_baseline_by_seed(monkeypatch: p
     # paired by seed: 1 - 3 = -2 and 1 - 5 = -4; the baseline against itself is exactly 0
     assert cells["other"]["difference"]["mean"] == pytest.approx(-3.0)
     assert cells["other"]["difference"]["high"] == pytest.approx(-2.0) and cells["other"]["loses"] is True
-    assert cells["planner"]["difference"] == {"mean": 0.0, "low": 0.0, "high": 0.0} and cells["planner"]["loses"] is False
+    assert (
+        cells["planner"]["difference"] == {"mean": 0.0, "low": 0.0, "high": 0.0} and cells["planner"]["loses"] is False
+    )
     assert cells["other"]["recovered_runs"] == 2 and cells["other"]["recovery"]["mean"] == pytest.approx(150.0)
     table = switching_table(summary).splitlines()
     assert len(table) == 4 and len(table[1]) == len(table[0]) and set(table[1]) == {"-"}
