@@ -141,3 +141,31 @@ def test_tables_keep_their_own_clocks(world: World) -> None:
     # table 0 is autoreset (its action ignored, reward 0, counters zero); table 1 carries on
     assert trunc.tolist() == [False, False] and info["clock"].tolist() == [0.0, 2.0]
     assert rewards.tolist() == [0.0, 0.0]
+
+
+def test_a_compiled_humans_move_is_gathered_not_stepped(world: World, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A partner with outcome tables hands the next state: the rules step only the learning seat's move.
+
+    Counted work, not time: 12 cycles on 3 tables are 12 calls of the batched rules (the
+    robot's moves), where a partner without tables costs one more call per cycle.
+    """
+    from hg_marl.agents.compiled import compile_human
+
+    human = compile_human(world, "cooperative", cache=None)
+    env = BatchedTable(human, 3, world, max_cycles=None)
+    env.reset(seed=0)
+    calls = []
+    step = env.rules.step
+    monkeypatch.setattr(env.rules, "step", lambda *a, **k: calls.append(1) or step(*a, **k))
+    rng = np.random.default_rng(0)
+    for _ in range(12):
+        masks = env.action_masks()
+        env.step(np.array([rng.choice(np.flatnonzero(m)) for m in masks]))
+    assert len(calls) == 12 and human.fallbacks == 0
+    calls.clear()
+    plain = BatchedTable(Always(HUMAN_WAIT), 3, world, max_cycles=None)  # type: ignore[arg-type]
+    plain.reset(seed=0)
+    plain_step = plain.rules.step
+    monkeypatch.setattr(plain.rules, "step", lambda *a, **k: calls.append(1) or plain_step(*a, **k))
+    plain.step(np.full(3, ROBOT_WAIT))
+    assert len(calls) == 2

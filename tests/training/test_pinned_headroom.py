@@ -155,3 +155,10 @@ def test_write_headroom_writes_the_three_files_into_a_new_folder(tmp_path: Path)
     data = json.loads((out / "headroom.json").read_text())
     assert data["held_out"] == ["C"] and data["headroom"] == pytest.approx(0.0) == result.headroom
     assert pd.read_csv(out / "headroom.csv", index_col=0).loc["G", "C"] == pytest.approx(4 / 9, abs=1e-6)
+
+
+def test_write_headroom_into_an_existing_folder_replaces_its_files(tmp_path: Path) -> None:
+    (tmp_path / "headroom.json").write_text("{}")  # a previous report in the folder the user names
+    write_headroom(CROSSING, [("G", G), ("C", C)], ["G", "C"], tmp_path, progress=False)
+    data = json.loads((tmp_path / "headroom.json").read_text())
+    assert data["held_out"] == ["G", "C"] and data["headroom"] == pytest.approx(0.5)

@@ -157,3 +157,24 @@ def test_too_few_candidates_are_refused_before_any_run(tmp_path: Path) -> None:
     config = GeneratorConfig(candidates=2, sizes={"held_out": 3})
     with pytest.raises(ConfigError, match="--candidates: 2 is fewer than the 3 members"):
         population_gen.generate(config, Store(tmp_path / "store"))
+
+
+def test_each_reference_robots_features_come_from_its_own_runs(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    """Two robots x two seeds per candidate: the planner's runs at 100 and 200 tasks/h, the random
+    robot's at 10 and 30 (candidate c adds c to each); each robot's rate is the mean of its own two."""
+    rate = {("planner", 0): 100.0, ("planner", 1): 200.0, ("random", 0): 10.0, ("random", 1): 30.0}
+
+    def run_jobs(jobs: list[Any], store: Any, backend: Any, on_done: Any) -> tuple[list[FakeRun], None]:
+        out = []
+        for job in jobs:
+            c = int(job.label.split()[1])
+            out.append(FakeRun([ACTIONS[c % 3]] * 4, rate[job.robot, job.seed] + c))
+        return out, None
+
+    monkeypatch.setattr("hg_marl.training.sweep.run_jobs", run_jobs)
+    config = GeneratorConfig(candidates=3, sizes={"held_out": 3}, robots=("planner", "random"), seeds=2)
+    result = generate(config, Store(tmp_path / "store"))
+    for m in result.members:
+        c = int(m["name"][1:])
+        assert m["behaviour"]["planner.tasks_per_hour"] == pytest.approx(150.0 + c)
+        assert m["behaviour"]["random.tasks_per_hour"] == pytest.approx(20.0 + c)
