@@ -147,3 +147,25 @@ def test_the_held_out_member_is_never_believed_by_default(tmp_path: Path) -> Non
     robot = BeliefRobot(population=_population(tmp_path))
     assert robot.member_names == ("coop", "mat") and robot.member_specs == (COOP, MAT)
     assert BeliefRobot(population=_population(tmp_path), splits="held_out").member_names == ("idle",)
+
+
+def test_a_probe_is_the_most_telling_action_within_the_budget(tmp_path: Path) -> None:
+    """Expected seconds 10 (the best), 16, 24 and 40 under a belief of total weight 0.5; budget 10 s.
+
+    Replies tell 0.1, 0.3, 0.9 and 2.0 nats: the action of 16 s is the most telling within
+    10 + 10 = 20 s (24 s and 40 s are over it); it tells 0.2 nats more than the best, over MIN_GAIN.
+    """
+    robot = BeliefRobot(population=_population(tmp_path), splits="train", probe=10.0)
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(0))
+    info = {1: 0.1, 2: 0.3, 3: 0.9, 4: 2.0}
+    robot.information = lambda w, s, a, weights: info[a]  # type: ignore[method-assign]
+    mixed = {1: 5.0, 2: 8.0, 3: 12.0, 4: 20.0}  # seconds x total weight
+    assert robot._probe(world, state, [0.25, 0.25], mixed, 0.5) == (2, 0.3)
+    info[2] = 0.14  # 0.04 nats more than the best action's own reply: not worth a move
+    assert robot._probe(world, state, [0.25, 0.25], mixed, 0.5) == (1, 0.1)
+    info[2] = 0.1  # no more telling than the best: the best
+    assert robot._probe(world, state, [0.25, 0.25], mixed, 0.5) == (1, 0.1)
+    mixed[4] = float("inf")  # a hopeless action is never a probe, however telling
+    robot.probe = 1000.0
+    assert robot._probe(world, state, [0.25, 0.25], mixed, 0.5) == (3, 0.9)

@@ -233,3 +233,33 @@ def test_every_compiled_robot_state_is_found_in_its_table() -> None:
     empty = CompiledRobot(small, {"keys": np.zeros(0, dtype=np.int64), "actions": np.zeros(0, dtype=np.int64)})
     actions, found = empty.plan(BatchState.of(states[:3]))
     assert not found.any() and empty.fallbacks == 3 and actions.tolist() == [plans[s] for s in states[:3]]
+
+
+class _Recording:
+    """A stationary human (the registry's ``lazy``) that records the robot action it is asked about."""
+
+    uses_robot_action = False
+    name = "recording"
+
+    def __init__(self) -> None:
+        self.inner = compiled.make_human("lazy")
+        self.asked: list[int] = []
+
+    def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
+        self.inner.reset(world, agent, rng)
+
+    def distribution(self, world: World, state: object, robot_action: int = -1) -> list[tuple[int, float]]:
+        self.asked.append(robot_action)
+        return list(self.inner.distribution(world, state, robot_action))
+
+
+def test_the_live_fallback_asks_the_question_the_table_was_compiled_with(world: World) -> None:
+    """A human that ignores the robot's action is compiled with -1 as its key: the fallback asks with -1 too."""
+    human = _Recording()
+    table = compile_human(world, human, cache=None)
+    assert set(human.asked) == {-1}
+    human.asked.clear()
+    batch = BatchState.of([world.initial_state(np.random.default_rng(s)) for s in range(3)])
+    batch.offer_by[:], batch.offer_obj[:] = 1, 0  # the human's own offer to the robot: outside the table
+    table.act(batch, np.array([3, 5, 7]), np.random.default_rng(0))
+    assert table.fallbacks == 3 and human.asked == [-1, -1, -1]

@@ -145,3 +145,22 @@ def test_table_prints_never_for_no_recovery() -> None:
     assert lines[0] == "adaptation: 2 seeds, 1000 s runs; oracle tasks/h: noisy 36.0"
     assert len(lines[2]) == len(lines[1]) and set(lines[2]) == {"-"}
     assert lines[3].split() == ["back", "planner", "1.2", "[1.0,", "1.5]", "never", "0/2"]
+
+
+def test_a_switch_whose_times_and_humans_do_not_pair_is_refused(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """Three humans need two change times; with one the phases cannot be drawn: an error, not a short figure."""
+
+    class Rate:
+        rate_per_hour = 36.0
+
+    monkeypatch.setattr("hg_marl.agents.oracle.oracle_rate", lambda scenario, human: Rate())
+    monkeypatch.setattr(adaptation, "run_sweep", lambda jobs, out, workers=1, on_done=None: None)
+    monkeypatch.setattr(adaptation, "load_log", lambda job, out: SLOW)
+    monkeypatch.setattr("hg_marl.training.plots.adaptation", lambda *a: tmp_path / "x.png")
+    monkeypatch.setattr("hg_marl.training.plots.regret_bars", lambda results, path: path)
+    bad = Switch(("cooperative", "lazy", "noisy"), (100.0,))
+    config = AdaptationConfig(seeds=1, duration=1000.0, switches=("bad",), robots=("planner",), custom={"bad": bad})
+    with pytest.raises(ValueError):
+        adaptation.run_adaptation(tmp_path, config)
