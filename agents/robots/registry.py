@@ -9,6 +9,7 @@ from hg_marl.agents.robots.base import Robot
 from hg_marl.agents.robots.belief import BeliefRobot
 from hg_marl.agents.robots.habit import HabitRobot
 from hg_marl.agents.robots.hybrid import HybridRobot
+from hg_marl.agents.robots.memory import MemoryRobot
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.agents.robots.sb3 import SB3Robot
 from hg_marl.agents.robots.uniform import RandomRobot
@@ -16,7 +17,7 @@ from hg_marl.core.errors import RobotError
 from hg_marl.core.spec import construct
 
 ROBOTS: dict[str, type[Robot]] = {
-    c.name: c for c in (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot, BeliefRobot)
+    c.name: c for c in (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot, BeliefRobot, MemoryRobot)
 }
 """Robot classes by name (a registry of classes: the only module-level table)."""
 

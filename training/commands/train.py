@@ -25,7 +25,10 @@ def register(app: typer.Typer) -> None:
     def train_command(
         algo: Annotated[
             str,
-            typer.Option(help="ppo, a2c, dqn, maskable_ppo, ppo_batched (batched tables), or bc (behaviour cloning)."),
+            typer.Option(
+                help="ppo, a2c, dqn, maskable_ppo, ppo_batched (batched tables), ppo_recurrent (batched, with "
+                "memory), or bc (behaviour cloning)."
+            ),
         ] = ("maskable_ppo"),
         seat: Annotated[str, typer.Option(help="robot (against humans) or human (against a robot).")] = "robot",
         human: Annotated[
@@ -74,6 +77,9 @@ def register(app: typer.Typer) -> None:
         population: Annotated[
             Path | None, typer.Option(help="ppo_batched: a population file; trains against its train members.")
         ] = None,
+        recipe: Annotated[
+            str, typer.Option(help="ppo_recurrent: population recipe: members, fcp, e3t or coverage.")
+        ] = "members",
         tensorboard: Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")] = default(
             TrainConfig, "tensorboard"
         ),
@@ -90,6 +96,17 @@ def register(app: typer.Typer) -> None:
             path, accuracy = checked(lambda: behaviour_clone(traces, out, kind=bc_kind))
             typer.echo(f"behaviour cloning ({bc_kind}): reproduces {accuracy:.1%} of the recorded actions")
             typer.echo(f"  policy  {path}  (make_human('learned', path='{path}'))")
+            return
+
+        if algo == "ppo_recurrent":
+            from hg_marl.training.baselines.envs import split_population
+            from hg_marl.training.baselines.ppo_batched import population_members
+            from hg_marl.training.baselines.ppo_recurrent import train_from_options
+
+            members = population_members(population) if population is not None else tuple(split_population(human))
+            args = (members, scenario, recipe, steps, seed, out, checkpoint_freq, progress, tuple(hp or ()))
+            for line in checked(lambda: train_from_options(*args)):
+                typer.echo(line)
             return
 
         if algo == "ppo_batched":
