@@ -10,7 +10,8 @@ The model file is the project's (:mod:`hg_marl.agents.model_file`): a JSON heade
 ``memory`` naming the architecture in plain numbers (``obs_size``, ``hidden``,
 ``recurrent``, ``history``, ``history_cap``) and a ``.npz`` of the state dict. Loading
 rebuilds the network from those numbers (bounded) and requires the arrays to have
-exactly its names and shapes; nothing is unpickled.
+exactly its names and shapes (:func:`~hg_marl.agents.memory_numpy.check_memory_file`);
+nothing is unpickled. The robot plays the file in numpy (``agents/memory_numpy.py``).
 """
 
 from __future__ import annotations
@@ -22,12 +23,9 @@ import numpy as np
 import torch
 from torch import nn
 
+from hg_marl.agents.memory_numpy import check_memory_file
 from hg_marl.agents.model_file import ModelFile, load_model_file, save_model_file
-from hg_marl.core.errors import ModelFileError
-from hg_marl.envs.history import DEFAULT_CAP, MAX_HISTORY, history_size
-
-MAX_HIDDEN = 1024
-"""Widest layer a file may ask for (a bound on what loading allocates)."""
+from hg_marl.envs.history import DEFAULT_CAP
 
 
 class MemoryNet(nn.Module):
@@ -81,32 +79,10 @@ def save_memory(net: MemoryNet, path: Path, fields: dict[str, Any], history: int
     return save_model_file(path, header, arrays)
 
 
-def _int_field(mf: ModelFile, key: str, low: int, high: int) -> int:
-    value = mf.header.get(key)
-    if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
-        raise ModelFileError(f"{mf.path}: field {key!r}: expected an integer in [{low}, {high}], got {value!r}")
-    return value
-
-
 def net_from_file(mf: ModelFile) -> MemoryNet:
-    """Rebuild the network of a ``memory`` model file and load its weights (names and shapes must match)."""
-    if mf.header.get("kind") != "memory":
-        raise ModelFileError(f"{mf.path}: a {mf.header.get('kind')} policy, not a memory policy")
-    history = _int_field(mf, "history", 0, MAX_HISTORY)
-    cap = _int_field(mf, "history_cap", 1, 1000)
-    hidden = _int_field(mf, "hidden", 1, MAX_HIDDEN)
-    n_facts, n_actions = len(mf.header["fact_names"]), len(mf.header["action_names"])
-    obs_size = _int_field(mf, "obs_size", 1, 1 << 20)
-    if obs_size != n_facts + history_size(history, cap):
-        raise ModelFileError(f"{mf.path}: field 'obs_size' {obs_size} is not the facts plus the history features")
-    recurrent = mf.header.get("recurrent")
-    if not isinstance(recurrent, bool):
-        raise ModelFileError(f"{mf.path}: field 'recurrent': expected true or false, got {recurrent!r}")
-    net = MemoryNet(obs_size, n_actions, hidden, recurrent)
-    expected = {k: tuple(v.shape) for k, v in net.state_dict().items()}
-    got = {k: tuple(np.shape(v)) for k, v in mf.arrays.items()}
-    if got != expected:
-        raise ModelFileError(f"{mf.path}: weights do not match the architecture the header names")
+    """Rebuild the network of a ``memory`` model file and load its weights (names and shapes checked)."""
+    shape = check_memory_file(mf)
+    net = MemoryNet(shape.obs_size, shape.n_actions, shape.hidden, shape.recurrent)
     net.load_state_dict({k: torch.as_tensor(np.asarray(v, dtype=np.float32)) for k, v in mf.arrays.items()})
     net.eval()
     return net

@@ -10,8 +10,8 @@ new episode) and is carried from turn to turn. The turn's mask is always applied
 policy was trained masked), so its action is always feasible.
 
 Decision time: the habit's deterministic constant, as for the ``sb3`` robot.
-``deterministic=False`` samples the policy with the robot's own generator.
-torch is imported when a model is loaded, never at import.
+``deterministic=False`` samples the policy with the robot's own generator. The forward
+pass is numpy (``agents/memory_numpy.py``): playing never imports torch.
 """
 
 from __future__ import annotations
@@ -22,8 +22,9 @@ from typing import Any
 
 import numpy as np
 
+from hg_marl.agents.memory_numpy import NumpyMemoryPolicy
 from hg_marl.agents.meta.cost import CostModel
-from hg_marl.agents.model_file import check_world
+from hg_marl.agents.model_file import check_world, load_model_file
 from hg_marl.agents.robots.base import Robot
 from hg_marl.core import Agent, World
 from hg_marl.core.errors import RobotError
@@ -38,7 +39,8 @@ class MemoryRobot(Robot):
         path: the model header (``model.json``), its weights, its stem, or its folder.
         deterministic: take the most probable feasible action (False: sample).
         cost: decision cost model (default: the habit's 1 ms constant).
-        net: an in-memory network instead of ``path`` (with ``history``), for evaluation during training.
+        net: an in-memory policy instead of ``path`` (with ``history``): anything with
+            ``initial(n)`` and ``step(obs, h) -> (logits, h)`` on numpy arrays.
         history: the history length of ``net``.
     """
 
@@ -59,10 +61,9 @@ class MemoryRobot(Robot):
         self.file: Any = None
         self.cap = 8
         if path is not None:
-            from hg_marl.agents.memory_policy import load_memory
-
-            net, self.file = load_memory(path)
-            history, self.cap = int(self.file.header["history"]), int(self.file.header["history_cap"])
+            self.file = load_model_file(path, what="--model", seat="robot")
+            net = NumpyMemoryPolicy(self.file)
+            history, self.cap = net.shape.history, net.shape.cap
         self.net, self.history = net, int(history)
         self.tracker: HistoryTracker | None = None
         self.h: Any = None
@@ -79,8 +80,6 @@ class MemoryRobot(Robot):
 
     def act(self, turn: Turn) -> int:
         """The policy's action for the facts and the history so far (masked)."""
-        import torch
-
         t0 = time.perf_counter()
         assert self.tracker is not None, "reset() first"
         cycle = cycle_from_turn(turn)
@@ -89,15 +88,14 @@ class MemoryRobot(Robot):
             self.tracker.record(np.array([r]), np.array([r_ok]), np.array([hu]), np.array([h_ok]))
         facts = np.asarray(turn.observation["observation"])[: turn.world.n_facts]
         self.last_obs = np.concatenate([facts, self.tracker.features(Agent.ROBOT)[0]])
-        obs = self.last_obs.astype(np.float32)
-        mask = torch.as_tensor(np.asarray(turn.mask).astype(bool)).unsqueeze(0)
-        with torch.no_grad():
-            logits, _, self.h = self.net.step(torch.as_tensor(obs).unsqueeze(0), self.h)
-            probs = self.net.masked(logits, mask).probs[0].numpy().astype(np.float64)
+        logits, self.h = self.net.step(self.last_obs[None, :].astype(np.float64), self.h)
+        mask = np.asarray(turn.mask).astype(bool)
+        scores = np.where(mask, logits[0], -np.inf)
         if self.deterministic:
-            action = int(np.argmax(probs))
+            action = int(np.argmax(scores))
         else:
-            action = int(self.rng.choice(len(probs), p=probs / probs.sum()))
+            p = np.exp(scores - scores.max())
+            action = int(self.rng.choice(len(p), p=p / p.sum()))
         wall = time.perf_counter() - t0
         self._record("memory", action, planning_time=wall, decision_time=self.cost.habit_cost(wall))
         return action

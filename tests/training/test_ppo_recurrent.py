@@ -11,6 +11,7 @@ import torch
 from gymnasium import spaces
 
 from hg_marl.agents.humans.registry import make_human
+from hg_marl.agents.memory_numpy import NumpyMemoryPolicy
 from hg_marl.agents.memory_policy import MemoryNet, load_memory, save_memory
 from hg_marl.agents.model_file import world_fields
 from hg_marl.agents.robots import make_robot
@@ -85,7 +86,7 @@ def toy_config(memory: str, tmp_path: Path, updates: int) -> RecurrentConfig:
         gamma=0.99,
         ent_coef=0.01,
         epochs=4,
-        minibatches=2,
+        minibatches=1,
         eval_seconds=30.0,
         out=tmp_path,
     )
@@ -144,6 +145,13 @@ def test_model_file_round_trips_and_refuses_tampering(tmp_path: Path, recurrent:
         a, va, ha = net.step(x, net.initial(5))
         b, vb, hb = loaded.step(x, loaded.initial(5))
     assert torch.equal(a, b) and torch.equal(va, vb) and torch.equal(ha, hb)
+    # the robot's numpy player computes the same logits and hidden state, two steps running
+    player = NumpyMemoryPolicy(mf)
+    logits, h = player.step(x.numpy().astype(np.float64), player.initial(5))
+    logits, h = player.step(x.numpy().astype(np.float64), h)
+    with torch.no_grad():
+        a, _, ha = net.step(x, ha)
+    assert np.allclose(logits, a.numpy(), atol=1e-5) and np.allclose(h, ha.numpy(), atol=1e-5)
     assert mf.header["kind"] == "memory" and mf.header["history"] == 2
     text = path.read_text().replace('"hidden": 12', '"hidden": 13')
     path.write_text(text)
@@ -213,3 +221,28 @@ def test_coverage_recipe_starts_tables_away_from_the_initial_draw(tmp_path: Path
     moved = (env.state.where != plain.state.where).any(axis=1) | (env.state.robot_at != plain.state.robot_at)
     assert moved.mean() > 0.5
     assert not env.rules.is_clean(env.state).any()
+
+
+def test_train_command_runs_a_recipe_and_refuses_a_bad_one_in_one_line(tmp_path: Path) -> None:
+    from tests.cli_helpers import error_lines, run_main
+
+    common = ["train", "--algo", "ppo_recurrent", "--human", "preference", "--scenario", "forced_coordination"]
+    small = ["--hp", "num_envs=16", "--hp", "n_steps=8", "--hp", "eval_envs=2", "--hp", "eval_seconds=30"]
+    code, out, err = run_main([*common, "--recipe", "fcp", "--steps", "128", *small, "--out", str(tmp_path)])
+    assert code == 0, err
+    assert "env steps/s" in out and "learner steps/s" in out
+    assert (tmp_path / "model.json").is_file()
+    code, out, err = run_main([*common, "--recipe", "pbt", "--out", str(tmp_path / "bad")])
+    assert code == 2 and len(error_lines(err)) == 1 and "--recipe" in err
+
+
+def test_docs_page_python_blocks_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every python block of docs/learned-robots.md runs as written."""
+    import re
+
+    monkeypatch.chdir(tmp_path)
+    page = Path(__file__).resolve().parents[2] / "docs" / "learned-robots.md"
+    blocks = re.findall(r"```python\n(.*?)```", page.read_text(), re.S)
+    assert len(blocks) == 2
+    for i, block in enumerate(blocks):
+        exec(compile(block, f"{page.name}:block{i}", "exec"), {})
