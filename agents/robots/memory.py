@@ -9,6 +9,13 @@ it saw in training. A recurrent policy's hidden state starts at zero at ``reset`
 new episode) and is carried from turn to turn. The turn's mask is always applied (the
 policy was trained masked), so its action is always feasible.
 
+Stalls. A policy trained with partners who always do their share may wait for a partner
+who never will (both wait forever on a table that is still solvable). After ``unstall``
+turns (default 8) in which the robot waited and the partner made no progress (the
+history's counter), the robot takes the policy's best feasible action other than
+``wait``, so it never idles forever beside an idle partner; ``unstall=0`` plays the
+policy as trained.
+
 Decision time: the habit's deterministic constant, as for the ``sb3`` robot.
 ``deterministic=False`` samples the policy with the robot's own generator. The forward
 pass is numpy (``agents/memory_numpy.py``): playing never imports torch.
@@ -27,7 +34,7 @@ from hg_marl.agents.meta.cost import CostModel
 from hg_marl.agents.model_file import check_world, load_model_file
 from hg_marl.agents.robots.base import Robot
 from hg_marl.core import Agent, World
-from hg_marl.core.errors import RobotError
+from hg_marl.core.errors import RobotError, check_int
 from hg_marl.envs.history import HistoryTracker, cycle_from_turn
 from hg_marl.policy import Turn
 
@@ -42,6 +49,8 @@ class MemoryRobot(Robot):
         net: an in-memory policy instead of ``path`` (with ``history``): anything with
             ``initial(n)`` and ``step(obs, h) -> (logits, h)`` on numpy arrays.
         history: the history length of ``net``.
+        unstall: after this many turns in which the robot waited and its partner made no
+            progress, take the policy's best feasible action other than ``wait`` (0: never).
     """
 
     name = "memory"
@@ -53,6 +62,7 @@ class MemoryRobot(Robot):
         cost: CostModel | None = None,
         net: Any = None,
         history: int = 0,
+        unstall: int = 8,
     ) -> None:
         super().__init__(cost)
         if (path is None) == (net is None):
@@ -65,6 +75,9 @@ class MemoryRobot(Robot):
             net = NumpyMemoryPolicy(self.file)
             history, self.cap = net.shape.history, net.shape.cap
         self.net, self.history = net, int(history)
+        self.unstall = check_int(unstall, "unstall", minimum=0, error=RobotError)
+        self.waits = 0
+        """Consecutive turns the robot has waited."""
         self.tracker: HistoryTracker | None = None
         self.h: Any = None
         self.last_obs: np.ndarray | None = None
@@ -77,6 +90,7 @@ class MemoryRobot(Robot):
             check_world(self.file, world, Agent.ROBOT)
         self.tracker = HistoryTracker(world, self.history, 1, self.cap)
         self.h = self.net.initial(1)
+        self.waits = 0
 
     def act(self, turn: Turn) -> int:
         """The policy's action for the facts and the history so far (masked)."""
@@ -90,12 +104,18 @@ class MemoryRobot(Robot):
         self.last_obs = np.concatenate([facts, self.tracker.features(Agent.ROBOT)[0]])
         logits, self.h = self.net.step(self.last_obs[None, :].astype(np.float64), self.h)
         mask = np.asarray(turn.mask).astype(bool)
+        wait = turn.world.table.wait[Agent.ROBOT]
+        stalled = self.unstall and self.waits >= self.unstall
+        if stalled and self.tracker.since[0, 1] >= min(self.unstall, self.cap) and mask.sum() > 1:
+            mask = mask.copy()
+            mask[wait] = False  # both idle: move on with the policy's best other feasible action
         scores = np.where(mask, logits[0], -np.inf)
         if self.deterministic:
             action = int(np.argmax(scores))
         else:
             p = np.exp(scores - scores.max())
             action = int(self.rng.choice(len(p), p=p / p.sum()))
+        self.waits = self.waits + 1 if action == wait else 0
         wall = time.perf_counter() - t0
         self._record("memory", action, planning_time=wall, decision_time=self.cost.habit_cost(wall))
         return action

@@ -103,8 +103,6 @@ class HistoryTracker:
 
     def record(self, robot: np.ndarray, robot_ok: np.ndarray, human: np.ndarray, human_ok: np.ndarray) -> None:
         """One completed cycle per table: each agent's action index and whether it succeeded."""
-        if self.k == 0:
-            return
         for a, act, ok in ((0, robot, robot_ok), (1, human, human_ok)):
             act = np.asarray(act, dtype=np.int64).reshape(self.n)
             ok = np.asarray(ok, dtype=bool).reshape(self.n)

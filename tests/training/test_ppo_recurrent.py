@@ -246,3 +246,54 @@ def test_docs_page_python_blocks_run(tmp_path: Path, monkeypatch: pytest.MonkeyP
     assert len(blocks) == 2
     for i, block in enumerate(blocks):
         exec(compile(block, f"{page.name}:block{i}", "exec"), {})
+
+
+class WaitFirst:
+    """A policy stub that always ranks ``wait`` first, then actions by index (numpy player interface)."""
+
+    def __init__(self, n_actions: int, wait: int) -> None:
+        self.logits = -np.arange(n_actions, dtype=float)
+        self.logits[wait] = 10.0
+
+    def initial(self, n: int = 1) -> np.ndarray:
+        return np.zeros((n, 0))
+
+    def step(self, obs: np.ndarray, h: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        return self.logits[None, :].copy(), h
+
+
+class Idle:
+    """A human who always waits."""
+
+    name = "idle"
+
+    def reset(self, world: Any, agent: Any, rng: Any) -> None:
+        self.wait = world.table.wait[Agent.HUMAN]
+
+    def act(self, turn: Any) -> int:
+        return int(self.wait)
+
+
+@pytest.mark.parametrize("unstall", [0, 8])
+def test_memory_robot_never_idles_forever_beside_an_idle_partner(unstall: int) -> None:
+    """Waits 8 turns, then the policy's best feasible non-wait action (unstall=0: the policy as trained)."""
+    world = World("paper2015")
+    wait = world.table.wait[Agent.ROBOT]
+    robot = make_robot("memory", net=WaitFirst(world.n_actions(Agent.ROBOT), wait), unstall=unstall)
+    env = raw_env(scenario="paper2015", continuing=True, max_cycles=None)
+    env.reset(seed=0)
+    robot.reset(env.world, Agent.ROBOT, np.random.default_rng(0))
+    human = Idle()
+    human.reset(env.world, Agent.HUMAN, None)
+    actions = []
+    for _ in range(12):
+        turn = env.turn("robot")
+        action = robot.act(turn)
+        assert turn.mask[action]
+        actions.append(action)
+        env.step(action)
+        env.step(human.act(env.turn("human")))
+    if unstall == 0:
+        assert actions == [wait] * 12
+    else:
+        assert actions[:8] == [wait] * 8 and actions[8] != wait
