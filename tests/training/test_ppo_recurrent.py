@@ -232,6 +232,10 @@ def test_train_command_runs_a_recipe_and_refuses_a_bad_one_in_one_line(tmp_path:
     assert code == 0, err
     assert "env steps/s" in out and "learner steps/s" in out
     assert (tmp_path / "model.json").is_file()
+    model = str(tmp_path / "model.json")
+    play = ["--scenario", "forced_coordination", "--human", "preference", "--duration", "60"]
+    code, out, err = run_main(["run", "--robot", "memory", "--model", model, *play])
+    assert code == 0 and "robot actions" in out, err
     code, out, err = run_main([*common, "--recipe", "pbt", "--out", str(tmp_path / "bad")])
     assert code == 2 and len(error_lines(err)) == 1 and "--recipe" in err
 
