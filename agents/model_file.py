@@ -3,7 +3,7 @@
 A model file is two files side by side in one folder:
 
 - a JSON *header* (``model.json``, ``policy.json``, ``ckpt_800_steps.json``): the format
-  and version, the ``kind`` (``sb3``, ``linear_softmax``, ``table``), the seat, the
+  and version, the ``kind`` (``sb3``, ``linear_softmax``, ``table``, ``memory``), the seat, the
   scenario and the world's fact and action names, the package version, the name of the
   weights file and its sha256; for ``sb3`` also the algorithm class, the policy class and
   its ``policy_kwargs``, the observation and action spaces, the observation mode, the
@@ -44,7 +44,7 @@ from hg_marl.core.errors import ModelFileError, output_error
 
 FORMAT = "hg_marl.model"
 VERSION = 2
-KINDS = ("sb3", "linear_softmax", "table")
+KINDS = ("sb3", "linear_softmax", "table", "memory")
 OBSERVATIONS = ("facts", "flat", "dict")
 HEADER_NAMES = ("model.json", "policy.json")
 """Headers looked for, in order, when a folder is given."""

@@ -30,20 +30,28 @@ def robot_vector_env(
     device: Any = None,
     cache: Any = True,
     progress: bool = False,
+    history: int = 0,
+    partner: Any = None,
 ) -> Any:
     """The robot's seat batched, the human compiled (a learned SB3 human batched instead, see :func:`compiled_humans`).
 
     Gymnasium reaches it as ``gymnasium.make_vec(ROBOT_VIEW_ID, num_envs=N,
-    vectorization_mode="vector_entry_point", human=...)``.
+    vectorization_mode="vector_entry_point", human=...)``. ``history=k`` wraps it in
+    ``hg_marl.envs.history.HistoryVectorEnv``; ``partner`` (an ``ArrayPartner``) replaces
+    the compiled ``human``.
     """
     from hg_marl.envs.batched import BatchedTable, check_batch
+    from hg_marl.envs.history import HistoryVectorEnv, check_history
 
     world = World(scenario, durations)
     check_batch(world, num_envs)
-    partner = compiled_humans(world, human, cache, progress)
-    return BatchedTable(
+    k = check_history(history)
+    if partner is None:
+        partner = compiled_humans(world, human, cache, progress)
+    env = BatchedTable(
         partner, num_envs, world, Agent.ROBOT, continuing, max_cycles, time_budget, 0.0, autoreset_mode, device=device
     )
+    return HistoryVectorEnv(env, k) if k else env
 
 
 def human_vector_env(

@@ -16,6 +16,10 @@ Observation (``observation=`` option; the choice is written down here because SB
 - ``"dict"``: the AEC environment's ``Dict(observation=..., action_mask=...)`` (SB3:
   ``MultiInputPolicy``).
 
+``history=k`` (robot seat, default 0) appends the last ``k`` cycles' interaction history
+to the facts in every mode (``hg_marl/envs/history.py``), on the view and on
+:func:`robot_vector_env` alike.
+
 Rewards: the robot's view returns the team reward (1 per task completed, the paper's).
 The human's view returns the same minus ``effort_weight`` times the seconds of physical
 work the human did in the step, so humans that prefer to work less can be learned.
@@ -100,6 +104,7 @@ class _View(gymnasium.Env):
         observation: str,
         render_mode: str | None,
         durations: Durations | None,
+        history: int = 0,
     ) -> None:
         if observation not in OBSERVATIONS:
             raise ValueError(f"observation must be one of {OBSERVATIONS}, got {observation!r}")
@@ -110,6 +115,7 @@ class _View(gymnasium.Env):
             time_budget=time_budget,
             render_mode=render_mode,
             durations=durations,
+            history=history,
         )
         self.world: World = self.env.world
         self.render_mode = render_mode
@@ -119,7 +125,7 @@ class _View(gymnasium.Env):
             raise ValueError("need at least one partner")
         self.partner: Actor = resolve_partner(self.seat, self._partners[0])
         self._partners[0] = self.partner
-        n_f, n_a = self.world.n_facts, self.world.n_actions(self.seat)
+        n_f, n_a = len(self.env.observe(self.seat.label)["observation"]), self.world.n_actions(self.seat)
         self.action_space = spaces.Discrete(n_a)
         if observation == "facts":
             self.observation_space = spaces.Box(0, 1, (n_f,), np.int8)
@@ -196,6 +202,7 @@ class RobotView(_View):
         observation: ``"facts"``, ``"flat"`` or ``"dict"``.
         render_mode: None, ``"ansi"`` or ``"rgb_array"``.
         durations: override the scenario's action durations.
+        history: cycles of interaction history appended to the facts (0: none).
     """
 
     seat = Agent.ROBOT
@@ -210,6 +217,7 @@ class RobotView(_View):
         observation: str = "facts",
         render_mode: str | None = None,
         durations: Durations | None = None,
+        history: int = 0,
     ) -> None:
         super().__init__(
             scenario,
@@ -220,6 +228,7 @@ class RobotView(_View):
             observation,
             render_mode,
             durations,
+            history,
         )
 
     @property

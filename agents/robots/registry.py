@@ -12,13 +12,16 @@ from hg_marl.agents.robots.base import Robot
 from hg_marl.agents.robots.belief import BeliefRobot
 from hg_marl.agents.robots.habit import HabitRobot
 from hg_marl.agents.robots.hybrid import HybridRobot
+from hg_marl.agents.robots.memory import MemoryRobot
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.agents.robots.sb3 import SB3Robot
 from hg_marl.agents.robots.uniform import RandomRobot
 from hg_marl.core.errors import RobotError
 from hg_marl.core.registry import Registry
 
-ROBOTS = Registry("robot", RobotError, (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot, BeliefRobot))
+ROBOTS = Registry(
+    "robot", RobotError, (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot, BeliefRobot, MemoryRobot)
+)
 """Every robot by name (``ROBOTS[name].factory()`` is its class)."""
 
 

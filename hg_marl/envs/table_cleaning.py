@@ -21,6 +21,11 @@ Termination                   episodic (default): at the end of the cycle in whi
                               experiments): the table is re-drawn and play goes on.
 Truncation                    after ``max_cycles`` cycles or when the clock reaches
                               ``time_budget`` simulated seconds.
+History (opt-in)              ``history=k`` (default 0: off) appends the interaction history
+                              of the last ``k`` cycles to ``observation`` (``Box(0, 1, (F + H,),
+                              int8)``, ``H = hg_marl.envs.history.history_size(k)``): both
+                              agents' action kinds and failures and the partner's cycles since
+                              progress, relative to the observer (``hg_marl/envs/history.py``).
 Render modes                  ``ansi`` (text), ``rgb_array`` (labelled numpy image); no window,
                               ever (``human`` is refused with a pointer to ``--video``).
 ============================  =================================================================
@@ -95,6 +100,7 @@ class raw_env(AECEnv):
         render_mode: str | None = None,
         durations: Durations | None = None,
         events_tuple: bool = False,
+        history: int = 0,
     ) -> None:
         """Build the environment.
 
@@ -108,6 +114,7 @@ class raw_env(AECEnv):
             durations: override the scenario's action durations.
             events_tuple: ``infos[agent]["events"]`` as a tuple of sentences instead of
                 one ``"; "``-joined string (see the module docstring).
+            history: cycles of interaction history appended to observations (0: none).
         """
         super().__init__()
         if render_mode == "human":
@@ -133,7 +140,11 @@ class raw_env(AECEnv):
         self.possible_agents = list(AGENT_NAMES)
         self._n_actions = [self.world.n_actions(a) for a in Agent]
         self._action_spaces = {name: spaces.Discrete(n) for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)}
-        f = self.world.n_facts
+        from hg_marl.envs.history import HistoryTracker
+
+        self._history = HistoryTracker(self.world, history)
+        self._ok = [True, True]
+        f = self.world.n_facts + self._history.size
         self._observation_spaces = {
             name: spaces.Dict(
                 {
@@ -194,6 +205,7 @@ class raw_env(AECEnv):
         self._done_this_cycle = False
         self._last_actions = [-1, -1]
         self._last_events: list[tuple[Event, ...]] = [(), ()]
+        self._history.reset()
         self.infos = {a: self._info(Agent(i), "", False, ()) for i, a in enumerate(self.agents)}
         self.agent_selection = self.agents[0]
 
@@ -230,6 +242,7 @@ class raw_env(AECEnv):
         self._halves[agent] = out
         self._last_actions[agent] = action
         self._effort[agent] += out.effort
+        self._ok[agent] = out.ok
         events = out.events
         reward = out.reward
         if reward:
@@ -262,6 +275,9 @@ class raw_env(AECEnv):
         self.cycles += 1
         self._halves = [_NO_HALF, _NO_HALF]
         self._charged = 0.0
+        if self._history.k:
+            last, ok = self._last_actions, self._ok
+            self._history.record(np.array(last[:1]), np.array(ok[:1]), np.array(last[1:]), np.array(ok[1:]))
         truncate = truncated(self.cycles, clock, self.max_cycles, self.time_budget)
         done = self._done_this_cycle
         if done or truncate:
@@ -298,7 +314,10 @@ class raw_env(AECEnv):
         if who is None:
             raise ConfigError(f"observe: unknown agent {agent!r}; the agents are {', '.join(AGENT_NAMES)}")
         state = self.world_state
-        return {"observation": self.world.facts(state), "action_mask": self.world.mask(state, who)}
+        facts = self.world.facts(state)
+        if self._history.k:
+            facts = np.concatenate([facts, self._history.features(who)[0]])
+        return {"observation": facts, "action_mask": self.world.mask(state, who)}
 
     def turn(self, agent: str | None = None) -> Turn:
         """A :class:`Turn` for ``agent`` (default: the selected one), for scripted actors.

@@ -77,8 +77,8 @@ def register(app: typer.Typer) -> None:
                 raise ConfigError("--criterion and --robot/--robot-param both set criterion")
             robot_kwargs["criterion"] = criterion
         if model is not None:
-            if robot_spec.name != "sb3":
-                raise ConfigError(f"--model is for --robot sb3, not {robot_spec.name}")
+            if robot_spec.name not in ("sb3", "memory"):
+                raise ConfigError(f"--model is for --robot sb3 or memory, not {robot_spec.name}")
             robot_kwargs["path"] = str(model)
         the_robot = checked(lambda: make_robot(robot_spec, **robot_kwargs))
         the_human = checked(lambda: make_human(spec_with(human, human_param, "--human", "--human-param")))

@@ -54,6 +54,7 @@ BcKind = Annotated[str, typer.Option(help="bc: table or linear_softmax.")]
 Population = Annotated[
     Path | None, typer.Option(help="ppo_batched: a population file; trains against its train members.")
 ]
+Recipe = Annotated[str, typer.Option(help="ppo_recurrent: population recipe: members, fcp, e3t or coverage.")]
 Tensorboard = Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")]
 Progress = Annotated[bool, typer.Option(help="Show a progress bar.")]
 Verbose = Annotated[int, typer.Option(help="SB3 verbosity.")]
@@ -82,7 +83,10 @@ def register(app: typer.Typer) -> None:
         ctx: typer.Context,
         algo: Annotated[
             str,
-            typer.Option(help="ppo, a2c, dqn, maskable_ppo, ppo_batched (batched tables), or bc (behaviour cloning)."),
+            typer.Option(
+                help="ppo, a2c, dqn, maskable_ppo, ppo_batched (batched tables), ppo_recurrent (batched, with "
+                "memory), or bc (behaviour cloning)."
+            ),
         ] = "maskable_ppo",
         seat: Seat = "robot",
         human: Human = "cooperative",
@@ -103,6 +107,7 @@ def register(app: typer.Typer) -> None:
         traces: Traces = None,
         bc_kind: BcKind = "table",
         population: Population = None,
+        recipe: Recipe = "members",
         tensorboard: Tensorboard = D_TENSORBOARD,
         progress: Progress = True,
         verbose: Verbose = D_VERBOSE,
@@ -118,6 +123,8 @@ def register(app: typer.Typer) -> None:
             train_bc(traces, bc_kind, out, "--algo bc")
         elif algo == "ppo_batched":
             train_ppo_batched(human, population, scenario, steps, seed, out, checkpoint_freq, tensorboard, progress, hp)
+        elif algo == "ppo_recurrent":
+            train_ppo_recurrent(human, population, scenario, recipe, steps, seed, out, checkpoint_freq, progress, hp)
         else:
             train_sb3(
                 algo, seat, human, robot, effort_weight, scenario, steps, seed, out, hp, hyperparams, observation,
@@ -148,7 +155,7 @@ def register(app: typer.Typer) -> None:
         verbose: Verbose = D_VERBOSE,
     ) -> None:
         """A Stable-Baselines3 algorithm on a seat of the table (single-table views)."""
-        if algo in ("bc", "ppo_batched"):
+        if algo in ("bc", "ppo_batched", "ppo_recurrent"):
             raise typer.BadParameter(f"--algo {algo}: use `hg-marl train {algo.replace('_', '-')}`")
         train_sb3(
             algo, seat, human, robot, effort_weight, scenario, steps, seed, out, hp, hyperparams, observation,
@@ -170,6 +177,22 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """The batched PPO learner in the robot seat (many tables per step, partners compiled)."""
         train_ppo_batched(human, population, scenario, steps, seed, out, checkpoint_freq, tensorboard, progress, hp)
+
+    @train.command("ppo-recurrent")
+    def ppo_recurrent_command(
+        human: Human = "cooperative",
+        population: Population = None,
+        scenario: ScenarioOpt = D_SCENARIO,
+        recipe: Recipe = "members",
+        steps: Steps = None,
+        seed: Seed = D_SEED,
+        out: Out = DEFAULT_OUT,
+        checkpoint_freq: CheckpointFreq = None,
+        progress: Progress = True,
+        hp: Hp = None,
+    ) -> None:
+        """Masked PPO with memory (a GRU, or an MLP on the history) in the robot seat, batched tables."""
+        train_ppo_recurrent(human, population, scenario, recipe, steps, seed, out, checkpoint_freq, progress, hp)
 
     @train.command("bc")
     def bc_command(
@@ -295,3 +318,27 @@ def train_ppo_batched(
     )
     typer.echo(f"  model   {result.path}")
     typer.echo(f"  use it  hg-marl run --robot sb3 --model {result.path} --human {humans[0]}")
+
+
+def train_ppo_recurrent(
+    human: str,
+    population: Path | None,
+    scenario: str,
+    recipe: str,
+    steps: int | None,
+    seed: int,
+    out: Path,
+    checkpoint_freq: int | None,
+    progress: bool,
+    hp: list[str] | None,
+) -> None:
+    """The recurrent batched learner in the robot seat, against a population recipe."""
+    check_out_dir(out, "--out")
+    from hg_marl.training.baselines.envs import split_population
+    from hg_marl.training.baselines.ppo_batched import population_members
+    from hg_marl.training.baselines.ppo_recurrent import train_from_options
+
+    members = population_members(population) if population is not None else tuple(split_population(human))
+    args = (members, scenario, recipe, steps, seed, out, checkpoint_freq, progress, tuple(hp or ()))
+    for line in checked(lambda: train_from_options(*args)):
+        typer.echo(line)
