@@ -66,7 +66,7 @@ from hg_marl.envs.render import HUMAN_MESSAGE, caption_of, render_ansi, render_r
 from hg_marl.policy import Turn
 
 _NO_HALF = Half(State((), -1), True, 0.0, 0.0, (), 0.0, False)
-"""Stands for a half not yet played before the first cycle (each cycle overwrites both before closing)."""
+"""Stands for the robot's half before the first cycle (each cycle overwrites it before closing)."""
 _AGENT_OF = {name: Agent(i) for i, name in enumerate(AGENT_NAMES)}
 EVENT_SEPARATOR = "; "
 """Joins the sentences of ``infos[agent]["events"]`` (split on it to get them back)."""
@@ -191,7 +191,7 @@ class raw_env(AECEnv):
         self._clock = Clock(self.max_cycles, self.time_budget)
         self._redraw = self._rng if self.continuing else None  # the generator of a continuing run's redraws
         self._idle = self._clock.idle
-        self._halves: list[Half] = [_NO_HALF, _NO_HALF]
+        self._robot_half = _NO_HALF  # the robot's half of the cycle under way
         self._charged = 0.0
         self._done_this_cycle = False
         self._last_actions = [-1, -1]
@@ -229,7 +229,6 @@ class raw_env(AECEnv):
             action = self._check_action(agent, action)
         out = self._half(self.world_state, agent, action, self._redraw)
         self.world_state = out.state
-        self._halves[agent] = out
         self._last_actions[agent] = action
         self._effort[agent] += out.effort
         events = out.events
@@ -249,15 +248,15 @@ class raw_env(AECEnv):
             for a in self.agents:
                 cumulative[a] += reward
         if agent is Agent.HUMAN:
-            self._end_cycle()
+            self._end_cycle(out)
             self.agent_selection = "robot"
         else:
+            self._robot_half = out
             self.agent_selection = "human"
 
-    def _end_cycle(self) -> None:
-        robot, human = self._halves
+    def _end_cycle(self, human: Half) -> None:
         time = self._clock
-        truncate = time.tick(robot, human, self._charged)
+        truncate = time.tick(self._robot_half, human, self._charged)
         self.clock = clock = time.now
         self.cycles = cycles = time.cycles
         idle = time.idle
