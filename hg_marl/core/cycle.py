@@ -10,10 +10,10 @@ rules below are written once (``docs/design.md`` lists the homes of the others):
   layout distribution with the caller's generator and a ``reset`` event is added.
 - **What the human sees** (:func:`seen`): the robot's action index when it succeeded,
   else -1 (a failed action left nothing to see).
-- **The clock** (:func:`close`): the agents act in parallel, so a cycle lasts the
+- **The clock** (:func:`close`; :class:`Clock` runs it over a run): the agents act in parallel, so a cycle lasts the
   longer of the two actions plus any decision time charged to it; an agent's *idle*
   time is the whole cycle when it waited, else the cycle less its own action.
-- **The end of a run** (:func:`truncated`): after ``max_cycles`` cycles or once the clock
+- **The end of a run** (:func:`truncated`, :meth:`Clock.tick`): after ``max_cycles`` cycles or once the clock
   reaches ``time_budget``.
 - **The human's seat** (:func:`seat_reward`, :func:`ends_episode`): the task reward less
   ``effort_weight`` times the seconds of work; episodic play ends when the robot solves
