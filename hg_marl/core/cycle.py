@@ -10,10 +10,10 @@ rules below are written once (``docs/design.md`` lists the homes of the others):
   layout distribution with the caller's generator and a ``reset`` event is added.
 - **What the human sees** (:func:`seen`): the robot's action index when it succeeded,
   else -1 (a failed action left nothing to see).
-- **The clock** (:func:`close`): the agents act in parallel, so a cycle lasts the
+- **The clock** (:func:`close`; :class:`Clock` runs it over a run): the agents act in parallel, so a cycle lasts the
   longer of the two actions plus any decision time charged to it; an agent's *idle*
   time is the whole cycle when it waited, else the cycle less its own action.
-- **The end of a run** (:func:`truncated`): after ``max_cycles`` cycles or once the clock
+- **The end of a run** (:func:`truncated`, :meth:`Clock.tick`): after ``max_cycles`` cycles or once the clock
   reaches ``time_budget``.
 - **The human's seat** (:func:`seat_reward`, :func:`ends_episode`): the task reward less
   ``effort_weight`` times the seconds of work; episodic play ends when the robot solves
@@ -33,6 +33,8 @@ twins side by side, and checks that no other module restates the clock update.
 
 from __future__ import annotations
 
+import math
+import sys
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -144,12 +146,50 @@ def seen(action: int, ok: bool) -> int:
     return action if ok else -1
 
 
+class Clock:
+    """The clock of one run, closed cycle after cycle: :func:`close` and :func:`truncated` in place.
+
+    The AEC environment closes a cycle at every other turn; one method call that adds to
+    running totals, rather than a result tuple per cycle, keeps that turn as cheap as
+    the environment was before the cycle had its own home. :func:`close` is this clock's
+    first tick, so the rule is written here once.
+
+    Attributes:
+        now: simulated seconds since the start.
+        cycles: cycles closed so far.
+        idle: idle seconds so far per agent (robot, human).
+    """
+
+    __slots__ = ("_budget", "_cap", "cycles", "idle", "now")
+
+    def __init__(self, max_cycles: int | None = None, time_budget: float | None = None) -> None:
+        self.now = 0.0
+        self.cycles = 0
+        self.idle = [0.0, 0.0]
+        self._cap = sys.maxsize if max_cycles is None else max_cycles
+        self._budget = math.inf if time_budget is None else time_budget
+
+    def tick(self, robot: Half, human: Half, charged: float = 0.0) -> bool:
+        """Close a cycle of these halves plus ``charged`` decision time; True when the run is truncated here."""
+        d_robot, d_human = robot.duration, human.duration
+        length = (d_robot if d_robot > d_human else d_human) + charged
+        idle = self.idle
+        idle[0] += length if robot.waited else length - d_robot
+        idle[1] += length if human.waited else length - d_human
+        self.now = now = self.now + length
+        self.cycles = cycles = self.cycles + 1
+        return cycles >= self._cap or now >= self._budget
+
+    def ends(self, cycles: int, now: float) -> bool:
+        """Whether a run with these limits ends after ``cycles`` cycles at ``now`` (as :meth:`tick` says)."""
+        return cycles >= self._cap or now >= self._budget
+
+
 def close(robot: Half, human: Half, charged: float = 0.0) -> CycleTime:
     """The cycle's length (the longer action plus ``charged`` decision time) and idle time per agent."""
-    d_robot, d_human = robot.duration, human.duration
-    length = (d_robot if d_robot > d_human else d_human) + charged
-    idle = (length if robot.waited else length - d_robot, length if human.waited else length - d_human)
-    return _new(CycleTime, (length, idle))
+    clock = Clock()
+    clock.tick(robot, human, charged)
+    return _new(CycleTime, (clock.now, (clock.idle[0], clock.idle[1])))
 
 
 def cycle_length(d_robot: float, d_human: float) -> float:
@@ -159,7 +199,7 @@ def cycle_length(d_robot: float, d_human: float) -> float:
 
 def truncated(cycles: int, clock: float, max_cycles: int | None, time_budget: float | None) -> bool:
     """Whether a run ends here for want of cycles or time (None: no such limit)."""
-    return (max_cycles is not None and cycles >= max_cycles) or (time_budget is not None and clock >= time_budget)
+    return Clock(max_cycles, time_budget).ends(cycles, clock)
 
 
 def cycle(

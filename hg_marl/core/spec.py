@@ -320,3 +320,41 @@ def bind(
         except SpecError as exc:
             raise error(str(exc)) from None
     return out
+
+
+@dataclass(frozen=True)
+class AgentSpec:
+    """A spec parsed once, its values typed as JSON reads them: what a job carries to a worker, as data.
+
+    Parsing and typing happen where the user's text is read (a command line, a study file,
+    a population); from there on the name and the typed values travel as they are, so a
+    worker builds the agent with ``make_robot(spec.name, **spec.params)`` and nothing
+    parses the text again. Values are typed without the registry (``REQUIRED``: any JSON
+    value), as a study file types them, so the same robot written either way keys the
+    same runs; the registry still checks each value against its parameter's default when
+    the agent is built.
+    """
+
+    name: str
+    """Registry name."""
+    params: Mapping[str, Any] = field(default_factory=dict)
+    """Typed parameter values, in the order written."""
+
+    def __str__(self) -> str:
+        return format_spec(self.name, self.params)
+
+    @classmethod
+    def of(cls, spec: Spec, where: str) -> AgentSpec:
+        """Type the values of a parsed spec; ``where`` starts each message (``--robots planner``).
+
+        Raises:
+            SpecError: a value that is not valid JSON where it looks like it, or a NaN/infinite number.
+        """
+        return cls(spec.name, {k: convert(v, REQUIRED, f"{where} {k}", from_text=True) for k, v in spec.raw.items()})
+
+    @classmethod
+    def parse(cls, text: str | AgentSpec, what: str = "spec", where: str | None = None) -> AgentSpec:
+        """:func:`parse_spec` (messages name ``what``) then :meth:`of` (messages start ``where``, default ``what``)."""
+        if isinstance(text, AgentSpec):
+            return text
+        return cls.of(parse_spec(text, what), what if where is None else where)

@@ -65,13 +65,13 @@ from pettingzoo import AECEnv
 from pettingzoo.utils import wrappers
 
 from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Scenario, State, World
-from hg_marl.core.cycle import Half, Halves, close, truncated
+from hg_marl.core.cycle import Clock, Half, Halves
 from hg_marl.core.errors import ConfigError, check_bool, check_finite, check_int
 from hg_marl.envs.render import HUMAN_MESSAGE, caption_of, render_ansi, render_rgb
 from hg_marl.policy import Turn
 
 _NO_HALF = Half(State((), -1), True, 0.0, 0.0, (), 0.0, False)
-"""Stands for a half not yet played (the clock of a cycle is closed only after both)."""
+"""Stands for the robot's half before the first cycle (each cycle overwrites it before closing)."""
 _AGENT_OF = {name: Agent(i) for i, name in enumerate(AGENT_NAMES)}
 EVENT_SEPARATOR = "; "
 """Joins the sentences of ``infos[agent]["events"]`` (split on it to get them back)."""
@@ -199,8 +199,10 @@ class raw_env(AECEnv):
         self.cycles = 0
         self.tasks_solved = 0
         self._effort = [0.0, 0.0]
-        self._idle = [0.0, 0.0]
-        self._halves: list[Half] = [_NO_HALF, _NO_HALF]
+        self._clock = Clock(self.max_cycles, self.time_budget)
+        self._redraw = self._rng if self.continuing else None  # the generator of a continuing run's redraws
+        self._idle = self._clock.idle
+        self._robot_half = _NO_HALF  # the robot's half of the cycle under way
         self._charged = 0.0
         self._done_this_cycle = False
         self._last_actions = [-1, -1]
@@ -237,9 +239,8 @@ class raw_env(AECEnv):
         agent = _AGENT_OF[name]
         if type(action) is not int or not 0 <= action < self._n_actions[agent]:
             action = self._check_action(agent, action)
-        out = self._half(self.world_state, agent, action, self._rng if self.continuing else None)
+        out = self._half(self.world_state, agent, action, self._redraw)
         self.world_state = out.state
-        self._halves[agent] = out
         self._last_actions[agent] = action
         self._effort[agent] += out.effort
         self._ok[agent] = out.ok
@@ -260,31 +261,28 @@ class raw_env(AECEnv):
             for a in self.agents:
                 cumulative[a] += reward
         if agent is Agent.HUMAN:
-            self._end_cycle()
+            self._end_cycle(out)
             self.agent_selection = "robot"
         else:
+            self._robot_half = out
             self.agent_selection = "human"
 
-    def _end_cycle(self) -> None:
-        robot, human = self._halves
-        time = close(robot, human, self._charged)
-        idle = self._idle
-        idle[0] += time.idle[0]
-        idle[1] += time.idle[1]
-        self.clock = clock = self.clock + time.length
-        self.cycles += 1
-        self._halves = [_NO_HALF, _NO_HALF]
+    def _end_cycle(self, human: Half) -> None:
+        time = self._clock
+        truncate = time.tick(self._robot_half, human, self._charged)
+        self.clock = clock = time.now
+        self.cycles = cycles = time.cycles
+        idle = time.idle
         self._charged = 0.0
         if self._history.k:
             last, ok = self._last_actions, self._ok
             self._history.record(np.array(last[:1]), np.array(ok[:1]), np.array(last[1:]), np.array(ok[1:]))
-        truncate = truncated(self.cycles, clock, self.max_cycles, self.time_budget)
         done = self._done_this_cycle
         if done or truncate:
             for name in self.agents:
                 self.terminations[name] = done
                 self.truncations[name] = truncate and not done
-        cycles, tasks, effort, infos = self.cycles, self.tasks_solved, self._effort, self.infos
+        tasks, effort, infos = self.tasks_solved, self._effort, self.infos
         for i, name in enumerate(self.agents):
             info = infos[name]
             info["clock"], info["cycle"], info["tasks_solved"] = clock, cycles, tasks

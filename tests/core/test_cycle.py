@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from hg_marl.core import Agent, State, World
 from hg_marl.core.cycle import (
     RESET_EVENT,
+    Clock,
     Half,
     Halves,
     close,
@@ -50,6 +51,18 @@ def test_a_cycle_lasts_the_longer_action_and_a_waiter_idles_all_of_it() -> None:
     assert close(_played(1.0, True), _played(2.0, False)) == (2.0, (2.0, 0.0))
     # robot throws 3 s, human picks 2 s, 0.5 s of planning charged: 3.5 s; idle 0.5 and 1.5
     assert close(_played(3.0, False), _played(2.0, False), charged=0.5) == (3.5, (0.5, 1.5))
+
+
+def test_a_run_clock_adds_up_its_cycles_and_stops_at_its_limits() -> None:
+    clock = Clock(max_cycles=3, time_budget=None)
+    # the two cycles above, in turn: 2 s then 3.5 s; idle robot 2 + 0.5, human 0 + 1.5
+    assert not clock.tick(_played(1.0, True), _played(2.0, False))
+    assert not clock.tick(_played(3.0, False), _played(2.0, False), charged=0.5)
+    assert (clock.now, clock.cycles, clock.idle) == (5.5, 2, [2.5, 1.5])
+    assert clock.tick(_played(1.0, False), _played(1.0, False))  # the third cycle is the last
+    budget = Clock(time_budget=4.0)
+    assert not budget.tick(_played(3.0, False), _played(1.0, False))  # 3 s < 4 s
+    assert budget.tick(_played(1.0, False), _played(1.0, True))  # 4 s: the budget is reached
 
 
 def test_the_human_sees_only_a_successful_robot_action() -> None:
