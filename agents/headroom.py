@@ -101,25 +101,21 @@ class JointModel:
     ) -> None:
         self.world, self.humans = world, list(humans)
         self.failed_actions, self.max_states = failed_actions, max_states
-        self.budget = budget or Budget()
+        self.budget = budget or Budget(None, None, None)
         self.index: dict[State, int] = {}
         self.states: list[State] = []
         self.pair_start: list[int] = []
         self.pair_action: list[int] = []
         self.pair_terminal: list[bool] = []
         self.dynamics = [_Dynamics() for _ in self.humans]
-        if layout_count(world.scenario) > max_states:
-            raise OracleTooLarge(
-                f"the headroom model of {world.scenario.name!r}: more initial layouts than max_states={max_states}"
-            )
-        layouts = layout_distribution(world)
+        self.budget.refuse_count("layouts", layout_count(world.scenario), "initial layouts")
+        layouts = layout_distribution(world, self.budget)
         table = world.table
         wait = table.wait[Agent.ROBOT]
         for dyn, human in zip(self.dynamics, self.humans, strict=True):
             seen = wait if getattr(human, "uses_robot_action", False) else -1
-            for n, (state, q) in enumerate(layouts):
-                if n % 64 == 0:  # a planner-driven human answers each layout with a search
-                    self.budget.check(world, len(self.states), memory=n % 2048 == 0)
+            for n, (state, q) in enumerate(layouts):  # a planner-driven human answers each with a search
+                self.budget.check("first answers", n, len(layouts), "layouts", memory=n % 2048 == 0)
                 for h, p in human.distribution(world, state, seen):
                     if p > 0.0:
                         nxt, _, d = table.successor(state, Agent.HUMAN, h)
@@ -162,8 +158,8 @@ class JointModel:
         k = 0
         try:
             while k < len(self.states):
+                self.budget.check("explore", k, unit="states explored", memory=k % 2048 == 0)
                 if k % 64 == 0:
-                    self.budget.check(self.world, len(self.states), memory=k % 2048 == 0)
                     bar.update(k - bar.n)
                 state = self.states[k]
                 self.pair_start.append(len(self.pair_action))
@@ -223,7 +219,7 @@ class JointModel:
                 delta = float(np.max(np.abs(new - values)))
                 values = new
                 if it % 64 == 0:
-                    self.budget.check(self.world, n)
+                    self.budget.check("solve", it, unit="sweeps", memory=it % 4096 == 0)
                 if delta < tolerance:
                     break
         q = q_of(values)
@@ -350,14 +346,16 @@ def headroom(
         specs.setdefault(label, spec)
     labels = list(specs)
     humans = [_human_policy(specs[label], world) for label in labels]
-    budget = Budget(max_seconds, max_memory, start)
-    model = JointModel(world, humans, failed_actions, max_states, budget, progress)
-    col = [labels.index(label) for label, _ in true]
-    policies = {}
-    for label in tqdm(list(rows), desc="headroom: policies", disable=not progress, file=sys.stderr):
-        policies[label] = model.optimal_policy(labels.index(label))
-    rates = np.array([[model.rate(policies[a], j) for j in col] for a in rows])
-    optimum = np.array([model.rate(policies[label], labels.index(label)) for label, _ in true])
+    budget = Budget(max_seconds, max_memory, max_states, subject=f"the headroom model of {world.scenario.name!r}",
+                    hint="use a smaller scenario or fewer humans", start=start)
+    with budget.deadline():
+        model = JointModel(world, humans, failed_actions, max_states, budget, progress)
+        col = [labels.index(label) for label, _ in true]
+        policies = {}
+        for label in tqdm(list(rows), desc="headroom: policies", disable=not progress, file=sys.stderr):
+            policies[label] = model.optimal_policy(labels.index(label))
+        rates = np.array([[model.rate(policies[a], j) for j in col] for a in rows])
+        optimum = np.array([model.rate(policies[label], labels.index(label)) for label, _ in true])
     return HeadroomResult(
         scenario=world.scenario.name,
         assumed=tuple(rows),
