@@ -1,12 +1,13 @@
-"""The partner's answers as arrays: a distribution per (mid-cycle state, robot action seen).
+"""The partner's answers as arrays: a distribution per (mid-cycle state, robot action seen), stepped.
 
 The model builder asks for the answers of a whole batch of distinct mid-cycle keys at
 once. :class:`AnswerTable` keeps them as a compiled partner does (``agents/compiled.py``):
 sorted packed keys, segment starts, actions and probabilities, looked up with one
-``searchsorted``. Keys it has not seen are answered by the live stationary human, one
-Python call per distinct key (memoised in the table), with a budget check before each
-call: a planner-driven human may spend a search on one answer, so the budget is read
-between answers, never after a batch of them.
+``searchsorted``, and per entry the answer's outcome (the next robot-turn state's key,
+as is and in canonical labelling, and the answer's duration), stepped once with the
+batched rules when the entry is made. Keys the table lacks are answered by the live
+stationary human, one Python call per distinct key, with a budget reading every
+:data:`CHECK_EVERY` answers: a planner-driven human may spend a search on one answer.
 """
 
 from __future__ import annotations
@@ -17,10 +18,15 @@ import numpy as np
 
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.packing import StatePacker
-from hg_marl.core import World
+from hg_marl.core import Agent, State, World
+from hg_marl.envs.batched import BatchedRules
 
-CHECK_EVERY = 1
-"""Live answers computed between two clock readings: one answer may cost a planner search, a reading 0.1 us."""
+CHECK_EVERY = 4
+"""Live answers computed between two budget readings (one answer may cost a planner search; the
+time budget's timer, ``Budget.deadline``, interrupts a long one anyway)."""
+
+FIELDS = ("actions", "probs", "next", "canonical", "d_human")
+"""Per-entry arrays (entries of key ``i`` are ``starts[i]:starts[i + 1]``)."""
 
 
 class AnswerTable:
@@ -30,39 +36,29 @@ class AnswerTable:
         world: the world.
         human: a reset stationary human with ``distribution(world, state, robot_action)``.
         packer: the builder's packer (keys include the robot action seen).
-        budget: checked between live answers (phase ``phase``).
+        budget: read between live answers (phase :attr:`phase`).
     """
 
     def __init__(self, world: World, human: Any, packer: StatePacker, budget: Budget | None = None) -> None:
         self.world, self.human, self.packer = world, human, packer
         self.budget = budget
+        self.rules = BatchedRules(world)
         self.uses_robot_action = bool(getattr(human, "uses_robot_action", False))
         self.keys = np.zeros(0, dtype=np.int64)
         self.starts = np.zeros(1, dtype=np.int64)
-        self.actions = np.zeros(0, dtype=np.int64)
-        self.probs = np.zeros(0, dtype=np.float64)
+        self.entries: dict[str, np.ndarray] = {
+            "actions": np.zeros(0, dtype=np.int64),
+            "probs": np.zeros(0, dtype=np.float64),
+            "next": np.zeros(0, dtype=np.int64),
+            "canonical": np.zeros(0, dtype=np.int64),
+            "d_human": np.zeros(0, dtype=np.float64),
+        }
         self.live_calls = 0
         """Distributions asked of the live human (the rest came from the table)."""
         self.phase = "answers"
 
-    @classmethod
-    def from_arrays(
-        cls,
-        world: World,
-        human: Any,
-        packer: StatePacker,
-        keys: np.ndarray,
-        starts: np.ndarray,
-        actions: np.ndarray,
-        probs: np.ndarray,
-    ) -> AnswerTable:
-        """A table filled in advance (a compiled partner's arrays; keys sorted)."""
-        table = cls(world, human, packer)
-        table.keys, table.starts, table.actions, table.probs = keys, starts, actions, probs
-        return table
-
     def lookup(self, keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(segment start, segment length) per key; every key must be known (see :meth:`ensure`)."""
+        """(first entry, entry count) per key; every key must be known (see :meth:`ensure`)."""
         idx = np.searchsorted(self.keys, keys)
         return self.starts[idx], self.starts[idx + 1] - self.starts[idx]
 
@@ -76,32 +72,45 @@ class AnswerTable:
         if not len(missing):
             return
         states, seen = self.packer.unpack(missing)
+        wheres, ats = states.where.tolist(), states.robot_at.tolist()
+        bys, objs, seens = states.offer_by.tolist(), states.offer_obj.tolist(), seen.tolist()
         acts: list[int] = []
         probs: list[float] = []
-        sizes = np.zeros(len(missing), dtype=np.int64)
-        world, distribution = self.world, self.human.distribution
+        sizes = [0] * len(missing)
+        world, distribution, budget = self.world, self.human.distribution, self.budget
         for i in range(len(missing)):
-            if self.budget is not None and i % CHECK_EVERY == 0:
-                self.budget.check(self.phase, i, len(missing), "partner answers of this step", memory=i % 1024 == 0)
-            dist = [(h, p) for h, p in distribution(world, states.state(i), int(seen[i])) if p > 0.0]
-            sizes[i] = len(dist)
-            acts += [h for h, _ in dist]
-            probs += [p for _, p in dist]
+            if budget is not None and i % CHECK_EVERY == 0:
+                budget.check(self.phase, i, len(missing), "partner answers of this step", memory=i % 4096 == 0)
+            dist = distribution(world, State(tuple(wheres[i]), ats[i], bys[i], objs[i]), seens[i])
+            for h, p in dist:
+                if p > 0.0:
+                    acts.append(h)
+                    probs.append(p)
+                    sizes[i] += 1
         self.live_calls += len(missing)
-        self._merge(missing, sizes, np.array(acts, dtype=np.int64), np.array(probs, dtype=np.float64))
+        size = np.array(sizes, dtype=np.int64)
+        actions = np.array(acts, dtype=np.int64)
+        b, _ = self.packer.unpack(np.repeat(missing, size))
+        _, d_human, _ = self.rules.step(b, Agent.HUMAN, actions)
+        nxt = self.packer.pack(b)
+        self.packer.canonical(b)
+        new = {
+            "actions": actions,
+            "probs": np.array(probs, dtype=np.float64),
+            "next": nxt,
+            "canonical": self.packer.pack(b),
+            "d_human": d_human,
+        }
+        self._merge(missing, size, new)
 
-    def _merge(self, keys: np.ndarray, sizes: np.ndarray, actions: np.ndarray, probs: np.ndarray) -> None:
-        old_sizes = np.diff(self.starts)
+    def _merge(self, keys: np.ndarray, sizes: np.ndarray, new: dict[str, np.ndarray]) -> None:
+        n_old = len(self.entries["actions"])
         all_keys = np.concatenate([self.keys, keys])
-        all_sizes = np.concatenate([old_sizes, sizes])
+        all_sizes = np.concatenate([np.diff(self.starts), sizes])
+        first = np.concatenate([self.starts[:-1], n_old + np.concatenate([[0], np.cumsum(sizes)[:-1]])])
         order = np.argsort(all_keys, kind="stable")
-        seg_start = np.concatenate([self.starts[:-1], len(self.actions) + np.concatenate([[0], np.cumsum(sizes)[:-1]])])
-        flat_a = np.concatenate([self.actions, actions])
-        flat_p = np.concatenate([self.probs, probs])
         sizes_sorted = all_sizes[order]
-        new_starts = np.concatenate([[0], np.cumsum(sizes_sorted)]).astype(np.int64)
-        gather = np.repeat(seg_start[order] - new_starts[:-1], sizes_sorted) + np.arange(new_starts[-1])
-        self.keys = all_keys[order]
-        self.starts = new_starts
-        self.actions = flat_a[gather]
-        self.probs = flat_p[gather]
+        starts = np.concatenate([[0], np.cumsum(sizes_sorted)]).astype(np.int64)
+        gather = np.repeat(first[order] - starts[:-1], sizes_sorted) + np.arange(starts[-1])
+        self.keys, self.starts = all_keys[order], starts
+        self.entries = {k: np.concatenate([self.entries[k], new[k]])[gather] for k in FIELDS}

@@ -134,19 +134,17 @@ def _first_unique(keys: np.ndarray) -> np.ndarray:
 
 
 class _Answered:
-    """Answers of distinct mid-cycle keys, stepped: per key a block of (next key, probability, seconds)."""
+    """Answers of distinct mid-cycle keys: per key a block of (next key, probability, seconds)."""
 
-    def __init__(self, rules: BatchedRules, table: AnswerTable, mids: np.ndarray, canonical: bool) -> None:
+    def __init__(self, table: AnswerTable, mids: np.ndarray, canonical: bool) -> None:
         table.ensure(mids)
         start, size = table.lookup(mids)
         self.block = np.concatenate([[0], np.cumsum(size)]).astype(np.int64)
         entry = np.repeat(start - self.block[:-1], size) + np.arange(self.block[-1])
-        b, _ = table.packer.unpack(np.repeat(mids, size))
-        _, self.d_human, _ = rules.step(b, Agent.HUMAN, table.actions[entry])
-        if canonical:
-            table.packer.canonical(b)
-        self.next = table.packer.pack(b)
-        self.prob = table.probs[entry]
+        e = table.entries
+        self.next = e["canonical" if canonical else "next"][entry]
+        self.prob = e["probs"][entry]
+        self.d_human = e["d_human"][entry]
         self.size = size
 
 
@@ -180,7 +178,7 @@ def build_model(
     lay_p = np.array([p for _, p in layouts], dtype=np.float64)
     lay_mid = packer.pack(lay, np.full(len(lay), wait if uses else -1, dtype=np.int64))
     u, inv = np.unique(lay_mid, return_inverse=True)
-    first = _Answered(rules, answers, u, canonical)
+    first = _Answered(answers, u, canonical)
     count = first.size[inv]
     rows = np.repeat(np.arange(len(lay)), count)
     entry = np.repeat(first.block[inv] - np.concatenate([[0], np.cumsum(count)[:-1]]), count) + np.arange(len(rows))
@@ -222,7 +220,7 @@ def build_model(
             seen = np.where(ok[live], pa[live], -1) if uses else np.full(len(live), -1, dtype=np.int64)
             mid = packer.pack(_rows(pb, live), seen)
             u, inv = np.unique(mid, return_inverse=True)
-            ans = _Answered(rules, answers, u, canonical)
+            ans = _Answered(answers, u, canonical)
             tcount = np.zeros(len(pa), dtype=np.int64)
             tcount[live] = ans.size[inv]
             pair_of = np.repeat(np.arange(len(pa)), tcount)
@@ -230,13 +228,13 @@ def build_model(
             block = np.zeros(len(pa), dtype=np.int64)
             block[live] = ans.block[inv]
             entry = np.repeat(block - starts, tcount) + np.arange(len(pair_of))
-            nxt = ans.next[entry]
-            index.add(_first_unique(nxt))
+            uniq, inv = np.unique(ans.next[entry], return_inverse=True)
+            index.add(uniq)  # sorted: new states get ids in key order
             parts["size"].append(np.bincount(ps, minlength=hi - lo))
             parts["action"].append(pa)
             parts["terminal"].append(terminal)
             parts["tcount"].append(tcount)
-            parts["next"].append(index.id_of(nxt))
+            parts["next"].append(index.id_of(uniq)[inv])
             parts["prob"].append(ans.prob[entry])
             parts["tau"].append(np.maximum(d_robot[pair_of], ans.d_human[entry]))
             bar.update(hi - lo)
@@ -248,7 +246,7 @@ def build_model(
     budget.check("explore", lo, unit="states explored", states=index.n)
 
     def cat(name: str, dtype: type) -> np.ndarray:
-        return np.concatenate(parts[name]).astype(dtype) if parts[name] else np.zeros(0, dtype=dtype)
+        return np.concatenate(parts[name]).astype(dtype, copy=False) if parts[name] else np.zeros(0, dtype=dtype)
 
     sizes, tcounts = cat("size", np.int64), cat("tcount", np.int64)
     return Model(

@@ -93,7 +93,7 @@ def test_roboergosum_matches_the_python_enumeration(human: str) -> None:
 def test_every_roboergosum_member_matches_the_python_enumeration(member: int) -> None:
     from hg_marl.agents.humans.population import load_population
 
-    spec = load_population("populations/roboergosum.toml").members[member].spec
+    spec = load_population("populations/roboergosum.toml").members()[member].spec
     world = World("roboergosum")
     ref = reference_oracle(world, spec)
     assert_same(array_model(world, spec)[0], ref)
