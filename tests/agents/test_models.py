@@ -79,7 +79,14 @@ def test_the_array_model_is_the_python_enumeration(scenario: str, human: str) ->
         assert result.values[state] == pytest.approx(ref.values[state], rel=1e-9, abs=1e-9)
 
 
-@pytest.mark.parametrize("human", ["random", "no_handover", "adversarial"])
+@pytest.mark.parametrize(
+    "human",
+    [
+        "random",
+        pytest.param("no_handover", marks=pytest.mark.slow),
+        pytest.param("adversarial", marks=pytest.mark.slow),
+    ],
+)
 def test_roboergosum_matches_the_python_enumeration(human: str) -> None:
     world = World("roboergosum")
     ref = reference_oracle(world, human)
@@ -89,8 +96,8 @@ def test_roboergosum_matches_the_python_enumeration(human: str) -> None:
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("member", range(12))
-def test_every_roboergosum_member_matches_the_python_enumeration(member: int) -> None:
+@pytest.mark.parametrize("member", [0, 5, 11])  # the Python reference takes minutes per member
+def test_roboergosum_members_match_the_python_enumeration(member: int) -> None:
     from hg_marl.agents.humans.population import load_population
 
     spec = load_population("populations/roboergosum.toml").members()[member].spec
@@ -100,7 +107,7 @@ def test_every_roboergosum_member_matches_the_python_enumeration(member: int) ->
     assert oracle_rate(world, spec).rate_per_hour == pytest.approx(ref.rate_per_hour, rel=1e-9, abs=1e-9)
 
 
-@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(
     objects=st.integers(1, 3),
     bins=st.integers(1, 2),
