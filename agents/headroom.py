@@ -46,6 +46,7 @@ from scipy import sparse
 from scipy.sparse.linalg import spsolve
 from tqdm import tqdm
 
+from hg_marl.agents.models import AnswerTable, Model, StatePacker, build_model
 from hg_marl.agents.oracle import (
     DEFAULT_MEMORY,
     DEFAULT_SECONDS,
@@ -108,6 +109,8 @@ class JointModel:
         self.pair_action: list[int] = []
         self.pair_terminal: list[bool] = []
         self.dynamics = [_Dynamics() for _ in self.humans]
+        self._arrays: list[tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]] = []
+        """Set by :meth:`from_model`; the Python enumeration keeps lists in ``dynamics``."""
         self.budget.refuse_count("layouts", layout_count(world.scenario), "initial layouts")
         layouts = layout_distribution(world, self.budget)
         table = world.table
@@ -191,8 +194,29 @@ class JointModel:
         self.terminal = np.array(self.pair_terminal, dtype=bool)
         self.actions = np.array(self.pair_action, dtype=np.int64)
 
+    @classmethod
+    def from_model(cls, world: World, model: Model, budget: Budget | None = None) -> JointModel:
+        """The joint model read from the array builder's :class:`~hg_marl.agents.models.Model`."""
+        self = cls.__new__(cls)
+        self.world, self.budget = world, budget or Budget(None, None, None)
+        self.n, self.n_pairs = model.n, model.n_pairs
+        self.starts = model.pair_start[:-1]
+        self.pair_state = model.pair_state()
+        self.terminal = model.pair_terminal
+        self.actions = model.pair_action
+        self.dynamics = []
+        self._arrays = []
+        for i, d in enumerate(model.dynamics):
+            dyn = _Dynamics()
+            dyn.regen = list(zip(d.regen_next.tolist(), d.regen_prob.tolist(), d.regen_tau.tolist(), strict=True))
+            self.dynamics.append(dyn)
+            self._arrays.append((model.of(i).t_pair(), d.t_next, d.t_prob, d.t_tau))
+        return self
+
     def arrays(self, i: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Human ``i``'s transitions as arrays: pair, next state, probability, seconds."""
+        if self._arrays:
+            return self._arrays[i]
         d = self.dynamics[i]
         return (
             np.array(d.t_pair, dtype=np.int64),
@@ -346,10 +370,23 @@ def headroom(
         specs.setdefault(label, spec)
     labels = list(specs)
     humans = [_human_policy(specs[label], world) for label in labels]
-    budget = Budget(max_seconds, max_memory, max_states, subject=f"the headroom model of {world.scenario.name!r}",
-                    hint="use a smaller scenario or fewer humans", start=start)
+    budget = Budget(
+        max_seconds,
+        max_memory,
+        max_states,
+        subject=f"the headroom model of {world.scenario.name!r}",
+        hint="use a smaller scenario or fewer humans",
+        start=start,
+    )
     with budget.deadline():
-        model = JointModel(world, humans, failed_actions, max_states, budget, progress)
+        budget.refuse_count("layouts", layout_count(world.scenario), "initial layouts")
+        layouts = layout_distribution(world, budget)
+        packer = StatePacker(world)
+        tables = [AnswerTable(world, h, packer, budget) for h in humans]
+        built = build_model(
+            world, tables, layouts, failed_actions=failed_actions, budget=budget, progress=progress, label="headroom"
+        )
+        model = JointModel.from_model(world, built, budget)
         col = [labels.index(label) for label, _ in true]
         policies = {}
         for label in tqdm(list(rows), desc="headroom: policies", disable=not progress, file=sys.stderr):

@@ -21,7 +21,8 @@ states, transitions and rates.
 from __future__ import annotations
 
 import sys
-from dataclasses import dataclass
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy import sparse
@@ -42,8 +43,23 @@ still built in large batches."""
 
 
 @dataclass
+class Dynamics:
+    """One partner's transitions on a model: CSR over pairs, and its regeneration."""
+
+    t_start: np.ndarray
+    """(pairs + 1,) transitions of pair ``p`` are ``t_start[p]:t_start[p + 1]``."""
+    t_next: np.ndarray
+    t_prob: np.ndarray
+    t_tau: np.ndarray
+    regen_next: np.ndarray
+    """The re-drawn tables after the partner's first answer (state ids), with probability and seconds."""
+    regen_prob: np.ndarray
+    regen_tau: np.ndarray
+
+
+@dataclass
 class Model:
-    """A semi-MDP on packed robot-turn states (ids are positions in ``keys``)."""
+    """A semi-MDP on packed robot-turn states (ids are positions in ``keys``), one dynamics per partner."""
 
     packer: StatePacker
     keys: np.ndarray
@@ -53,15 +69,43 @@ class Model:
     pair_action: np.ndarray
     pair_terminal: np.ndarray
     """Whether the pair is the completing ``wait`` (worth 1, followed by the re-draw)."""
-    t_start: np.ndarray
-    """(pairs + 1,) transitions of pair ``p`` are ``t_start[p]:t_start[p + 1]``."""
-    t_next: np.ndarray
-    t_prob: np.ndarray
-    t_tau: np.ndarray
-    regen_next: np.ndarray
-    regen_prob: np.ndarray
-    regen_tau: np.ndarray
+    dynamics: list[Dynamics]
+    """Per partner (the builder's ``answers`` in order); the state set is closed under all of them."""
     n_layouts: int
+    partner: int = 0
+    """The partner the ``t_*`` and ``regen_*`` shortcuts and the solver read."""
+
+    def of(self, partner: int) -> Model:
+        """The same model read for another partner (arrays shared)."""
+        return replace(self, partner=partner)
+
+    @property
+    def t_start(self) -> np.ndarray:
+        return self.dynamics[self.partner].t_start
+
+    @property
+    def t_next(self) -> np.ndarray:
+        return self.dynamics[self.partner].t_next
+
+    @property
+    def t_prob(self) -> np.ndarray:
+        return self.dynamics[self.partner].t_prob
+
+    @property
+    def t_tau(self) -> np.ndarray:
+        return self.dynamics[self.partner].t_tau
+
+    @property
+    def regen_next(self) -> np.ndarray:
+        return self.dynamics[self.partner].regen_next
+
+    @property
+    def regen_prob(self) -> np.ndarray:
+        return self.dynamics[self.partner].regen_prob
+
+    @property
+    def regen_tau(self) -> np.ndarray:
+        return self.dynamics[self.partner].regen_tau
 
     @property
     def n(self) -> int:
@@ -148,9 +192,24 @@ class _Answered:
         self.size = size
 
 
+def _regen(
+    world: World, table: AnswerTable, lay: BatchState, lay_p: np.ndarray, canonical: bool
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The partner's first answer on each re-drawn table: (next key, probability, seconds) flat."""
+    wait = world.table.wait[Agent.ROBOT]
+    table.phase = "first answers"
+    mid = table.packer.pack(lay, np.full(len(lay), wait if table.uses_robot_action else -1, dtype=np.int64))
+    u, inv = np.unique(mid, return_inverse=True)
+    first = _Answered(table, u, canonical)
+    count = first.size[inv]
+    rows = np.repeat(np.arange(len(lay)), count)
+    entry = np.repeat(first.block[inv] - np.concatenate([[0], np.cumsum(count)[:-1]]), count) + np.arange(len(rows))
+    return first.next[entry], lay_p[rows] * first.prob[entry], np.maximum(world.durations.wait, first.d_human[entry])
+
+
 def build_model(
     world: World,
-    answers: AnswerTable,
+    answers: AnswerTable | Sequence[AnswerTable],
     layouts: list[tuple[State, float]],
     *,
     failed_actions: bool = True,
@@ -161,37 +220,29 @@ def build_model(
 ) -> Model:
     """The model reachable from ``layouts`` (already canonical when ``canonical``) against ``answers``.
 
-    ``canonical``: keep one state per relabelling class (an equivariant partner, as the
+    ``answers``: one partner, or several (the states are then closed under every
+    partner's answers, each partner's transitions kept apart: the headroom's joint model).
+    ``canonical``: keep one state per relabelling class (equivariant partners, as the
     oracle's symmetry reduction). The budget is read per batch of states (phase
-    ``"explore"``) and between the partner's live answers; its states budget counts the
+    ``"explore"``) and between the partners' live answers; its states budget counts the
     states known.
     """
+    tables = [answers] if isinstance(answers, AnswerTable) else list(answers)
     budget = budget or Budget(None, None, None)
     rules = BatchedRules(world)
-    packer = answers.packer
+    packer = tables[0].packer
     wait = rules.wait[Agent.ROBOT]
     n_robot = rules.n_actions[Agent.ROBOT]
-    uses = answers.uses_robot_action
-    # the regeneration: the re-drawn tables and the partner's first answer on them
-    answers.phase = "first answers"
     lay = BatchState.of([s for s, _ in layouts])
     lay_p = np.array([p for _, p in layouts], dtype=np.float64)
-    lay_mid = packer.pack(lay, np.full(len(lay), wait if uses else -1, dtype=np.int64))
-    u, inv = np.unique(lay_mid, return_inverse=True)
-    first = _Answered(answers, u, canonical)
-    count = first.size[inv]
-    rows = np.repeat(np.arange(len(lay)), count)
-    entry = np.repeat(first.block[inv] - np.concatenate([[0], np.cumsum(count)[:-1]]), count) + np.arange(len(rows))
-    regen_keys = first.next[entry]
-    regen_prob = lay_p[rows] * first.prob[entry]
-    regen_tau = np.maximum(world.durations.wait, first.d_human[entry])
+    regen = [_regen(world, t, lay, lay_p, canonical) for t in tables]
     index = _Index()
-    index.add(_first_unique(np.concatenate([packer.pack(lay), regen_keys])))
+    index.add(_first_unique(np.concatenate([packer.pack(lay), *(r[0] for r in regen)])))
     budget.check("explore", 0, unit=f"states explored ({index.n:,} known)", states=index.n)
-    answers.phase = "explore: partner answers"
-    parts: dict[str, list[np.ndarray]] = {
-        k: [] for k in ("size", "action", "terminal", "tcount", "next", "prob", "tau")
-    }
+    for t in tables:
+        t.phase = "explore: partner answers"
+    parts: dict[str, list[np.ndarray]] = {k: [] for k in ("size", "action", "terminal")}
+    flows: list[dict[str, list[np.ndarray]]] = [{k: [] for k in ("tcount", "next", "prob", "tau")} for _ in tables]
     bar = tqdm(
         desc=f"{label}: states", unit=" states", disable=not progress, file=sys.stderr, dynamic_ncols=True, leave=False
     )
@@ -217,26 +268,33 @@ def build_model(
             ok, d_robot, _ = rules.step(pb, Agent.ROBOT, pa, mask[ps])
             terminal = ok & (pa == wait) & clean
             live = np.flatnonzero(~terminal)
-            seen = np.where(ok[live], pa[live], -1) if uses else np.full(len(live), -1, dtype=np.int64)
-            mid = packer.pack(_rows(pb, live), seen)
-            u, inv = np.unique(mid, return_inverse=True)
-            ans = _Answered(answers, u, canonical)
-            tcount = np.zeros(len(pa), dtype=np.int64)
-            tcount[live] = ans.size[inv]
-            pair_of = np.repeat(np.arange(len(pa)), tcount)
-            starts = np.concatenate([[0], np.cumsum(tcount)[:-1]])
-            block = np.zeros(len(pa), dtype=np.int64)
-            block[live] = ans.block[inv]
-            entry = np.repeat(block - starts, tcount) + np.arange(len(pair_of))
-            uniq, inv = np.unique(ans.next[entry], return_inverse=True)
+            live_b = _rows(pb, live)
+            outcomes = []
+            for t in tables:
+                seen = np.where(ok[live], pa[live], -1) if t.uses_robot_action else np.full(len(live), -1, np.int64)
+                u, inv = np.unique(packer.pack(live_b, seen), return_inverse=True)
+                ans = _Answered(t, u, canonical)
+                tcount = np.zeros(len(pa), dtype=np.int64)
+                tcount[live] = ans.size[inv]
+                pair_of = np.repeat(np.arange(len(pa)), tcount)
+                block = np.zeros(len(pa), dtype=np.int64)
+                block[live] = ans.block[inv]
+                entry = np.repeat(block - np.concatenate([[0], np.cumsum(tcount)[:-1]]), tcount)
+                entry += np.arange(len(pair_of))
+                outcomes.append((tcount, pair_of, ans, entry))
+            uniq, inv = np.unique(np.concatenate([o[2].next[o[3]] for o in outcomes]), return_inverse=True)
             index.add(uniq)  # sorted: new states get ids in key order
+            ids = index.id_of(uniq)[inv]
+            at = 0
+            for flow, (tcount, pair_of, ans, entry) in zip(flows, outcomes, strict=True):
+                flow["tcount"].append(tcount)
+                flow["next"].append(ids[at : at + len(entry)])
+                flow["prob"].append(ans.prob[entry])
+                flow["tau"].append(np.maximum(d_robot[pair_of], ans.d_human[entry]))
+                at += len(entry)
             parts["size"].append(np.bincount(ps, minlength=hi - lo))
             parts["action"].append(pa)
             parts["terminal"].append(terminal)
-            parts["tcount"].append(tcount)
-            parts["next"].append(index.id_of(uniq)[inv])
-            parts["prob"].append(ans.prob[entry])
-            parts["tau"].append(np.maximum(d_robot[pair_of], ans.d_human[entry]))
             bar.update(hi - lo)
             bar.set_postfix(known=index.n, refresh=False)
             lo = hi
@@ -245,22 +303,30 @@ def build_model(
         bar.close()
     budget.check("explore", lo, unit="states explored", states=index.n)
 
-    def cat(name: str, dtype: type) -> np.ndarray:
-        return np.concatenate(parts[name]).astype(dtype, copy=False) if parts[name] else np.zeros(0, dtype=dtype)
+    def cat(arrays: list[np.ndarray], dtype: type) -> np.ndarray:
+        return np.concatenate(arrays).astype(dtype, copy=False) if arrays else np.zeros(0, dtype=dtype)
 
-    sizes, tcounts = cat("size", np.int64), cat("tcount", np.int64)
+    def starts(counts: list[np.ndarray]) -> np.ndarray:
+        return np.concatenate([[0], np.cumsum(cat(counts, np.int64))]).astype(np.int64)
+
+    dynamics = [
+        Dynamics(
+            t_start=starts(flow["tcount"]),
+            t_next=cat(flow["next"], np.int64),
+            t_prob=cat(flow["prob"], np.float64),
+            t_tau=cat(flow["tau"], np.float64),
+            regen_next=index.id_of(keys),
+            regen_prob=prob,
+            regen_tau=tau,
+        )
+        for flow, (keys, prob, tau) in zip(flows, regen, strict=True)
+    ]
     return Model(
         packer=packer,
         keys=index.keys(),
-        pair_start=np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64),
-        pair_action=cat("action", np.int64),
-        pair_terminal=cat("terminal", bool),
-        t_start=np.concatenate([[0], np.cumsum(tcounts)]).astype(np.int64),
-        t_next=cat("next", np.int64),
-        t_prob=cat("prob", np.float64),
-        t_tau=cat("tau", np.float64),
-        regen_next=index.id_of(regen_keys),
-        regen_prob=regen_prob,
-        regen_tau=regen_tau,
+        pair_start=starts(parts["size"]),
+        pair_action=cat(parts["action"], np.int64),
+        pair_terminal=cat(parts["terminal"], bool),
+        dynamics=dynamics,
         n_layouts=len(layouts),
     )

@@ -158,3 +158,22 @@ def test_the_solver_reads_its_budget_while_sweeping() -> None:
     budget = Budget(None, None, None)
     solve(model, budget=budget)
     assert budget.phase == "solve" and budget.checks >= 2
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "forced_coordination"])
+def test_the_headroom_joint_model_on_arrays_is_the_python_joint_model(scenario: str) -> None:
+    from hg_marl.agents.headroom import JointModel
+    from hg_marl.agents.models.layouts import layout_distribution as layouts_of
+
+    world = World(scenario)
+    specs = ["cooperative", "lazy", "no_handover", "random", "preference:handover=-1,shared=1"]
+    reference = JointModel(world, [_human_policy(h, world) for h in specs])
+    packer = StatePacker(world)
+    tables = [AnswerTable(world, _human_policy(h, world), packer) for h in specs]
+    arrays = JointModel.from_model(world, build_model(world, tables, layouts_of(world)))
+    assert arrays.n == reference.n and arrays.n_pairs == reference.n_pairs
+    for i in range(len(specs)):
+        assert len(arrays.arrays(i)[0]) == len(reference.arrays(i)[0])
+        ref_choice, new_choice = reference.optimal_policy(i), arrays.optimal_policy(i)
+        for j in range(len(specs)):  # every policy against every partner: the matrix's entries
+            assert arrays.rate(new_choice, j) == pytest.approx(reference.rate(ref_choice, j), rel=1e-9, abs=1e-9)
