@@ -11,17 +11,17 @@ location included, before the human's move of that same cycle. Every action of t
 action space is modelled: infeasible ones all have the same effect (0.2 s, nothing done,
 a pending offer lapses), so one representative stands for them (``failed_actions``).
 
-Solution (why not relative value iteration). Each success is worth exactly 1 and is
-followed by a table drawn from a fixed distribution: a regeneration point. By the
-renewal-reward theorem the rate of a stationary policy is ``1 / E[T]``, with ``T`` the
-time between successes, and no policy can beat the one minimising the expected time to
-the next success from every state. So the average-reward problem is a stochastic
-shortest-path problem (the Dinkelbach fixed point ``max E[r - rho tau] = 0`` reached in
-one solve, no search on ``rho``): value iteration ``V(s) = min_a E[tau + V(s')]`` with
-``V = 0`` after the completing ``wait``. States from which the robot cannot make success
-certain (e.g. an adversarial human hid an object) are found first by the standard
-almost-sure-reachability fixpoint and get ``V = inf``; if the re-drawn table can lead
-there, the rate is 0.
+Build and solution (``agents/models``, ``docs/exact-references.md``). The model is
+built breadth-first on arrays (:func:`~hg_marl.agents.models.build_model`: packed state
+keys, the batched rules, the partner's answers in an
+:class:`~hg_marl.agents.models.AnswerTable`) and solved on CSR
+(:func:`~hg_marl.agents.models.solve`): each success is worth exactly 1 and is followed
+by a re-drawn table, a regeneration point, so by the renewal-reward theorem the
+average-reward problem is the stochastic shortest path to the next success, solved by
+value iteration ``V(s) = min_a E[tau + V(s')]`` with ``V = 0`` after the completing
+``wait``. States from which the robot cannot make success certain (e.g. an adversarial
+human hid an object) get ``V = inf``; if the re-drawn table can lead there, the rate is
+0. The Python enumeration it replaced (``_Model``) is kept as the tests' reference.
 
 Symmetry. Objects accepted by the same bins are interchangeable. When the human is
 ``equivariant`` (relabelling them in the state relabels its answer: the planner-driven
@@ -32,21 +32,12 @@ canonical layouts directly (:func:`canonical_layouts`); the rate is the full mod
 an action back). Humans whose rule picks "the first object" by index (``lazy``,
 ``no_handover``, ``adversarial``) are not equivariant and get the full model.
 
-Size and budget (``python benchmarks/oracle_budget.py``, each solve in a fresh process
-on the shared, loaded 2-core machine, wall seconds). ``paper2015``: under 1 s for every
-bundled human. ``roboergosum`` (6 objects, 5,040 layouts, 140 canonical): ``random``
-17k states, 3 s; ``cooperative`` 6.5k states, 20-27 s (58 s and 192k states without the
-reduction); ``noisy`` 17k states, 48-58 s (353-396 s and 4.5 GB before); ``no_handover``
-6 s, ``adversarial`` 7 s, ``lazy`` 17-23 s (251k states, 0.6 GB). Generated 8-object
-tables (1.8M layouts): ``random`` 2-3 s with one bin, 36-47 s CPU with two (428k states);
-the planner-driven humans need one A* search per mid-cycle state (tens of ms each) and
-exceed the budget; the non-equivariant humans' 1.8M layouts are refused before
-enumeration. A solve stops with a one-line :class:`OracleTooLarge` naming the
-budget beyond ``max_seconds`` (default 60 s of CPU time: a loaded machine does not
-change the verdict), ``max_memory`` (4 GB resident),
-``max_states`` or the kernel's available memory falling under 512 MB, so a study falls
-back to the best robot as reference. The build is pure Python and shows a progress bar
-with the states explored and known (``progress=True``, the CLI's default).
+Budget. One :class:`~hg_marl.agents.models.Budget` (``max_states``, ``max_memory``,
+``max_seconds`` of wall time) is read in every phase: the layout count, the layout
+enumeration, the partner's first answers, the exploration (per batch and between live
+answers) and the solve; beyond it, one line (:class:`OracleTooLarge`) names the budget,
+the phase and how far it got, so a study falls back to the best robot as reference.
+Measured sizes and times: ``docs/exact-references.md`` and ``benchmarks/model_build.py``.
 """
 
 from __future__ import annotations
@@ -56,6 +47,7 @@ import math
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -65,6 +57,7 @@ from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.models.answers import AnswerTable
 from hg_marl.agents.models.budget import DEFAULT_MEMORY, DEFAULT_SECONDS, DEFAULT_STATES, Budget, OverBudget
 from hg_marl.agents.models.builder import build_model
+from hg_marl.agents.models.cache import cache_folder, entry_path, load_entry, result_key, save_entry
 from hg_marl.agents.models.layouts import canonical_layout_count, canonical_layouts, layout_distribution
 from hg_marl.agents.models.packing import PackedMap, StatePacker
 from hg_marl.agents.models.python_model import _certain_states as _certain_states  # re-exported: headroom
@@ -146,6 +139,27 @@ def _human_policy(human: Any, world: World) -> Any:
     return human
 
 
+def _from_entry(world: World, human: Any, stored: dict[str, np.ndarray], seconds: float) -> OracleResult:
+    """An :class:`OracleResult` from a cache entry (see :func:`oracle_rate`)."""
+    expected, n, n_transitions, n_layouts, iterations, converged, reduced = stored["scalars"].tolist()
+    packer = StatePacker(world)
+    return OracleResult(
+        rate_per_hour=0.0 if math.isinf(expected) else HOUR / expected,
+        seconds_per_task=expected,
+        n_states=int(n),
+        n_transitions=int(n_transitions),
+        n_layouts=int(n_layouts),
+        iterations=int(iterations),
+        converged=bool(converged),
+        policy=PackedMap(packer, stored["keys"], stored["policy"]),
+        values=PackedMap(packer, stored["keys"], stored["values"]),
+        scenario=world.scenario.name,
+        human=str(getattr(human, "name", type(human).__name__)),
+        seconds=seconds,
+        reduced=bool(reduced),
+    )
+
+
 def oracle_rate(
     scenario: str | Scenario | World = "paper2015",
     human: Any = "cooperative",
@@ -160,6 +174,7 @@ def oracle_rate(
     max_seconds: float | None = DEFAULT_SECONDS,
     max_memory: int | None = DEFAULT_MEMORY,
     budget: Budget | None = None,
+    cache: Path | str | bool | None = True,
 ) -> OracleResult:
     """The optimal tasks per simulated hour against ``human``, and the policy achieving it.
 
@@ -180,6 +195,9 @@ def oracle_rate(
         max_seconds: wall-time budget of the whole computation in seconds (None: unlimited).
         max_memory: resident-memory budget in bytes (None: unlimited).
         budget: a :class:`~hg_marl.agents.models.budget.Budget` to use instead of the three above.
+        cache: a folder to keep results in by content (``agents/models/cache.py``); True:
+            ``$HG_MARL_CACHE/oracle`` when set, else none; None/False: none. Only a human
+            given by its spec is cached.
 
     Raises:
         HumanError: the human is not stationary.
@@ -193,6 +211,20 @@ def oracle_rate(
         budget.subject = f"the oracle for {world.scenario.name!r}"
         budget.hint = "use the best robot as reference"
         policy_human = _human_policy(human, world)
+        options = {
+            "failed_actions": failed_actions,
+            "symmetry": symmetry,
+            "tolerance": tolerance,
+            "max_iterations": max_iterations,
+        }
+        folder = cache_folder(cache) if isinstance(human, str) else None
+        path = key = None
+        if folder is not None:
+            key = result_key(world, human, options)
+            path = entry_path(folder, world, key)
+            stored = load_entry(path, key)
+            if stored is not None:
+                return _from_entry(world, policy_human, stored, time.perf_counter() - start)
         relabel: Relabel | None = Relabel(world)
         if symmetry is None:
             symmetry = bool(getattr(policy_human, "equivariant", False))
@@ -215,6 +247,28 @@ def oracle_rate(
         solution = solve(model, tolerance=tolerance, max_iterations=max_iterations, budget=budget)
     expected = solution.seconds_per_task
     rate = 0.0 if math.isinf(expected) else HOUR / expected
+    if path is not None and key is not None:
+        save_entry(
+            path,
+            key,
+            {
+                "keys": model.keys,
+                "policy": model.pair_action[solution.best_pair],
+                "values": solution.values,
+                "scalars": np.array(
+                    [
+                        expected,
+                        model.n,
+                        len(model.t_next),
+                        len(layouts),
+                        solution.iterations,
+                        solution.converged,
+                        relabel is not None,
+                    ],
+                    dtype=np.float64,
+                ),
+            },
+        )
     result = OracleResult(
         rate_per_hour=rate,
         seconds_per_task=expected,

@@ -177,3 +177,32 @@ def test_the_headroom_joint_model_on_arrays_is_the_python_joint_model(scenario: 
         ref_choice, new_choice = reference.optimal_policy(i), arrays.optimal_policy(i)
         for j in range(len(specs)):  # every policy against every partner: the matrix's entries
             assert arrays.rate(new_choice, j) == pytest.approx(reference.rate(ref_choice, j), rel=1e-9, abs=1e-9)
+
+
+def test_a_cached_result_is_the_computed_one_and_its_key_follows_the_content(tmp_path: Any) -> None:
+    from hg_marl.agents.models.cache import result_key
+
+    world = World("paper2015")
+    first = oracle_rate(world, "lazy", cache=tmp_path)
+    assert len(list(tmp_path.glob("paper2015-*.npz"))) == 1
+    again = oracle_rate(world, "lazy", cache=tmp_path)
+    assert again.iterations == first.iterations and again.rate_per_hour == first.rate_per_hour
+    assert dict(again.policy) == dict(first.policy) and dict(again.values) == dict(first.values)
+    options = {"failed_actions": True, "symmetry": None, "tolerance": 1e-9, "max_iterations": 200_000}
+    key = result_key(world, "lazy", options)
+    assert key == result_key(World("paper2015"), "lazy", dict(options))  # same content, same key
+    assert key != result_key(world, "lazy:p_idle=0.5", options)  # another human
+    assert key != result_key(world, "lazy", {**options, "failed_actions": False})  # another option
+    assert key != result_key(World("forced_coordination"), "lazy", options)  # another scenario
+    oracle_rate(world, "lazy", cache=tmp_path, failed_actions=False)  # another option: another entry
+    assert len(list(tmp_path.glob("paper2015-*.npz"))) == 2
+
+
+def test_a_corrupt_cache_entry_is_rebuilt(tmp_path: Any) -> None:
+    world = World("paper2015")
+    first = oracle_rate(world, "no_handover", cache=tmp_path)
+    (entry,) = tmp_path.glob("*.npz")
+    entry.write_bytes(b"not an npz")
+    again = oracle_rate(world, "no_handover", cache=tmp_path)
+    assert again.rate_per_hour == first.rate_per_hour and again.n_states == first.n_states
+    assert entry.read_bytes()[:2] == b"PK"  # rewritten as a zip archive
