@@ -18,6 +18,7 @@ import numpy as np
 
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.packing import StatePacker
+from hg_marl.agents.models.partners import batch_answers
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules
 
@@ -37,9 +38,12 @@ class AnswerTable:
         human: a reset stationary human with ``distribution(world, state, robot_action)``.
         packer: the builder's packer (keys include the robot action seen).
         budget: read between live answers (phase :attr:`phase`).
+        arrays: answer on arrays where the human has an array version (False: always live).
     """
 
-    def __init__(self, world: World, human: Any, packer: StatePacker, budget: Budget | None = None) -> None:
+    def __init__(
+        self, world: World, human: Any, packer: StatePacker, budget: Budget | None = None, arrays: bool = True
+    ) -> None:
         self.world, self.human, self.packer = world, human, packer
         self.budget = budget
         self.rules = BatchedRules(world)
@@ -53,6 +57,8 @@ class AnswerTable:
             "canonical": np.zeros(0, dtype=np.int64),
             "d_human": np.zeros(0, dtype=np.float64),
         }
+        self.batch = batch_answers(world, human) if arrays else None
+        """The human's answers on arrays (``agents/models/partners.py``), None to ask it live."""
         self.live_calls = 0
         """Distributions asked of the live human (the rest came from the table)."""
         self.phase = "answers"
@@ -72,6 +78,12 @@ class AnswerTable:
         if not len(missing):
             return
         states, seen = self.packer.unpack(missing)
+        if self.batch is not None:
+            if self.budget is not None:
+                self.budget.check(self.phase, 0, len(missing), "partner answers on arrays")
+            size, actions, probs_arr = self.batch(states)
+            self._store(missing, size, actions, probs_arr)
+            return
         wheres, ats = states.where.tolist(), states.robot_at.tolist()
         bys, objs, seens = states.offer_by.tolist(), states.offer_obj.tolist(), seen.tolist()
         acts: list[int] = []
@@ -88,15 +100,17 @@ class AnswerTable:
                     probs.append(p)
                     sizes[i] += 1
         self.live_calls += len(missing)
-        size = np.array(sizes, dtype=np.int64)
-        actions = np.array(acts, dtype=np.int64)
+        self._store(missing, np.array(sizes, dtype=np.int64), np.array(acts, dtype=np.int64), np.array(probs))
+
+    def _store(self, missing: np.ndarray, size: np.ndarray, actions: np.ndarray, probs: np.ndarray) -> None:
+        """Step the answers of ``missing`` once and merge them into the table."""
         b, _ = self.packer.unpack(np.repeat(missing, size))
         _, d_human, _ = self.rules.step(b, Agent.HUMAN, actions)
         nxt = self.packer.pack(b)
         self.packer.canonical(b)
         new = {
             "actions": actions,
-            "probs": np.array(probs, dtype=np.float64),
+            "probs": probs.astype(np.float64, copy=False),
             "next": nxt,
             "canonical": self.packer.pack(b),
             "d_human": d_human,

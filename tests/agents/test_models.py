@@ -206,3 +206,58 @@ def test_a_corrupt_cache_entry_is_rebuilt(tmp_path: Any) -> None:
     again = oracle_rate(world, "no_handover", cache=tmp_path)
     assert again.rate_per_hour == first.rate_per_hour and again.n_states == first.n_states
     assert entry.read_bytes()[:2] == b"PK"  # rewritten as a zip archive
+
+
+def mid_states(world: World, count: int = 3000) -> list[State]:
+    """Mid-cycle states the robot's actions reach on random walks (offers included)."""
+    rng = np.random.default_rng(1)
+    out: list[State] = []
+    layouts = [s for s, _ in layout_distribution(world)]
+    while len(out) < count:
+        s = layouts[int(rng.integers(len(layouts)))]
+        for _ in range(30):
+            opts = world.feasible_indices(s, 0)
+            s = world.table.successor(s, 0, opts[int(rng.integers(len(opts)))])[0]
+            out.append(s)
+            opts = world.feasible_indices(s, 1)
+            s = world.table.successor(s, 1, opts[int(rng.integers(len(opts)))])[0]
+    return out
+
+
+PREFERENCES = [
+    "random",
+    "preference",
+    "preference:accept=0.5,p_idle=0.3,haste=0.2,colour=blue,colour_bonus=0.4",
+    "preference:handover=-1,shared=1,keep=0.3,robot_side=0.8,accept=0",
+    "preference:self_work=2,p_idle=1",
+]
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "roboergosum", "forced_coordination"])
+def test_array_answers_are_the_live_humans_answers(scenario: str) -> None:
+    from hg_marl.agents.humans.population import load_population
+    from hg_marl.agents.models.partners import batch_answers
+
+    world = World(scenario)
+    states = mid_states(world)
+    b = BatchState.of(states)
+    members = [m.spec for m in load_population("populations/roboergosum.toml").members()]
+    for spec in [*PREFERENCES, *members]:
+        live = _human_policy(spec, world)
+        batch = batch_answers(world, live)
+        assert batch is not None, spec
+        sizes, actions, probs = batch(b)
+        at = 0
+        for i, s in enumerate(states):
+            expected = [(h, p) for h, p in live.distribution(world, s, -1) if p > 0.0]
+            got = list(zip(actions[at : at + sizes[i]].tolist(), probs[at : at + sizes[i]].tolist(), strict=True))
+            assert got == expected, (spec, s)
+            at += sizes[i]
+
+
+def test_a_softmax_preference_is_answered_live() -> None:
+    from hg_marl.agents.models.partners import batch_answers
+
+    world = World("paper2015")
+    assert batch_answers(world, _human_policy("preference:temperature=0.5", world)) is None
+    assert batch_answers(world, _human_policy("random:feasible_only=false", world)) is None
