@@ -87,13 +87,20 @@ def solve(
     values = np.zeros(n)
     iterations, converged = 0, False
 
+    zero_at, inf_at, dead = np.flatnonzero(terminal & ok), np.flatnonzero(~ok), np.flatnonzero(~alive)
+
     def q_of(v: np.ndarray) -> np.ndarray:
-        q = cost + transitions @ np.where(alive, v, 0.0)
-        return np.where(ok, np.where(terminal, 0.0, q), np.inf)
+        """Seconds after each pair given ``v`` (``v`` is 0 on the states that cannot complete)."""
+        q = transitions @ v
+        q += cost
+        q[zero_at] = 0.0
+        q[inf_at] = np.inf
+        return q
 
     if alive.any():
         for iterations in range(1, max_iterations + 1):
-            new = np.where(alive, np.minimum.reduceat(q_of(values), starts), 0.0)
+            new = np.minimum.reduceat(q_of(values), starts)
+            new[dead] = 0.0
             delta = float(np.max(np.abs(new - values)))
             values = new
             if iterations % 64 == 0:
@@ -101,8 +108,8 @@ def solve(
             if delta < tolerance:
                 converged = True
                 break
+    q = q_of(np.where(alive, values, 0.0))
     values = np.where(alive, values, np.inf)
-    q = q_of(values)
     best = np.minimum.reduceat(q, starts) if n else np.zeros(0)
     pair_state = model.pair_state()
     first = np.full(n, n_pairs, dtype=np.int64)
