@@ -11,7 +11,7 @@ MUTATION_ARGS ?=
 RAY_VENV ?= .venv-ray
 TEST_WORKERS ?= 2
 
-.PHONY: setup reproduce test test-slow test-browser test-ray test-integrations test-mutation mutation-full lint bench clean
+.PHONY: setup reproduce test test-slow test-browser test-ray test-integrations test-mutation mutation-full lint docs bench clean
 
 # Set-up prints a step counter and pip's own progress (one line per package collected,
 # a bar per download), so the minutes of installing are never silent.
@@ -78,6 +78,16 @@ test-ray: $(RAY_VENV)/bin/.installed
 lint: setup
 	$(BIN)/ruff check .
 	$(BIN)/mypy
+	$(BIN)/python .ci/lint_layers.py
+
+# The documentation site (mkdocs.yml): strict, so a page missing from the nav, a broken
+# link or anchor fails the build. CI runs it as its own stage, after `make test`.
+$(BIN)/.docs: $(BIN)/.installed
+	$(BIN)/python -m pip install --quiet -e ".[docs]"
+	touch $@
+
+docs: $(BIN)/.docs
+	$(BIN)/mkdocs build --strict --site-dir build/site
 
 bench: setup
 	$(BIN)/python benchmarks/env_throughput.py
@@ -85,4 +95,4 @@ bench: setup
 	$(BIN)/python benchmarks/decision_latency.py
 
 clean:
-	rm -rf $(VENV) $(RAY_VENV) results .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) $(RAY_VENV) results build/site .pytest_cache .mypy_cache .ruff_cache

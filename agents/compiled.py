@@ -410,7 +410,7 @@ def compile_human(
 
 def save_table(path: Path, key: str, arrays: dict[str, np.ndarray]) -> None:
     """A compiled table as one ``.npz`` with its content key, written atomically (no pickle)."""
-    from hg_marl.training.io import atomic_write
+    from hg_marl.core.atomic import atomic_write
 
     def write(tmp: Path) -> None:
         buf = io.BytesIO()

@@ -38,6 +38,7 @@ from typing import Any
 import gymnasium
 import numpy as np
 
+from hg_marl.agents.model_limits import Shape, check_npz_headers, expected_shapes, sb3_budget
 from hg_marl.agents.sb3_limits import check_policy_kwargs
 from hg_marl.core.errors import ModelFileError, output_error
 
@@ -53,7 +54,8 @@ MAX_HEADER_BYTES = 1 << 20
 """A model header may be at most 1 MiB (its arrays live in the ``.npz``)."""
 
 MAX_ARRAY_BYTES = 1 << 30
-"""A weights file may hold at most this many bytes of arrays (1 GiB) once loaded."""
+"""A weights file may hold at most this many bytes of arrays (1 GiB) once loaded; each kind
+is held to less, worked out from its header (:mod:`hg_marl.agents.model_limits`)."""
 
 _COUNTERS = ("num_timesteps", "_n_updates", "_episode_num", "_n_calls")
 
@@ -111,19 +113,28 @@ def sha256_of(path: Path) -> str:
     return digest.hexdigest()
 
 
-def read_arrays(path: Path, sha256: str | None = None) -> dict[str, np.ndarray]:
+def read_arrays(
+    path: Path, sha256: str | None = None, shapes: Mapping[str, Shape] | None = None, limit: int = MAX_ARRAY_BYTES
+) -> dict[str, np.ndarray]:
     """Read a ``.npz`` of numeric arrays, never unpickling; check its hash if given.
+
+    Args:
+        path: the ``.npz``.
+        sha256: the hash its header states, if any.
+        shapes: the arrays it must hold, by name (:mod:`hg_marl.agents.model_limits`).
+        limit: most bytes of arrays in all (at most :data:`MAX_ARRAY_BYTES`).
 
     Raises:
         ModelFileError: missing, not an npz, truncated, an object array, a hash mismatch,
-            or more than :data:`MAX_ARRAY_BYTES` of data.
+            an array that ``shapes`` does not allow, or more than ``limit`` bytes of data
+            (all but the last two checked on the npy headers before any array is read).
     """
     if not path.is_file():
         raise ModelFileError(f"{path}: weights file not found")
     if sha256 is not None and sha256_of(path) != sha256:
         raise ModelFileError(f"{path}: sha256 differs from its header's (the file changed or is corrupt)")
     try:
-        _check_npz_headers(path)
+        check_npz_headers(path, shapes, min(limit, MAX_ARRAY_BYTES))
         data = np.load(path, allow_pickle=False)
         if not isinstance(data, np.lib.npyio.NpzFile):
             raise ModelFileError(f"{path}: not an .npz archive of arrays")
@@ -134,30 +145,6 @@ def read_arrays(path: Path, sha256: str | None = None) -> dict[str, np.ndarray]:
     except (ValueError, OSError, EOFError, zipfile.BadZipFile, KeyError) as exc:
         raise ModelFileError(f"{path}: not a readable .npz of numeric arrays ({exc})") from None
     return out
-
-
-def _check_npz_headers(path: Path) -> None:
-    """Read every array's header (dtype, shape) from the archive before any data is loaded.
-
-    Refuses object arrays (a pickle inside) and more than :data:`MAX_ARRAY_BYTES` in all,
-    so a small compressed file cannot make the loader allocate gigabytes.
-    """
-    total = 0
-    with zipfile.ZipFile(path) as archive:
-        for name in archive.namelist():
-            if not name.endswith(".npy"):
-                raise ModelFileError(f"{path}: member {name!r} is not an array")
-            with archive.open(name) as member:
-                version = np.lib.format.read_magic(member)
-                if version == (1, 0):
-                    shape, _, dtype = np.lib.format.read_array_header_1_0(member)
-                else:
-                    shape, _, dtype = np.lib.format.read_array_header_2_0(member)
-            if dtype.kind not in "biuf" or dtype.hasobject:
-                raise ModelFileError(f"{path}: array {name[:-4]!r} has dtype {dtype}; only numbers are allowed")
-            total += int(np.prod(shape, dtype=np.float64)) * dtype.itemsize
-            if total > MAX_ARRAY_BYTES:
-                raise ModelFileError(f"{path}: more than {MAX_ARRAY_BYTES} bytes of arrays (a limit of the format)")
 
 
 def _json_error(path: Path, text: str, exc: json.JSONDecodeError) -> ModelFileError:
@@ -276,7 +263,8 @@ def load_model_file(path: str | Path, *, what: str = "--model", seat: str | None
         raise ModelFileError(
             f"{header_path}: field 'sha256': expected the 64 hex digits of the weights file's sha256, got {sha!r}"
         )
-    arrays = read_arrays(weights_file(header_path, header), sha)
+    budget = (sb3_budget(header) if header["kind"] == "sb3" else None) or MAX_ARRAY_BYTES
+    arrays = read_arrays(weights_file(header_path, header), sha, expected_shapes(header), budget)
     for key, value in arrays.items():
         if value.dtype.kind == "f" and not np.isfinite(value).all():
             raise ModelFileError(
@@ -672,8 +660,9 @@ def load_replay_buffer(buffer: Any, header_path: Path, entry: Any) -> None:
     if not isinstance(entry, dict):
         raise ModelFileError(f"{header_path}: field 'replay_buffer' must be an object")
     path = weights_file(header_path, entry)
-    arrays = read_arrays(path, entry.get("sha256") if isinstance(entry.get("sha256"), str) else None)
     expected = _buffer_arrays(buffer)
+    shapes = {key: tuple(target.shape) for key, target in expected.items()}
+    arrays = read_arrays(path, entry.get("sha256") if isinstance(entry.get("sha256"), str) else None, shapes)
     if set(arrays) != set(expected):
         raise ModelFileError(f"{path}: arrays {sorted(arrays)} differ from the buffer's {sorted(expected)}")
     for key, target in expected.items():

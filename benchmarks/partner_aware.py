@@ -1,7 +1,7 @@
 """Partner-aware robots beside the same robots with the fixed cooperative model.
 
 10 seeds, 1100 simulated s, paper2015; prints tasks solved per robot and the paired
-difference with its 95% bootstrap CI (the README's partner-aware table):
+difference with its 95% bootstrap CI (the partner-aware table of docs/results.md):
 ``python benchmarks/partner_aware.py``.
 """
 

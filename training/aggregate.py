@@ -13,9 +13,10 @@ The point estimates are rliable's metrics. The intervals follow rliable's method
 (stratified bootstrap over runs, percentile intervals) with the resampling vectorised
 (:func:`stratified_bootstrap`): rliable's ``get_interval_estimates`` calls the statistic
 once per replication, and its probability of improvement runs scipy's Mann-Whitney U per
-task per replication (about 4 ms), which made 243 s of a 311 s one-seed cross-play
-study; vectorised, the whole aggregate takes well under a second
-(tests/training/test_aggregate.py checks the intervals against rliable's).
+task per replication, which made most of a one-seed cross-play study's wall time;
+vectorised, the aggregate is a small share of it (``benchmarks/study_aggregation.py``
+measures both; the figures are in docs/benchmarks.md).
+tests/training/test_aggregate.py checks the intervals against rliable's.
 
 Intervals need seeds: with one seed every resample is the data itself (a zero-width
 interval that says nothing), so none is computed; with fewer than

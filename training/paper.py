@@ -133,7 +133,7 @@ def mean_amplitude(logs: list[pd.DataFrame]) -> np.ndarray:
 def crossing(curve: np.ndarray, threshold: float = AMPLITUDE_RISE) -> int | None:
     """First decision at which ``curve`` reaches ``threshold`` (None: never).
 
-    Applied to :func:`mean_amplitude`, the number ``summary.json`` and the README cite
+    Applied to :func:`mean_amplitude`, the number ``summary.json`` and docs/results.md cite
     is where Fig. 5's drawn mean curve crosses its dotted line.
     """
     above = np.flatnonzero(curve >= threshold)

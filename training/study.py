@@ -44,8 +44,9 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from hg_marl.core.errors import HgMarlError, StudyError, check_finite, check_int, where
+from hg_marl.core.errors import HgMarlError, StudyError, check_digits, check_finite, check_int, where
 from hg_marl.core.spec import REQUIRED, convert, format_spec, parse_spec
+from hg_marl.training.limits import MAX_SEED_VALUE, MAX_SEEDS, check_count, check_runs
 
 ORACLE = "oracle"
 """Robot name of the oracle's optimal policy (plays only against stationary humans)."""
@@ -292,13 +293,19 @@ def load_study(path: str | Path) -> Study:
     """Read and validate a study file.
 
     Raises:
-        StudyError: an unreadable file or a bad field (``path:line: field: problem``).
+        StudyError: an unreadable file or a bad field (``path:line: field: problem``), a
+            count over its limit (:mod:`hg_marl.training.limits`), or a duration no run
+            could finish within :data:`~hg_marl.training.runner.MAX_CYCLES` cycles.
     """
+    from hg_marl.core.scenario import load_scenario
+    from hg_marl.training.runner import check_cycles
+
     path = Path(path)
     try:
         text = path.read_text()
     except (OSError, UnicodeDecodeError) as exc:
         raise StudyError(f"{path}: cannot read the study file ({exc.__class__.__name__})") from None
+    check_digits(text, str(path), StudyError, lines=True)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -324,11 +331,14 @@ def load_study(path: str | Path) -> Study:
         duration = check_finite(data.get("duration", 1100.0), "duration", positive=True, error=StudyError)
         seeds_field = data.get("seeds", 10)
         if isinstance(seeds_field, list):
-            seeds = tuple(check_int(s, "seeds", minimum=0, error=StudyError) for s in seeds_field)
+            check_count(len(seeds_field), "seeds", MAX_SEEDS, minimum=0, error=StudyError)
+            seeds = tuple(
+                check_int(s, "seeds", minimum=0, maximum=MAX_SEED_VALUE, error=StudyError) for s in seeds_field
+            )
             if len(set(seeds)) != len(seeds) or not seeds:
                 raise StudyError("seeds: expected distinct seeds, at least one")
-        else:
-            seeds = tuple(range(check_int(seeds_field, "seeds", minimum=1, error=StudyError)))
+        else:  # the count is checked before the range becomes a tuple
+            seeds = tuple(range(check_count(seeds_field, "seeds", MAX_SEEDS, error=StudyError)))
         max_states = check_int(
             data.get("oracle_max_states", DEFAULT_ORACLE_MAX_STATES), "oracle_max_states", minimum=1, error=StudyError
         )
@@ -342,6 +352,11 @@ def load_study(path: str | Path) -> Study:
     if not isinstance(scenarios_field, list) or not scenarios_field:
         raise src.error("scenarios: expected a non-empty list", "scenarios")
     scenarios = tuple(_scenario(s, i, src) for i, s in enumerate(scenarios_field))
+    for scenario in scenarios:  # a duration no run could finish is refused here, not once the runs start
+        try:
+            check_cycles(duration, load_scenario(scenario).durations.shortest, "duration")
+        except HgMarlError as exc:
+            raise src.error(f"{exc} ({scenario})", "duration") from None
     robots = _actors(data, "robots", src)
     if not robots:
         raise src.error("robots: expected at least one robot", "robots")
@@ -366,6 +381,10 @@ def load_study(path: str | Path) -> Study:
     both = set(groups["train"]) & set(groups["test"])
     if both:
         raise src.error(f"test: {', '.join(sorted(both))} also in train (held-out partners must be new)", "test")
+    try:
+        check_runs(len(robots) * len(humans) * len(scenarios) * len(seeds), "robots x humans x scenarios x seeds")
+    except HgMarlError as exc:
+        raise src.error(str(exc), "seeds") from None
     labels = [a.label for a, _ in robots]
     if len(set(labels)) != len(labels):
         raise src.error("robots: two robots with the same label (give them distinct labels)", "robots")

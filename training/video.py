@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import importlib.util
 import logging
-import os
 from pathlib import Path
 from typing import Any
 
@@ -21,6 +20,8 @@ from hg_marl.core import Agent, World
 from hg_marl.core.errors import ConfigError
 from hg_marl.envs.render import caption_of, render_rgb
 from hg_marl.policy import Actor, Turn
+from hg_marl.training.io import atomic_write
+from hg_marl.training.outputs import check_output
 
 log = logging.getLogger(__name__)
 
@@ -30,15 +31,15 @@ MAX_FRAMES = 3000
 
 
 def check_video_path(path: Path) -> Path:
-    """Refuse an unknown extension, or MP4 without ffmpeg, before a run starts.
+    """Refuse an unknown extension, MP4 without ffmpeg, or a place it cannot be written, before a run starts.
 
     Raises:
         ConfigError: one line naming ``--video`` and what to do.
     """
-    suffix = path.suffix.lower()
-    if suffix not in FORMATS:
+    if path.suffix.lower() not in FORMATS:
         raise ConfigError(f"--video {path}: expected a .gif or .mp4 file name")
-    if suffix == ".mp4" and importlib.util.find_spec("imageio_ffmpeg") is None:
+    check_output(path, "--video")
+    if path.suffix.lower() == ".mp4" and importlib.util.find_spec("imageio_ffmpeg") is None:
         raise ConfigError(f"--video {path}: MP4 needs ffmpeg: pip install 'hg-marl[video]' (or write a .gif)")
     return path
 
@@ -94,14 +95,12 @@ def write_video(frames: list[np.ndarray], path: str | Path, fps: float = 2.0) ->
         raise ConfigError(f"--video {out}: the run produced no frames")
     if len(frames) >= MAX_FRAMES:
         log.warning("video: kept the first %d frames only; shorten the run for the rest", MAX_FRAMES)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = out.with_name(f".{out.stem}.tmp{out.suffix}")
     stack = np.stack(frames)
-    if out.suffix.lower() == ".gif":
-        iio.imwrite(tmp, stack, extension=".gif", duration=1000.0 / fps, loop=0)
-    else:
-        iio.imwrite(tmp, stack, extension=".mp4", plugin="FFMPEG", fps=fps, macro_block_size=1)
-    with tmp.open("rb") as fh:
-        os.fsync(fh.fileno())
-    tmp.replace(out)
-    return out
+
+    def write(tmp: Path) -> None:
+        if out.suffix.lower() == ".gif":
+            iio.imwrite(tmp, stack, extension=".gif", duration=1000.0 / fps, loop=0)
+        else:
+            iio.imwrite(tmp, stack, extension=".mp4", plugin="FFMPEG", fps=fps, macro_block_size=1)
+
+    return atomic_write(out, write)

@@ -41,7 +41,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from hg_marl.core.errors import HgMarlError, PopulationError, where
+from hg_marl.core.errors import HgMarlError, PopulationError, check_digits, where
 from hg_marl.core.scenario import _line_of
 
 SPLITS = ("train", "validation", "held_out")
@@ -159,6 +159,7 @@ def _read(path: Path) -> tuple[str, dict[str, Any]]:
         text = path.read_bytes().decode("utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise PopulationError(f"{path}: cannot read the population file ({exc.__class__.__name__})") from None
+    check_digits(text, str(path), PopulationError, lines=True)
     try:
         return text, tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

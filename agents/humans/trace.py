@@ -96,6 +96,9 @@ def _check_step(record: dict[str, Any], header: dict[str, Any], at: str) -> None
         raise ModelFileError(
             f"{at}: field 'action_name' {record['action_name']!r} is not action {action} ({names[action]!r})"
         )
+    # Optional in the file (the index is what counts); filled from the header here, so
+    # every reader of a step (replay, evaluate, the replay partner) finds it.
+    record.setdefault("action_name", names[action])
     for key, size in (("facts", n_facts), ("mask", len(names))):
         values = record.get(key)
         if not isinstance(values, list) or len(values) != size or not all(_is_int(v) and v in (0, 1) for v in values):

@@ -28,7 +28,7 @@ import numpy as np
 
 DEFAULT_MIN_VISITS = 5
 """Default ``min_visits`` of the learned criteria (entropy, entropy_and_cost, vpi,
-learning_state): the best measured setting (README, Results)."""
+learning_state): the best measured setting (docs/results.md)."""
 
 PLANNER_EPSILON = 0.01
 """Probability the planner's distribution puts on each non-planned action (docs/task.md, section 4)."""

@@ -4,9 +4,10 @@ The paper's experiments last a fixed *simulated* duration, so a runner may charg
 robot decision to the clock. Measured wall time depends on the machine and its load, so
 results would not reproduce; the default is a model:
 
-- habit: a constant ``habit`` seconds (one matvec, a softmax and a draw: ~20 us here,
-  ~0.15 ms for the whole ``act`` with its TD step; charged at 1 ms, the order an
-  implementation in the robot's supervision loop would cost);
+- habit: a constant ``habit`` seconds (one matvec, a softmax and a draw, far below a
+  millisecond in Python: ``benchmarks/decision_latency.py`` measures it, the figures are
+  in docs/benchmarks.md; charged at 1 ms, the order an implementation in the robot's
+  supervision loop would cost, whatever the machine running the simulation);
 - planner: ``planner_base + planner_per_node * nodes`` seconds. The base stands for a
   HATP call's fixed overhead (state serialisation, domain set-up, plan extraction),
   the per-node term for its search. With 50 ms + 0.5 ms/node a plan of a few hundred

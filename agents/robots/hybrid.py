@@ -33,7 +33,7 @@ from hg_marl.policy import Turn
 class HybridRobot(LearningRobot):
     """Planner + Q-learner + MetaController.
 
-    The defaults are the best measured settings (README, Results): the ``entropy_and_cost``
+    The defaults are the best measured settings (docs/results.md): the ``entropy_and_cost``
     criterion, which spares the planner once the habit is sure, over a *tabular* habit,
     which is sure only where it has learnt, learning on canonical states
     (``share_objects``: what it learns about one tape holds for its interchangeable

@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import errno
 import math
+import re
+import sys
 from typing import Any
 
 
@@ -151,3 +153,30 @@ def check_bool(value: Any, what: str, error: type[HgMarlError] = ConfigError) ->
     if not isinstance(value, bool):
         raise error(f"{what}: expected true or false, got {value!r}")
     return value
+
+
+MAX_DIGITS = sys.get_int_max_str_digits() or 4300
+"""Longest run of digits a file or option may hold: Python refuses to convert a longer
+integer (its own message names an interpreter setting, not the field)."""
+
+_LONG_NUMBER = re.compile(rf"\d[\d_]{{{MAX_DIGITS},}}")
+
+
+def check_digits(text: str, what: str, error: type[HgMarlError] = ConfigError, *, lines: bool = False) -> None:
+    """Refuse ``text`` if it holds a number of more than :data:`MAX_DIGITS` digits.
+
+    Checked on the raw text before a parser (TOML, JSON, YAML) meets the number, so the
+    message names the option or ``file:line`` instead of Python's digit limit.
+
+    Args:
+        text: the raw text of an option value or a whole file.
+        what: the option or the file's path.
+        error: the caller's error type.
+        lines: ``what`` is a file: name the line (``path:line``) of the number.
+    """
+    found = _LONG_NUMBER.search(text)
+    if found is None:
+        return
+    at = f"{what}:{text.count(chr(10), 0, found.start()) + 1}" if lines else what
+    digits = sum(c.isdigit() for c in found.group())
+    raise error(f"{at}: a number of {digits:,} digits, over the limit of {MAX_DIGITS:,} digits")

@@ -37,7 +37,7 @@ from typing import Any
 import numpy as np
 
 from hg_marl.core.durations import Durations
-from hg_marl.core.errors import HgMarlError, ScenarioError, SpecError, check_int, check_probability, where
+from hg_marl.core.errors import HgMarlError, ScenarioError, SpecError, check_digits, check_int, check_probability, where
 from hg_marl.core.spec import bind, parse_spec, signature_defaults
 
 
@@ -217,6 +217,7 @@ def load_scenario(spec: str | Path | Scenario, *, strict: bool = False) -> Scena
         raise ScenarioError(
             f"scenario file {path}: not UTF-8 text (byte {exc.start}); TOML files must be UTF-8, re-save it as UTF-8"
         ) from None
+    check_digits(raw, f"scenario file {path}", ScenarioError, lines=True)
     try:
         data = tomllib.loads(raw)
     except tomllib.TOMLDecodeError as exc:

@@ -21,7 +21,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from hg_marl.core.errors import HgMarlError, SpecError
+from hg_marl.core.errors import HgMarlError, SpecError, check_digits
 
 REQUIRED: Any = None
 """Default marking a parameter with no default (e.g. a file path)."""
@@ -73,6 +73,23 @@ def _split_top_level(text: str) -> list[str]:
             start = i + 1
     parts.append(text[start:])
     return parts
+
+
+def split_specs(text: str) -> list[str]:
+    """A comma list of specs: ``a,b:k=1,j=2,c`` -> ``[a, b:k=1,j=2, c]``.
+
+    A piece ``k=v`` without a name continues the spec before it (command-line lists of
+    humans or robots, ``--humans`` and ``--robots``).
+    """
+    out: list[str] = []
+    for piece in (p.strip() for p in text.split(",")):
+        if not piece:
+            continue
+        if out and "=" in piece and ":" not in piece and ":" in out[-1]:
+            out[-1] += "," + piece
+        else:
+            out.append(piece)
+    return out
 
 
 def parse_spec(text: str | Spec, what: str = "spec") -> Spec:
@@ -174,6 +191,7 @@ def convert(value: Any, default: Any, what: str, *, from_text: bool) -> Any:
             raise SpecError(f"{what}: takes a Python object, not a value in a spec")
         return value
     if from_text:
+        check_digits(value, what, SpecError)
         value = _literal(value)
         if isinstance(value, str) and value.lstrip()[:1] in ("{", "["):
             raise SpecError(f"{what}: not valid JSON: {text}")
@@ -302,33 +320,3 @@ def bind(
         except SpecError as exc:
             raise error(str(exc)) from None
     return out
-
-
-def construct(
-    text: str | Spec,
-    classes: Mapping[str, Any],
-    params: Mapping[str, Any],
-    *,
-    kind: str,
-    error: type[HgMarlError],
-) -> Any:
-    """Build ``classes[name](**bound parameters)`` from a spec plus keyword overrides.
-
-    The one way registries of classes (robots, criteria) turn ``"hybrid:criterion=vpi"``
-    into an object: parameters are typed by the constructor's defaults (:func:`bind`),
-    and a ValueError/TypeError of the constructor becomes ``error`` naming the thing.
-    """
-    try:
-        spec = parse_spec(text, kind)
-    except SpecError as exc:
-        raise error(str(exc)) from None
-    cls = classes.get(spec.name)
-    if cls is None:
-        raise error(f"unknown {kind} {spec.name!r}; available: {', '.join(classes)}")
-    kwargs = bind(spec, signature_defaults(cls), params, what=f"{kind} {spec.name!r}", error=error)
-    try:
-        return cls(**kwargs)
-    except HgMarlError:
-        raise
-    except (TypeError, ValueError) as exc:
-        raise error(f"{kind} {spec.name!r}: {exc}") from None

@@ -59,12 +59,14 @@ from gymnasium import spaces
 from pettingzoo import AECEnv
 from pettingzoo.utils import wrappers
 
-from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Kind, Scenario, State, World
+from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Scenario, State, World
+from hg_marl.core.cycle import Half, Halves, close, truncated
 from hg_marl.core.errors import ConfigError, check_bool, check_finite, check_int
 from hg_marl.envs.render import HUMAN_MESSAGE, caption_of, render_ansi, render_rgb
 from hg_marl.policy import Turn
 
-_RESET_EVENT = Event("reset", "table", "", "new layout")
+_NO_HALF = Half(State((), -1), True, 0.0, 0.0, (), 0.0, False)
+"""Stands for a half not yet played (the clock of a cycle is closed only after both)."""
 _AGENT_OF = {name: Agent(i) for i, name in enumerate(AGENT_NAMES)}
 EVENT_SEPARATOR = "; "
 """Joins the sentences of ``infos[agent]["events"]`` (split on it to get them back)."""
@@ -141,7 +143,7 @@ class raw_env(AECEnv):
             )
             for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)
         }
-        self._is_wait = [[a.kind is Kind.WAIT for a in self.world.actions(ag)] for ag in Agent]
+        self._half = Halves(self.world).play
         self.events_tuple = bool(events_tuple)
         self._event_text: dict[tuple[Event, ...], str | tuple[str, ...]] = {}
         self._rng = np.random.default_rng()
@@ -187,7 +189,7 @@ class raw_env(AECEnv):
         self.tasks_solved = 0
         self._effort = [0.0, 0.0]
         self._idle = [0.0, 0.0]
-        self._cycle_durations = [0.0, 0.0]
+        self._halves: list[Half] = [_NO_HALF, _NO_HALF]
         self._charged = 0.0
         self._done_this_cycle = False
         self._last_actions = [-1, -1]
@@ -223,21 +225,17 @@ class raw_env(AECEnv):
         agent = _AGENT_OF[name]
         if type(action) is not int or not 0 <= action < self._n_actions[agent]:
             action = self._check_action(agent, action)
-        out = self.world.step(self.world_state, agent, action)
+        out = self._half(self.world_state, agent, action, self._rng if self.continuing else None)
         self.world_state = out.state
-        self._cycle_durations[agent] = out.duration
+        self._halves[agent] = out
         self._last_actions[agent] = action
-        if out.ok and not self._is_wait[agent][action]:
-            self._effort[agent] += out.duration
+        self._effort[agent] += out.effort
         events = out.events
         reward = out.reward
         if reward:
             self.tasks_solved += 1
             self.rewards = dict.fromkeys(self.agents, reward)
-            if self.continuing:
-                self.world_state = self.world.initial_state(self._rng)
-                events = (*events, _RESET_EVENT)
-            else:
+            if not self.continuing:
                 self._done_this_cycle = True
         else:
             self.rewards = dict.fromkeys(self.agents, 0.0)
@@ -255,19 +253,16 @@ class raw_env(AECEnv):
             self.agent_selection = "human"
 
     def _end_cycle(self) -> None:
-        durations = self._cycle_durations
-        length = max(durations) + self._charged
-        last, is_wait, idle = self._last_actions, self._is_wait, self._idle
-        for a in (0, 1):
-            waited = last[a] >= 0 and is_wait[a][last[a]]
-            idle[a] += length if waited else length - durations[a]
-        self.clock = clock = self.clock + length
+        robot, human = self._halves
+        time = close(robot, human, self._charged)
+        idle = self._idle
+        idle[0] += time.idle[0]
+        idle[1] += time.idle[1]
+        self.clock = clock = self.clock + time.length
         self.cycles += 1
-        self._cycle_durations = [0.0, 0.0]
+        self._halves = [_NO_HALF, _NO_HALF]
         self._charged = 0.0
-        truncate = (self.max_cycles is not None and self.cycles >= self.max_cycles) or (
-            self.time_budget is not None and clock >= self.time_budget
-        )
+        truncate = truncated(self.cycles, clock, self.max_cycles, self.time_budget)
         done = self._done_this_cycle
         if done or truncate:
             for name in self.agents:

@@ -200,14 +200,16 @@ def test_the_readme_command_runs_as_written() -> None:
     import subprocess
     import sys
 
-    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
-    line = next(x for x in readme.splitlines() if x.startswith("hg-marl run --robot belief"))
+    from tests.docs_sections import section
+
+    page = section("hard-layouts.md")
+    line = next(x for x in page.splitlines() if x.startswith("hg-marl run --robot belief"))
     args = shlex.split(line)[1:]
     proc = subprocess.run(
         [sys.executable, "-c", "from hg_marl.training.cli import main; main()", *args],
         capture_output=True,
         text=True,
-        timeout=300,
+        timeout=600,
         cwd=Path(__file__).resolve().parents[2],
     )
     assert proc.returncode == 0, proc.stderr[-2000:]

@@ -249,8 +249,8 @@ def test_numpy_policy_round_trip_and_hash(tmp_path: Path) -> None:
 @pytest.mark.parametrize(
     ("arrays", "message"),
     [
-        ({"W": np.zeros((2, 2)), "b": np.zeros(2)}, "needs arrays W"),
-        ({"b": np.zeros(3)}, "needs arrays W"),
+        ({"W": np.zeros((2, 2)), "b": np.zeros(2)}, "'W' declares shape \\(2, 2\\)"),  # refused before reading
+        ({"b": np.zeros(3)}, "'b' declares shape \\(3,\\)"),
     ],
 )
 def test_numpy_policy_shapes_are_checked(tmp_path: Path, arrays: dict[str, np.ndarray], message: str) -> None:

@@ -1,5 +1,5 @@
 """Rules on a layout beyond paper2015: two coloured bins, several robot locations reaching
-one spot, a bin the human reaches. Expected outcomes come from the rules as the README
+one spot, a bin the human reaches. Expected outcomes come from the rules as docs/environment.md
 states them (goto moves to the first reaching location in scenario order and is
 infeasible when the target is already in reach; an object goes into the bin of its
 colour; give needs the robot at a handover location; success is a robot wait on a

@@ -117,3 +117,11 @@ def test_check_int_and_bool() -> None:
 
 def test_messages_are_one_line() -> None:
     assert str(HgMarlError("a\nb  c")) == "a b c"
+
+
+def test_split_specs_keeps_a_specs_parameters_together() -> None:
+    from hg_marl.core.spec import split_specs
+
+    assert split_specs("a,b:k=1,j=2,c") == ["a", "b:k=1,j=2", "c"]
+    assert split_specs(" lazy:p_idle=0.5 , ,cooperative") == ["lazy:p_idle=0.5", "cooperative"]
+    assert split_specs("") == []

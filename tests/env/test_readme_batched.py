@@ -1,4 +1,4 @@
-"""The README's "Batched training" section runs as written (its Python block)."""
+"""The "Batched training" page (``docs/batched.md``) runs as written: its Python block, its commands."""
 
 from __future__ import annotations
 
@@ -9,22 +9,16 @@ from pathlib import Path
 
 import pytest
 
-README = Path(__file__).resolve().parents[2] / "README.md"
+from tests.docs_sections import ROOT, blocks, section
 
-
-def section(title: str) -> str:
-    text = README.read_text()
-    start = text.index(f"## {title}\n")
-    return text[start : text.index("\n## ", start + 1)]
-
-
-BLOCKS = re.findall(r"```python\n(.*?)```", section("Batched training"), flags=re.S)
+PAGE = section("batched.md")
+BLOCKS = blocks(PAGE, "python")
 
 
 def test_the_batched_training_block_runs_and_prints_its_shapes(tmp_path: Path) -> None:
     assert len(BLOCKS) == 1
     out = subprocess.run(
-        [sys.executable, "-c", BLOCKS[0]], capture_output=True, text=True, timeout=300, cwd=tmp_path, check=False
+        [sys.executable, "-c", BLOCKS[0]], capture_output=True, text=True, timeout=600, cwd=tmp_path, check=False
     )
     assert out.returncode == 0, out.stderr
     words = out.stdout.split()
@@ -38,7 +32,7 @@ def test_the_train_rows_run_as_written_on_a_short_budget(tmp_path: Path) -> None
 
     from tests.cli_helpers import run_main
 
-    rows = re.findall(r"^\| `(hg-marl train --algo ppo_batched[^`]*)` \|", section("Batched training"), flags=re.M)
+    rows = re.findall(r"^\| `(hg-marl train --algo ppo_batched[^`]*)` \|", PAGE, flags=re.M)
     assert len(rows) == 2
     for k, row in enumerate(rows):
         argv = [a for a in shlex.split(row)[1:]]
@@ -58,9 +52,9 @@ def test_the_learned_partner_commands_run_as_written_on_a_short_budget(tmp_path:
 
     from tests.cli_helpers import run_main
 
-    blocks = re.findall(r"```bash\n(.*?)```", section("Batched training"), flags=re.S)
-    assert len(blocks) == 1
-    train, bench = [shlex.split(c.replace("/tmp/", f"{tmp_path}/")) for c in blocks[0].strip().splitlines()]
+    commands = blocks(PAGE, "bash")
+    assert len(commands) == 1
+    train, bench = [shlex.split(c.replace("/tmp/", f"{tmp_path}/")) for c in commands[0].strip().splitlines()]
     assert train[:2] == ["hg-marl", "train"] and bench[:2] == ["python", "benchmarks/batched_throughput.py"]
     code, _, err = run_main(train[1:])
     assert code == 0, err
@@ -69,8 +63,8 @@ def test_the_learned_partner_commands_run_as_written_on_a_short_budget(tmp_path:
         [sys.executable, *bench[1:], "--seconds", "0.2"],
         capture_output=True,
         text=True,
-        timeout=300,
-        cwd=README.parent,
+        timeout=600,
+        cwd=ROOT,
         check=False,
     )
     assert out.returncode == 0, out.stderr
@@ -80,13 +74,13 @@ def test_the_learned_partner_commands_run_as_written_on_a_short_budget(tmp_path:
 def test_the_human_seat_benchmark_line_runs_narrowed() -> None:
     import shlex
 
-    line = next(x for x in section("Batched training").splitlines() if "--human-seat" in x)
+    line = next(x for x in PAGE.splitlines() if "--human-seat" in x)
     argv = shlex.split(line.strip("`").split("`")[0])
     assert argv[:2] == ["python", "benchmarks/batched_throughput.py"]
     argv[argv.index("--num-envs") + 1] = "16"
     argv[argv.index("--seconds") + 1] = "0.2"
     out = subprocess.run(
-        [sys.executable, *argv[1:]], capture_output=True, text=True, timeout=300, cwd=README.parent, check=False
+        [sys.executable, *argv[1:]], capture_output=True, text=True, timeout=600, cwd=ROOT, check=False
     )
     assert out.returncode == 0, out.stderr
     assert "compiled" in out.stdout.lower(), out.stdout

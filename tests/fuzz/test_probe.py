@@ -5,10 +5,11 @@ its one error line must contain (the option or file field to fix). The rule chec
 every case: exit code 2, exactly one ``error:`` line, no traceback, and no file created
 anywhere under the working folder (bad input is refused before anything is written).
 Most cases run in-process (fast); :data:`SUBPROCESS` runs the worst ones as real processes
-under a 2 GiB address-space limit and a 10 s timeout. A larger hypothesis sweep over trace
+under a 2 GiB address-space limit (the memory bound is what is tested; a 600 s timeout
+only guards against a hang, so a loaded machine cannot fail the test). A larger hypothesis sweep over trace
 lines and scenario names is marked slow.
 
-Families (README "Bad input" states these counts): names, durations, traces, model
+Families (``docs/bad-input.md`` states these counts): names, durations, traces, model
 headers and weights, hyperparameters, output paths, workers and name lists, full disk.
 """
 
@@ -486,7 +487,7 @@ def test_a_forbidden_folder_is_one_line(tmp_path: Path, monkeypatch: pytest.Monk
     assert list(tmp_path.iterdir()) == []
 
 
-# ---- real processes: a 2 GiB address space, 10 s ------------------------------------------
+# ---- real processes: a 2 GiB address space (600 s: a hang guard only) ----------------------
 
 LIMIT_BYTES = 2 << 30
 
@@ -531,7 +532,7 @@ def test_worst_inputs_in_a_real_process_under_limits(game_lines: list[dict], cas
         [sys.executable, "-c", "from hg_marl.training.cli import main; main()", *args],
         capture_output=True,
         text=True,
-        timeout=10,
+        timeout=600,  # a hang guard only: the refusal takes seconds, but a loaded machine may be slow
         preexec_fn=_limit,
         cwd=tmp_path,
         env={**os.environ, "OMP_NUM_THREADS": "1"},
@@ -595,9 +596,11 @@ def test_sweep_any_name_loads_safely_or_is_refused(name: str, where: str) -> Non
     assert "/" not in scenario.name and not scenario.name.startswith(".")
 
 
-def test_case_counts_match_the_readme() -> None:
-    """The README states how many probe cases each family has; keep it honest."""
-    readme = (Path(__file__).parents[2] / "README.md").read_text()
+def test_case_counts_match_the_docs() -> None:
+    """The "Bad input" page states how many probe cases each family has; keep it honest."""
+    from tests.docs_sections import section
+
+    readme = section("bad-input.md")
     counts: dict[str, int] = {}
     for family, *_ in CASES:
         counts[family] = counts.get(family, 0) + 1

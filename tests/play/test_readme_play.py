@@ -1,8 +1,7 @@
-"""The README's "Play and watch" examples run: the Python block, then its shell commands."""
+"""The "Play and watch" page's examples (``docs/play.md``) run: the Python block, then its shell commands."""
 
 from __future__ import annotations
 
-import re
 import shlex
 import subprocess
 from pathlib import Path
@@ -10,24 +9,17 @@ from pathlib import Path
 import pytest
 
 from hg_marl.training.cli import main
-
-README = Path(__file__).resolve().parents[2] / "README.md"
-
-
-def section() -> str:
-    text = README.read_text()
-    start = text.index("## Play and watch")
-    return text[start : text.index("\n## ", start + 1)]
+from tests import docs_sections
 
 
 def blocks(kind: str) -> list[str]:
-    return re.findall(rf"```{kind}\n(.*?)```", section(), flags=re.S)
+    return docs_sections.blocks(docs_sections.section("play.md"), kind)
 
 
 def test_readme_play_examples_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.chdir(tmp_path)
     (python,) = blocks("python")
-    exec(compile(python, "README.md", "exec"), {})
+    exec(compile(python, "docs/play.md", "exec"), {})
     assert len(list((tmp_path / "runs/play").glob("*.jsonl"))) == 1
     interactive, batch = blocks("bash")
     assert all(line.startswith("hg-marl play") for line in interactive.strip().splitlines())

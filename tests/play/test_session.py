@@ -174,8 +174,8 @@ def test_play_command_in_the_terminal_and_bad_robot(tmp_path: Path, monkeypatch:
     [
         (["--port", "-1"], "--port -1: expected 0 (a free port) to 65535"),
         (["--port", "70000"], "--port 70000: expected 0 (a free port) to 65535"),
-        (["--record", "FILE"], "--record FILE: expected a directory for the traces, not a file"),
-        (["--tui", "--record", "FILE/sub"], "not a file (FILE is a file)"),
+        (["--record", "FILE"], "--record FILE: is a file; name a folder"),
+        (["--tui", "--record", "FILE/sub"], "--record FILE/sub: FILE is a file, not a folder"),
     ],
 )
 def test_play_bad_port_or_record_is_one_line(
@@ -213,7 +213,7 @@ def test_play_tui_takes_one_key_per_move_in_a_real_terminal(tmp_path: Path) -> N
     os.close(child_fd)
     seen = b""
 
-    def wait_for(text: bytes, timeout: float = 60.0) -> None:
+    def wait_for(text: bytes, timeout: float = 600.0) -> None:
         nonlocal seen
         end = time.monotonic() + timeout
         while text not in seen:
@@ -230,7 +230,7 @@ def test_play_tui_takes_one_key_per_move_in_a_real_terminal(tmp_path: Path) -> N
         wait_for(b"you:   pick(tape3)")
         os.write(main_fd, b"q")
         wait_for(b"trace saved")
-        assert proc.wait(timeout=30) == 0
+        assert proc.wait(timeout=600) == 0
     finally:
         if proc.poll() is None:
             proc.kill()

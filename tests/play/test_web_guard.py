@@ -44,7 +44,7 @@ class Client:
 
     def request(self, method: str, url: str, content: bytes = b"", headers: dict[str, str] | None = None) -> Answer:
         headers = {"host": f"127.0.0.1:{self.port}", **(headers or {})}
-        conn = http.client.HTTPConnection("127.0.0.1", self.port, timeout=10)
+        conn = http.client.HTTPConnection("127.0.0.1", self.port, timeout=600)
         try:
             conn.request(method, url, body=content if method == "POST" else None, headers=headers)
             r = conn.getresponse()
@@ -182,7 +182,7 @@ def test_quit_ends_the_game(client: Client, session: PlaySession) -> None:
 
 def _raw(port: int, request: bytes, stream: bytes = b"") -> tuple[int, int]:
     """Send ``request`` then up to 1 MiB of ``stream``; (status, bytes of the stream sent)."""
-    with socket.create_connection(("127.0.0.1", port), timeout=10) as sock:
+    with socket.create_connection(("127.0.0.1", port), timeout=600) as sock:
         sock.sendall(request)
         sent = 0
         sock.settimeout(0.05)

@@ -1,21 +1,17 @@
-"""The README's "Hard layouts, adaptation headroom and BR-Prox" section runs as written."""
+"""The "Hard layouts, adaptation headroom and BR-Prox" page (``docs/hard-layouts.md``) runs as written."""
 
 from __future__ import annotations
 
 import csv
-import re
 import shlex
 from pathlib import Path
 
 import pytest
 
 from tests.cli_helpers import run_main
+from tests.docs_sections import ROOT, blocks, section
 
-ROOT = Path(__file__).resolve().parents[2]
-TEXT = (ROOT / "README.md").read_text()
-SECTION = TEXT[TEXT.index("## Hard layouts, adaptation headroom and BR-Prox\n") :]
-SECTION = SECTION[: SECTION.index("\n## ", 1)]
-COMMANDS = [c for block in re.findall(r"```bash\n(.*?)```", SECTION, flags=re.S) for c in block.splitlines()]
+COMMANDS = [c for block in blocks(section("hard-layouts.md"), "bash") for c in block.splitlines()]
 
 
 def test_the_section_has_its_examples() -> None:
@@ -39,7 +35,7 @@ def test_headroom_example_runs(command: str, tmp_path: Path, monkeypatch: pytest
 def test_adaptation_study_example_runs_narrowed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.chdir(ROOT)
     command = next(c for c in COMMANDS if " evaluate " in c)
-    # one hard layout, one seed, two robots: the whole study is measured in the README, not here
+    # one hard layout, one seed, two robots: the whole study is measured on the page, not here
     narrow = ["--seeds", "1", "--robots", "planner,oracle", "--scenarios", "forced_coordination"]
     args = [*shlex.split(command.replace("results/", f"{tmp_path}/"))[1:], *narrow]
     code, _, err = run_main([*args, "--workers", "1"])
@@ -58,7 +54,7 @@ LEARNED = [c for c in COMMANDS if "adaptation_learned" in c]
 
 
 def test_learned_example_trains_where_its_study_reads_the_model() -> None:
-    # the study names the model by a path read from the repository root; the README's
+    # the study names the model by a path read from the repository root; the page's
     # train command must write exactly there, or the evaluate command fails to load it
     import tomllib
 
@@ -88,7 +84,7 @@ def test_learned_example_runs_narrowed(tmp_path: Path, monkeypatch: pytest.Monke
         for c in LEARNED[:2]
     )
     assert train[train.index("--scenario") + 1] == "forced_coordination"
-    # a tiny budget: the run must work end to end, not learn (the README measures that)
+    # a tiny budget: the run must work end to end, not learn (the page measures that)
     narrow_train = ["--steps", "2048", "--hp", "num_envs=64", "--hp", "eval_envs=4", "--no-tensorboard"]
     code, _, err = run_main([*train, *narrow_train])
     assert code == 0, err
@@ -116,7 +112,7 @@ def test_switching_example_runs_narrowed(tmp_path: Path, monkeypatch: pytest.Mon
     monkeypatch.chdir(ROOT)
     command = next(c for c in COMMANDS if " switching " in c)
     args = shlex.split(command.replace("results/", f"{tmp_path}/"))[1:]
-    # the README's robots and pairs, one seed, two periods, a short run
+    # the page's robots and pairs, one seed, two periods, a short run
     args[args.index("--periods") + 1] = "20,120"
     code, out, err = run_main([*args, "--seeds", "1", "--duration", "240"])
     assert code == 0, err

@@ -1,8 +1,7 @@
-"""The README's "Partner populations" section runs as written: its commands, its study file and its Python block."""
+"""The "Partner populations" page (``docs/populations.md``) runs as written: commands, study file, Python block."""
 
 from __future__ import annotations
 
-import re
 import shlex
 import subprocess
 import sys
@@ -11,17 +10,11 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
-README = Path(__file__).resolve().parents[2] / "README.md"
-
-
-def section(title: str) -> str:
-    text = README.read_text()
-    start = text.index(f"## {title}\n")
-    return text[start : text.index("\n## ", start + 1)]
+from tests import docs_sections
 
 
 def blocks(kind: str) -> list[str]:
-    return re.findall(rf"```{kind}\n(.*?)```", section("Partner populations"), flags=re.S)
+    return docs_sections.blocks(docs_sections.section("populations.md"), kind)
 
 
 def run(argv: list[str], cwd: Path) -> subprocess.CompletedProcess[str]:

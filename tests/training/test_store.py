@@ -179,7 +179,7 @@ def test_two_concurrent_sweeps_share_the_work(tmp_path: Path) -> None:
         subprocess.Popen([sys.executable, "-c", SWEEP, str(tmp_path)], stdout=subprocess.PIPE, text=True, env=env)
         for _ in range(2)
     ]
-    outs = [json.loads(p.communicate(timeout=300)[0]) for p in procs]
+    outs = [json.loads(p.communicate(timeout=600)[0]) for p in procs]
     assert all(p.returncode == 0 for p in procs)
     assert sum(o["ran"] for o in outs) == 8  # each job ran exactly once
     assert all(o["ran"] + o["reused"] == 8 for o in outs)

@@ -23,7 +23,7 @@ from typing import Any
 import yaml
 
 from hg_marl.agents.sb3_limits import check_kwargs
-from hg_marl.core.errors import ConfigError, ModelFileError, check_int
+from hg_marl.core.errors import ConfigError, ModelFileError, check_digits, check_int
 
 ALGOS: Mapping[str, str] = {"ppo": "PPO", "a2c": "A2C", "dqn": "DQN", "maskable_ppo": "MaskablePPO"}
 """Command-line algorithm names and their SB3 / sb3-contrib class names."""
@@ -84,6 +84,7 @@ def parse_override(item: str) -> tuple[list[str], Any]:
     key, sep, value = item.partition("=")
     if not sep or not key.strip():
         raise HyperparamError(f"hyperparameter override {item!r}: expected key=value")
+    check_digits(value, f"hyperparameter override {key.strip()}", HyperparamError)
     try:
         parsed = yaml.safe_load(value) if value.strip() else None
     except yaml.YAMLError as exc:
@@ -179,6 +180,7 @@ def _read_yaml(source: Path) -> Any:
         raise HyperparamError(f"{source}: not UTF-8 text") from None
     except OSError as exc:
         raise HyperparamError(f"{source}: cannot read ({exc.strerror})") from None
+    check_digits(text, str(source), HyperparamError, lines=True)
     try:
         return yaml.safe_load(text) or {}
     except yaml.YAMLError as exc:

@@ -14,6 +14,7 @@ from typing import Any, TypeVar
 
 from hg_marl.core.errors import ConfigError, HgMarlError, check_finite, check_int
 from hg_marl.core.spec import Spec, collect_params, parse_spec
+from hg_marl.training.outputs import check_output
 
 T = TypeVar("T")
 
@@ -43,47 +44,34 @@ def spec_with(text: str, items: Iterable[str] | None, option: str, params_option
     return Spec(spec.name, {**spec.raw, **extra})
 
 
-def check_duration(value: float, option: str = "--duration") -> float:
-    """A simulated duration: finite, positive, at most :data:`MAX_DURATION`."""
-    return check_finite(value, option, positive=True, maximum=MAX_DURATION)
+def check_duration(value: float, option: str = "--duration", scenario: str | None = None) -> float:
+    """A simulated duration: finite, positive, at most :data:`MAX_DURATION`.
 
+    With ``scenario``, also within :data:`~hg_marl.training.runner.MAX_CYCLES` cycles of
+    its shortest action, so a sweep is refused before it claims its first run.
+    """
+    duration = check_finite(value, option, positive=True, maximum=MAX_DURATION)
+    if scenario is not None:
+        from hg_marl.core.scenario import load_scenario
+        from hg_marl.training.runner import check_cycles
 
-def _writable_ancestor(path: Path, option: str) -> None:
-    """The nearest existing ancestor of ``path`` is a folder this process may write in."""
-    parent = path
-    while not parent.exists() and parent != parent.parent:
-        parent = parent.parent
-    if not parent.is_dir():
-        raise ConfigError(f"{option} {path}: {parent} is a file, not a folder")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        raise ConfigError(f"{option} {path}: folder {parent} is not writable")
+        check_cycles(duration, load_scenario(scenario).durations.shortest, option)
+    return duration
 
 
 def check_out_file(path: Path | None, option: str, suffixes: tuple[str, ...] = ()) -> Path | None:
-    """An output file whose folder exists and is writable, which is not a folder, with one of ``suffixes``.
+    """An output file (None: not asked for), checked by :func:`~hg_marl.training.outputs.check_output`.
 
     Checked before any work is done, so a typo does not cost a run.
     """
     if path is None:
         return None
-    if suffixes and path.suffix.lower() not in suffixes:
-        raise ConfigError(f"{option} {path}: expected a file name ending in {' or '.join(suffixes)}")
-    if path.is_dir():
-        raise ConfigError(f"{option} {path}: is a folder; name a file")
-    if not path.parent.is_dir():
-        raise ConfigError(f"{option} {path}: folder {path.parent} does not exist")
-    _writable_ancestor(path.parent, option)
-    if path.exists() and not os.access(path, os.W_OK):
-        raise ConfigError(f"{option} {path}: file is not writable")
-    return path
+    return check_output(path, option, suffixes=suffixes)
 
 
 def check_out_dir(path: Path, option: str) -> Path:
-    """An output folder: existing, or creatable under a writable folder; never an existing file."""
-    if path.exists() and not path.is_dir():
-        raise ConfigError(f"{option} {path}: is a file; name a folder")
-    _writable_ancestor(path, option)
-    return path
+    """An output folder, checked by :func:`~hg_marl.training.outputs.check_output` (created later if missing)."""
+    return check_output(path, option, folder=True)
 
 
 MAX_WORKERS = max(64, 4 * (os.cpu_count() or 1))

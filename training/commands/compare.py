@@ -49,11 +49,23 @@ def register(app: typer.Typer) -> None:
         out: Annotated[Path, typer.Option(help="Output directory (resumable).")] = DEFAULT_OUT,
     ) -> None:
         """Train each algorithm against each human, evaluate on the runner's protocol, report vs the oracle."""
+        from hg_marl.agents.humans import make_human
+        from hg_marl.core.errors import ConfigError, HgMarlError
+        from hg_marl.core.scenario import load_scenario
         from hg_marl.training.baselines.compare import compare
         from hg_marl.training.baselines.comparison import format_aggregate, format_table
         from hg_marl.training.baselines.hyperparams import check_algo
+        from hg_marl.training.limits import MAX_SEEDS, check_count
 
         check_out_dir(out, "--out")
+        check_count(seeds, "--seeds", MAX_SEEDS)
+        check_count(eval_seeds, "--eval-seeds", MAX_SEEDS)
+        load_scenario(scenario)
+        for human in name_list(humans, "--humans"):  # every name, before a store or a claim exists
+            try:
+                make_human(human)
+            except HgMarlError as exc:
+                raise ConfigError(f"--humans: {exc}") from None
         names = checked(lambda: tuple(a if a == "ppo_batched" else check_algo(a) for a in name_list(algos, "--algos")))
         config = CompareConfig(
             algos=names,

@@ -25,6 +25,9 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """Convert a Stable-Baselines3 zip you trust into a model file (JSON header + .npz weights)."""
         from hg_marl.training.baselines.convert import convert_zip
+        from hg_marl.training.commands.common import check_out_file
+
+        check_out_file(out if out is not None else path.with_suffix(".json"), "--out", (".json",))
 
         header = convert_zip(
             path, trust=trust, out=out, algo=algo, scenario=scenario, seat=seat, observation=observation

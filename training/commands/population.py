@@ -56,21 +56,22 @@ def register(app: typer.Typer) -> None:
         from hg_marl.core.errors import ConfigError, check_int
         from hg_marl.core.scenario import load_scenario
         from hg_marl.training.backends import make_backend
-        from hg_marl.training.commands.common import check_duration, check_out_file
+        from hg_marl.training.commands.common import check_duration, check_out_dir, check_out_file
+        from hg_marl.training.limits import MAX_MEMBERS, check_count
         from hg_marl.training.population_gen import GeneratorConfig, generate, jobs_for, render, write
         from hg_marl.training.store import Store
 
-        check_out_file(out, "--out")
-        if out.suffix != ".toml":
-            raise ConfigError(f"--out {out}: expected a .toml file")
+        check_out_file(out, "--out", (".toml",))
+        if store is not None:
+            check_out_dir(store, "--store")
         load_scenario(scenario)
         check_int(seed, "--seed", minimum=0)
-        check_int(candidates, "--candidates", minimum=2, maximum=1000)
-        check_int(seeds, "--seeds", minimum=1, maximum=100)
-        sizes = {
-            "train": check_int(train, "--train", minimum=0),
-            "validation": check_int(validation, "--validation", minimum=0),
-            "held_out": check_int(held_out, "--held-out", minimum=0),
+        check_count(candidates, "--candidates", MAX_MEMBERS, minimum=2)
+        check_count(seeds, "--seeds", 100)
+        sizes = {  # each split on its own, so the option over the limit is the one named
+            "train": check_count(train, "--train", MAX_MEMBERS, minimum=0),
+            "validation": check_count(validation, "--validation", MAX_MEMBERS, minimum=0),
+            "held_out": check_count(held_out, "--held-out", MAX_MEMBERS, minimum=0),
         }
         if not any(sizes.values()):
             raise ConfigError("--held-out, --train, --validation: at least one member")
@@ -82,7 +83,7 @@ def register(app: typer.Typer) -> None:
             candidates=candidates,
             sizes=sizes,
             robots=_robots(robots),
-            duration=check_duration(duration),
+            duration=check_duration(duration, scenario=scenario),
             seeds=seeds,
         )
         from hg_marl.agents.robots import make_robot

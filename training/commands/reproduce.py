@@ -33,14 +33,17 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """Planner alone, habit alone, random mix (+ further criteria): Fig. 3-5, summary.json, table."""
         from hg_marl.training import paper
+        from hg_marl.training.limits import MAX_SEEDS, check_count
         from hg_marl.training.reproduce import ReproduceConfig, reproduce
 
         check_out_dir(out, "--out")
         check_workers(workers)
+        check_count(seeds, "--seeds", MAX_SEEDS)
+        check_count(adaptation_seeds, "--adaptation-seeds", MAX_SEEDS)
         config = ReproduceConfig(
             out=out,
             seeds=seeds,
-            duration=paper.DEFAULT_DURATION if duration is None else check_duration(duration),
+            duration=check_duration(paper.DEFAULT_DURATION if duration is None else duration, scenario=scenario),
             scenario=scenario,
             paper_only=paper_only,
             adaptation=adaptation,

@@ -13,6 +13,15 @@ from hg_marl.training.commands.common import check_duration, check_out_file, che
 from hg_marl.training.runner import RunConfig, check_cycles
 
 
+def robot_label(robot: object, spec: str) -> str:
+    """What the summary calls the robot: a hybrid with the criterion it was built with, else its spec."""
+    from hg_marl.agents.robots.hybrid import HybridRobot
+
+    if isinstance(robot, HybridRobot) and "criterion=" not in spec:
+        return f"{spec}({robot.meta.criterion.name})"
+    return spec
+
+
 def register(app: typer.Typer) -> None:
     """Add the ``run`` subcommand."""
 
@@ -22,8 +31,9 @@ def register(app: typer.Typer) -> None:
             str, typer.Option(help="Robot agent, with parameters if any: hybrid:criterion=vpi (see --list).")
         ] = "hybrid",
         criterion: Annotated[
-            str, typer.Option(help="MetaController criterion (hybrid robot only), e.g. vpi:tau=0.1.")
-        ] = "entropy_and_cost",
+            str | None,
+            typer.Option(help="MetaController criterion (hybrid robot only; default entropy_and_cost), e.g. vpi."),
+        ] = None,
         human: Annotated[str, typer.Option(help="Human partner (see `hg-marl run --list`).")] = "cooperative",
         scenario: Annotated[
             str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml path.")
@@ -60,7 +70,11 @@ def register(app: typer.Typer) -> None:
         check_out_file(out, "--out")
         robot_spec = spec_with(robot, robot_param, "--robot", "--robot-param")
         robot_kwargs: dict[str, object] = {}
-        if robot_spec.name == "hybrid" and "criterion" not in robot_spec.raw:
+        if criterion is not None:  # given: it must take effect, never be dropped silently
+            if robot_spec.name != "hybrid":
+                raise ConfigError(f"--criterion {criterion}: only for --robot hybrid, not {robot_spec.name}")
+            if "criterion" in robot_spec.raw:
+                raise ConfigError("--criterion and --robot/--robot-param both set criterion")
             robot_kwargs["criterion"] = criterion
         if model is not None:
             if robot_spec.name != "sb3":
@@ -84,7 +98,7 @@ def register(app: typer.Typer) -> None:
 
             result = checked(lambda: run(recorder or the_robot, the_human, config, on_decision=progress))
         s = result.summary
-        label = f"{robot}({criterion})" if robot == "hybrid" else robot
+        label = robot_label(the_robot, robot)
         typer.echo(f"robot {label} with human {human} on {scenario}, seed {seed}, {duration:.0f} simulated s")
         typer.echo(f"  tasks solved     {s['tasks_solved']}")
         typer.echo(f"  robot actions    {s['actions']} ({s['failed_actions']} failed)")

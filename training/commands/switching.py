@@ -35,11 +35,11 @@ def register(app: typer.Typer) -> None:
 
         from hg_marl.agents.humans.population import load_population
         from hg_marl.core.errors import ConfigError
-        from hg_marl.core.scenario import load_scenario
+        from hg_marl.core.spec import split_specs
         from hg_marl.training import plots
         from hg_marl.training.commands.common import check_duration, check_out_dir, check_workers, counting_bar
-        from hg_marl.training.commands.headroom import split_specs
         from hg_marl.training.io import atomic_write
+        from hg_marl.training.limits import MAX_SEEDS, check_count
         from hg_marl.training.switching import (
             SwitchingConfig,
             check_config,
@@ -50,8 +50,8 @@ def register(app: typer.Typer) -> None:
 
         check_out_dir(out, "--out")
         check_workers(workers)
-        check_duration(duration)
-        load_scenario(scenario)
+        check_count(seeds, "--seeds", MAX_SEEDS)
+        check_duration(duration, scenario=scenario)
         pop = load_population(population)
         names = {m.name: str(m.spec) for m in pop.members()}
         chosen: list[tuple[str, str]] = []

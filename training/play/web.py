@@ -23,7 +23,8 @@ an ASGI middleware in front of every route, refuses with 403 unless
   ``text/plain`` "simple" request, sent by a browser without a preflight, is 415).
 
 Bodies are limited to :data:`MAX_BODY` bytes: a larger ``Content-Length`` is 413 before
-any byte is read, and a streamed body is cut at the limit (413). A body that is not JSON,
+any byte is read, and a streamed body is cut at the limit (413) or after its time (408).
+Idle and slow connections are closed, and their number capped (:mod:`.server_limits`). A body that is not JSON,
 or nested deeper than the parser's recursion limit, is 400. Every answer carries
 ``Content-Security-Policy: frame-ancestors 'none'`` (no framing: no clickjacking) and
 ``Referrer-Policy: no-referrer`` (the token never leaks in a Referer).
@@ -50,6 +51,7 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 from hg_marl.core import Agent
 from hg_marl.core.errors import ConfigError, HgMarlError
 from hg_marl.training.play import explain
+from hg_marl.training.play.server_limits import ServerLimits, read_body, replay_body
 from hg_marl.training.play.session import PlaySession
 from hg_marl.training.play.svg import table_svg
 
@@ -76,10 +78,12 @@ class Guard:
         app: the wrapped app.
         token: the session's secret.
         port: the port served (the Host and Origin checks include it).
+        body_timeout: seconds a POST body may take to arrive (then 408).
     """
 
-    def __init__(self, app: ASGIApp, token: str, port: int) -> None:
+    def __init__(self, app: ASGIApp, token: str, port: int, body_timeout: float = ServerLimits.body_timeout) -> None:
         self.app = app
+        self.body_timeout = body_timeout
         self.token = token
         self.hosts = frozenset({f"127.0.0.1:{port}", f"localhost:{port}"})
         self.origins = frozenset(f"http://{h}" for h in self.hosts)
@@ -127,8 +131,8 @@ class Guard:
 
         refused = self.refusal(scope)
         if refused is None and scope["method"] == "POST":
-            body, refused = await _read_bounded(receive)
-            receive = _replay(body, receive)
+            body, refused = await read_body(receive, MAX_BODY, self.body_timeout)
+            receive = replay_body(body, receive)
         if refused is not None:
             status, text = refused
             await PlainTextResponse(text, status_code=status)(scope, receive, send_secured)
@@ -142,37 +146,6 @@ def _cookie(header: str, name: str) -> str:
         if key == name:
             return value
     return ""
-
-
-async def _read_bounded(receive: Receive) -> tuple[bytes, tuple[int, str] | None]:
-    """The request body, stopping (413) as soon as it passes :data:`MAX_BODY`."""
-    chunks: list[bytes] = []
-    size = 0
-    while True:
-        message = await receive()
-        if message["type"] != "http.request":
-            return b"", (400, "the client went away")
-        chunk = message.get("body", b"")
-        size += len(chunk)
-        if size > MAX_BODY:
-            return b"", (413, f"body larger than {MAX_BODY} bytes")
-        chunks.append(chunk)
-        if not message.get("more_body", False):
-            return b"".join(chunks), None
-
-
-def _replay(body: bytes, receive: Receive) -> Receive:
-    """A ``receive`` that hands the already read body over once, then defers to ``receive``."""
-    sent = False
-
-    async def replayed() -> Message:
-        nonlocal sent
-        if sent:
-            return await receive()
-        sent = True
-        return {"type": "http.request", "body": body, "more_body": False}
-
-    return replayed
 
 
 async def json_body(request: Request) -> Any:
@@ -327,10 +300,16 @@ def finish_html(session: PlaySession) -> str:
     )
 
 
-def create_app(session: PlaySession, token: str, port: int, on_quit: Callable[[], None] | None = None) -> ASGIApp:
+def create_app(
+    session: PlaySession,
+    token: str,
+    port: int,
+    on_quit: Callable[[], None] | None = None,
+    limits: ServerLimits = ServerLimits(),  # noqa: B008 (frozen)
+) -> ASGIApp:
     """The guarded ASGI app over ``session``, served on ``port`` with secret ``token``.
 
-    ``on_quit`` is called after ``POST /quit``.
+    ``on_quit`` is called after ``POST /quit``; ``limits.body_timeout`` bounds a body's arrival.
     """
     lock = threading.Lock()
 
@@ -375,7 +354,7 @@ def create_app(session: PlaySession, token: str, port: int, on_quit: Callable[[]
             Route("/quit", quit_, methods=["POST"]),
         ]
     )
-    return Guard(app, token, port)
+    return Guard(app, token, port, limits.body_timeout)
 
 
 def check_port(port: int) -> None:
@@ -411,9 +390,10 @@ class Server:
     Args:
         session: the game.
         port: the port (0: a free one).
+        limits: idle, header and body timeouts and the connection cap (:mod:`.server_limits`).
     """
 
-    def __init__(self, session: PlaySession, port: int = 0) -> None:
+    def __init__(self, session: PlaySession, port: int = 0, limits: ServerLimits = ServerLimits()) -> None:  # noqa: B008
         import uvicorn
 
         self.socket = bind_socket(port)
@@ -421,8 +401,10 @@ class Server:
         self.token = secrets.token_urlsafe(24)
         self.url = f"http://127.0.0.1:{self.port}/?token={self.token}"
         """The page's address, carrying the session's token (print it, open it)."""
-        app = create_app(session, self.token, self.port, on_quit=self.stop)
-        self.server = uvicorn.Server(uvicorn.Config(app, log_level="warning", lifespan="off"))
+        app = create_app(session, self.token, self.port, on_quit=self.stop, limits=limits)
+        self.server = uvicorn.Server(
+            uvicorn.Config(app, log_level="warning", lifespan="off", **limits.uvicorn_options())
+        )
 
     def stop(self) -> None:
         """Ask the server to exit after the current request."""
