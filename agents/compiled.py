@@ -51,7 +51,14 @@ MAX_KEYS = 5_000_000
 
 _KEY_LIMIT = 2**62
 OUTCOME_FIELDS = ("where", "robot_at", "offer_by", "offer_obj", "ok", "duration", "facts", "mask")
-_SOURCES = ("hg_marl/core", "agents/humans", "agents/planner", "agents/compiled.py", "agents/oracle.py")
+_SOURCES = (
+    "hg_marl/core",
+    "agents/humans",
+    "agents/planner",
+    "agents/models",
+    "agents/compiled.py",
+    "agents/oracle.py",
+)
 
 
 class CompileError(HumanError):
