@@ -29,8 +29,11 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from types import FrameType
 
-DEFAULT_SECONDS = 60.0
-"""The default wall-time budget (seconds) of one exact build and solve."""
+DEFAULT_SECONDS: float | None = None
+"""The library's default wall-time budget: none, so that what a study, a robot or a report
+computes (and stores) never depends on how loaded the machine was. The commands take an
+explicit ``--max-seconds`` (a person waiting at a terminal), and the states and memory
+budgets bound every build."""
 DEFAULT_MEMORY = 4 * 2**30
 """The default resident memory budget (bytes) of the process during a solve."""
 DEFAULT_STATES = 1_500_000
