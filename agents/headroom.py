@@ -58,6 +58,7 @@ from hg_marl.agents.oracle import (
     layout_distribution,
 )
 from hg_marl.core import Agent, Scenario, State, World
+from hg_marl.core.cycle import cycle_length
 from hg_marl.core.scenario import layout_count
 
 TIE = 1e-6
@@ -122,7 +123,7 @@ class JointModel:
                 for h, p in human.distribution(world, state, seen):
                     if p > 0.0:
                         nxt, _, d = table.successor(state, Agent.HUMAN, h)
-                        dyn.regen.append((self._id(nxt), q * p, max(world.durations.wait, d)))
+                        dyn.regen.append((self._id(nxt), q * p, cycle_length(world.durations.wait, d)))
         for state, _ in layouts:
             self._id(state)
         self._explore(progress)
@@ -150,7 +151,6 @@ class JointModel:
 
     def _explore(self, progress: bool) -> None:
         table = self.world.table
-        wait = table.wait[Agent.ROBOT]
         bar = tqdm(
             desc=f"headroom {self.world.scenario.name}: states",
             unit=" states",
@@ -170,7 +170,7 @@ class JointModel:
                     pair = len(self.pair_action)
                     self.pair_action.append(a)
                     mid, ok, d_robot = table.successor(state, Agent.ROBOT, a)
-                    terminal = ok and a == wait and table.is_clean(state.where)
+                    terminal = ok and table.solves(state, Agent.ROBOT, a)
                     self.pair_terminal.append(terminal)
                     if terminal:
                         continue
@@ -182,7 +182,7 @@ class JointModel:
                                 dyn.t_pair.append(pair)
                                 dyn.t_next.append(self._id(nxt))
                                 dyn.t_prob.append(p)
-                                dyn.t_tau.append(max(d_robot, d_human))
+                                dyn.t_tau.append(cycle_length(d_robot, d_human))
                 k += 1
             bar.update(k - bar.n)
         finally:

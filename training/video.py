@@ -98,9 +98,18 @@ def write_video(frames: list[np.ndarray], path: str | Path, fps: float = 2.0) ->
     stack = np.stack(frames)
 
     def write(tmp: Path) -> None:
-        if out.suffix.lower() == ".gif":
-            iio.imwrite(tmp, stack, extension=".gif", duration=1000.0 / fps, loop=0)
-        else:
-            iio.imwrite(tmp, stack, extension=".mp4", plugin="FFMPEG", fps=fps, macro_block_size=1)
+        # ffmpeg picks its muxer from the file name, so the frames go to a sibling that keeps
+        # the output's suffix, which then becomes the atomic write's temporary file
+        named = tmp.with_name(tmp.name + out.suffix.lower())
+        try:
+            if out.suffix.lower() == ".gif":
+                iio.imwrite(named, stack, extension=".gif", duration=1000.0 / fps, loop=0)
+            else:
+                iio.imwrite(named, stack, extension=".mp4", plugin="FFMPEG", fps=fps, macro_block_size=1)
+            if not named.exists() or named.stat().st_size == 0:
+                raise ConfigError(f"--video {out}: the encoder wrote nothing")
+            named.replace(tmp)
+        finally:
+            named.unlink(missing_ok=True)
 
     return atomic_write(out, write)

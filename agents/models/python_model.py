@@ -18,6 +18,7 @@ from tqdm import tqdm
 from hg_marl.agents.models.budget import Budget, OverBudget
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.core import Agent, State, World
+from hg_marl.core.cycle import cycle_length
 
 
 class _Model:
@@ -90,7 +91,7 @@ class _Model:
         for h, p in self.human.distribution(self.world, mid, seen):
             if p > 0.0:
                 nxt, _, duration = self.world.table.successor(mid, Agent.HUMAN, h)
-                out.append((nxt, p, max(d_robot, duration)))
+                out.append((nxt, p, cycle_length(d_robot, duration)))
         return out
 
     def _answer_ids(self, mid: State, robot_action: int) -> list[tuple[int, float, float]]:
@@ -132,7 +133,6 @@ class _Model:
     def _explore(self, bar: tqdm) -> None:
         """Breadth-first over robot-turn states; the bar shows states explored and known."""
         table = self.world.table
-        wait = table.wait[Agent.ROBOT]
         k = 0
         while k < len(self.states):
             # a state may cost planner searches: the clock is read at every one
@@ -146,7 +146,7 @@ class _Model:
                 pair = len(self.pair_action)
                 self.pair_action.append(a)
                 mid, ok, duration = table.successor(state, Agent.ROBOT, a)
-                terminal = ok and a == wait and table.is_clean(state.where)  # the completing wait
+                terminal = ok and table.solves(state, Agent.ROBOT, a)  # the completing wait
                 self.pair_terminal.append(terminal)
                 if terminal:
                     continue

@@ -164,15 +164,11 @@ def test_the_batched_twin_agrees_with_the_scalar_rules(d: st.DataObject) -> None
 
 
 # ---- no stray copy of the clock rule or the reward rule -----------------------------------
-KNOWN_COPIES = {
-    "agents/oracle.py",  # the robot-turn models (being moved to their own package)
-    "agents/headroom.py",  # the exact headroom's model (same)
-}
+KNOWN_COPIES: set[str] = set()
 """Modules that still restate a cycle's length; each should call ``hg_marl.core.cycle``."""
 
 KNOWN_REWARD_COPIES = {
     "agents/oracle.py",
-    "agents/headroom.py",
     "agents/compiled.py",
     "agents/compiled_robot.py",
     "agents/robots/belief.py",
