@@ -46,12 +46,16 @@ from typing import NamedTuple
 from hg_marl.agents.planner.costs import CostWeights
 from hg_marl.agents.planner.domain import Domain
 from hg_marl.agents.planner.models import HumanModel
+from hg_marl.agents.planner.relabel import Relabel as Relabel
+from hg_marl.agents.planner.steps import Steps, Successor
 from hg_marl.core import Agent, Kind, State, World
 
 LAMBDAS: tuple[float, ...] = (0.0, 0.25, 0.5, 0.75, 1.0)
-"""Mixing weights of robot and human work tried by the bound."""
+"""Mixing weights of robot and human work tried by the bound (five: the edges unroll them)."""
 
 _CACHE_LIMIT = 500_000
+_new = tuple.__new__
+"""Builds the edges' ``NamedTuple`` s without their Python-level ``__new__`` (same values)."""
 
 Entry = tuple[Kind, int, object, int]
 """A tabulated candidate: (kind, action index, symmetry signature or None, PLACE spot or -1)."""
@@ -156,6 +160,9 @@ class Space:
             for at in range(self.n_locs)
         )
         self._next = self._tabulate_next()
+        self.steps = Steps(table)
+        """The rule table's transitions decoded per action index (the inner loop's)."""
+        self._cr = tuple(c for c, _ in self.coefs)
         acts = table.actions
         self.robot_gives = frozenset(i for i, a in enumerate(acts[0]) if a.kind is Kind.GIVE)
         """Robot give indices (an unanswered give is not robot activity, see ``robot_active``)."""
@@ -249,17 +256,23 @@ class Space:
         """
         out = self._robot_edges.get(state)
         if out is None:
-            apply, key_of, base = self.table.successor_feasible, self.key, self.base
-            cr = [c for c, _ in self.coefs]
-            edges = []
-            for ar in self.candidates(state, Agent.ROBOT):
-                s1, d_r = apply(state, Agent.ROBOT, ar)
-                key = key_of(s1)
-                sm = self.cached_sums(s1, key)
-                if sm is not None:
-                    h = base + max(v + c * d_r for v, c in zip(sm, cr, strict=True))
-                    edges.append(RobotEdge(ar, s1, d_r, key, h))
-            out = tuple(edges)
+            base = self.base
+            c0, c1, c2, c3, c4 = self._cr
+            out = tuple(
+                [
+                    _new(
+                        RobotEdge,
+                        (
+                            ar,
+                            s1,
+                            d_r,
+                            key,
+                            base + max(v0 + c0 * d_r, v1 + c1 * d_r, v2 + c2 * d_r, v3 + c3 * d_r, v4 + c4 * d_r),
+                        ),
+                    )
+                    for ar, s1, d_r, key, (v0, v1, v2, v3, v4) in self._successors(state, 0, self.candidates(state, 0))
+                ]
+            )
             if len(self._robot_edges) > _CACHE_LIMIT:
                 self._robot_edges.clear()
             self._robot_edges[state] = out
@@ -269,25 +282,25 @@ class Space:
         """The replies the human model allows at mid-cycle ``state`` applied (dead ends left out), memoised."""
         out = self._human_edges.get(state)
         if out is None:
-            apply, key_of, base = self.table.successor_feasible, self.key, self.base
+            base = self.base
             hand_h = self.table.hand[Agent.HUMAN]
             wait_h = self.wait[Agent.HUMAN]
-            edges = []
-            for ah in self.allowed(state):
-                s2, d_h = apply(state, Agent.HUMAN, ah)
-                key = key_of(s2)
-                sm = self.cached_sums(s2, key)
-                if sm is not None:
-                    edges.append(
-                        HumanEdge(
-                            ah, s2, d_h, ah in self.human_takes, ah != wait_h, hand_h in s2.where, key, base + max(sm)
-                        )
-                    )
-            out = tuple(edges)
+            takes = self.human_takes
+            out = tuple(
+                [
+                    _new(HumanEdge, (ah, s2, d_h, ah in takes, ah != wait_h, hand_h in s2.where, key, base + max(sm)))
+                    for ah, s2, d_h, key, sm in self._successors(state, 1, self.allowed(state))
+                ]
+            )
             if len(self._human_edges) > _CACHE_LIMIT:
                 self._human_edges.clear()
             self._human_edges[state] = out
         return out
+
+    def _successors(self, state: State, agent: int, actions: tuple[int, ...]) -> list[Successor]:
+        """``actions`` applied with their canonical keys and sums (:meth:`.Steps.successors`)."""
+        codes = self._codes if self.symmetric else None
+        return self.steps.successors(state, agent, actions, self.key, self.cached_sums, codes, self._sums)
 
     def allowed(self, state: State) -> tuple[int, ...]:
         """The human replies a deterministic model allows at ``state`` (its candidates, filtered)."""
@@ -438,44 +451,3 @@ class Space:
         out.sort()
         out.append(self.wait[agent])
         return tuple(out)
-
-
-class Relabel:
-    """Interchangeable objects (accepted by the same bins) put in a canonical order.
-
-    Two states that differ only by which of two interchangeable objects is where have
-    the same optimal plans up to that relabelling, so a planner may answer for the
-    canonical state and map the actions back: on ``roboergosum`` the 5,040 layouts are
-    140 canonical ones. The canonical state sorts each class's objects by place code.
-    """
-
-    def __init__(self, world: World) -> None:
-        self.table = world.table
-        groups: dict[tuple[int, ...], list[int]] = {}
-        for o, bins in enumerate(world.bins_of):
-            groups.setdefault(bins, []).append(o)
-        self.classes = tuple(tuple(g) for g in groups.values() if len(g) > 1)
-        self.active = bool(self.classes)
-        """False when no two objects are interchangeable (states are already canonical)."""
-
-    def canonical(self, state: State) -> tuple[State, tuple[int, ...]]:
-        """The canonical state and, per object of it, the object of ``state`` it stands for."""
-        where = state.where
-        orig = list(range(len(where)))
-        for members in self.classes:
-            for slot, o in zip(members, sorted(members, key=where.__getitem__), strict=True):
-                orig[slot] = o
-        new_where = tuple(where[o] for o in orig)
-        offer_obj = orig.index(state.offer_obj) if state.offer_obj >= 0 else -1
-        return State(new_where, state.robot_at, state.offer_by, offer_obj), tuple(orig)
-
-    def action_back(self, agent: int, index: int, orig: tuple[int, ...]) -> int:
-        """The action of the original labelling that ``index`` (canonical labelling) stands for."""
-        if index < 0:
-            return index
-        kind, obj, target, _ = self.table.specs[agent][index]
-        if obj >= 0:
-            obj = orig[obj]
-        elif kind is Kind.GOTO and target < len(orig):
-            target = orig[target]
-        return self.table.action_index(agent, kind, obj, target)
