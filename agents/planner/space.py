@@ -40,11 +40,12 @@ from __future__ import annotations
 
 import math
 from math import fsum
-from operator import getitem
+from operator import getitem, sub
 from typing import NamedTuple
 
 from hg_marl.agents.planner.costs import CostWeights
 from hg_marl.agents.planner.domain import Domain
+from hg_marl.agents.planner.exactsum import ExactSums
 from hg_marl.agents.planner.models import HumanModel
 from hg_marl.agents.planner.relabel import Relabel as Relabel
 from hg_marl.agents.planner.steps import Steps, Successor
@@ -150,6 +151,8 @@ class Space:
         self.offer_tables = self._offer_tables()
         """``tables`` for states where the robot is offering: the offered object may also go
         back to the robot's hand (the human lets the offer lapse)."""
+        self._exact = ExactSums(self.tables, self.offer_tables, world.n_objects)
+        """The same sums as ``fsum`` over :attr:`tables`, by integer addition."""
         self.empty_move_coef = tuple(cr * world.durations.goto for cr, _ in self.coefs)
         """What one saved empty-handed move is worth in the bound, per ``LAMBDAS[k]``."""
         self.saves_at = tuple(
@@ -159,6 +162,10 @@ class Space:
             )
             for at in range(self.n_locs)
         )
+        self._saves_places = tuple(
+            (handover, frozenset(p for p, ok in enumerate(spots) if ok)) for handover, spots in self.saves_at
+        )
+        """:attr:`saves_at` with the spots as a set of place codes (spots come first)."""
         self._next = self._tabulate_next()
         self.steps = Steps(table)
         """The rule table's transitions decoded per action index (the inner loop's)."""
@@ -326,15 +333,19 @@ class Space:
         statuses = list(where)
         if state.offer_obj >= 0:
             statuses[state.offer_obj] = d.human_offer if state.offer_by == 1 else d.robot_offer
-        tabs = self.tables if state.offer_by != 0 else self.offer_tables
-        vals = [fsum(map(getitem, tab[at], statuses)) for tab in tabs]  # exactly rounded: order-free
-        if math.inf in vals:
-            return None
+        if self._exact.packed is not None:  # ``fsum``'s value by one integer sum
+            vals = self._exact.sums(state.offer_by == 0, at, statuses)
+            if vals is None:
+                return None
+        else:
+            tabs = self.tables if state.offer_by != 0 else self.offer_tables
+            vals = [fsum(map(getitem, tab[at], statuses)) for tab in tabs]  # exactly rounded: order-free
+            if math.inf in vals:
+                return None
         if d.robot_hand not in where:
-            handover, spots = self.saves_at[at]
-            n_spots = d.n_spots
-            if handover or any(p < n_spots and spots[p] for p in where):
-                return tuple(v - e for v, e in zip(vals, self.empty_move_coef, strict=True))
+            handover, spots = self._saves_places[at]
+            if handover or not spots.isdisjoint(where):
+                return tuple(map(sub, vals, self.empty_move_coef))
         return tuple(vals)
 
     def bound(self, state: State, key: object = None) -> float:
