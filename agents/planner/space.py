@@ -49,6 +49,7 @@ from hg_marl.agents.planner.exactsum import ExactSums
 from hg_marl.agents.planner.models import HumanModel
 from hg_marl.agents.planner.relabel import Relabel as Relabel
 from hg_marl.agents.planner.steps import Steps, Successor
+from hg_marl.agents.planner.tables import candidate_entries, next_kinds
 from hg_marl.core import Agent, Kind, State, World
 
 LAMBDAS: tuple[float, ...] = (0.0, 0.25, 0.5, 0.75, 1.0)
@@ -57,9 +58,6 @@ LAMBDAS: tuple[float, ...] = (0.0, 0.25, 0.5, 0.75, 1.0)
 _CACHE_LIMIT = 500_000
 _new = tuple.__new__
 """Builds the edges' ``NamedTuple`` s without their Python-level ``__new__`` (same values)."""
-
-Entry = tuple[Kind, int, object, int]
-"""A tabulated candidate: (kind, action index, symmetry signature or None, PLACE spot or -1)."""
 
 
 _SPACES = "_planner_spaces"
@@ -166,7 +164,7 @@ class Space:
             (handover, frozenset(p for p, ok in enumerate(spots) if ok)) for handover, spots in self.saves_at
         )
         """:attr:`saves_at` with the spots as a set of place codes (spots come first)."""
-        self._next = self._tabulate_next()
+        self._next = next_kinds(self)
         self.steps = Steps(table)
         """The rule table's transitions decoded per action index (the inner loop's)."""
         self._cr = tuple(c for c, _ in self.coefs)
@@ -176,7 +174,13 @@ class Space:
         self.human_takes = frozenset(i for i, a in enumerate(acts[1]) if a.kind is Kind.TAKE)
         # spots worth placing on: the robot can pick from them (other human moves are not steps of any method)
         self.place_spots = tuple(sp for sp, locs in enumerate(domain.spot_locs) if locs and domain.spot_human[sp])
-        self._entries = self._tabulate_candidates()
+        self._entries = candidate_entries(self)
+        self._goto = table.action_index(0, Kind.GOTO, target=0)
+        self._goto_static = tuple(
+            tuple((self._goto + world.n_objects + k, dest) for k, dest in enumerate(row) if dest >= 0)
+            for row in table.goto_static
+        )
+        """Per robot location, the gotos to bins and the human that lead somewhere: (index, destination)."""
         self._cand: tuple[dict[State, tuple[int, ...]], dict[State, tuple[int, ...]]] = ({}, {})
         self._bound: dict[object, float] = {}
         self._sums: dict[object, tuple[float, ...] | None] = {}
@@ -218,24 +222,6 @@ class Space:
                     rows.append(row)
                 per_k.append(rows)
             out.append(per_k)
-        return out
-
-    def _tabulate_next(self) -> tuple[list[list[list[tuple[Kind, ...]]]], ...]:
-        """``next[agent][robot_at][o][status]``: kinds that are a next step of an applicable method."""
-        d = self.domain
-        out: tuple[list[list[list[tuple[Kind, ...]]]], ...] = ([], [])
-        for agent in Agent:
-            for at in range(self.n_locs):
-                per_o = []
-                for o in range(d.n_objects):
-                    rows = []
-                    for st in range(d.n_status):
-                        kinds: set[Kind] = set()
-                        for _, w in d.works(o, st, at):
-                            kinds |= w.robot_next if agent is Agent.ROBOT else w.human_next
-                        rows.append(tuple(sorted(kinds)))
-                    per_o.append(rows)
-                out[agent].append(per_o)
         return out
 
     def statuses(self, state: State) -> list[int]:
@@ -370,41 +356,6 @@ class Space:
         return (tuple(sorted(map(getitem, self._codes, state.where))), state.robot_at, state.offer_by)
 
     # ---- candidates --------------------------------------------------------------
-    def _tabulate_candidates(self) -> tuple[list[list[list[tuple[Entry, ...]]]], ...]:
-        """``entries[agent][robot_at][o][status]``: candidate actions whose reach holds there."""
-        world, d, table = self.world, self.domain, self.table
-        n_spots = world.n_spots
-        out: tuple[list[list[list[tuple[Entry, ...]]]], ...] = ([], [])
-        for agent in Agent:
-            for at in range(self.n_locs):
-                per_o = []
-                for o in range(world.n_objects):
-                    per_st = []
-                    for st in range(d.n_status):
-                        entries: list[Entry] = []
-                        for kind in self._next[agent][at][o][st]:
-                            if kind is Kind.PLACE:
-                                for spot in self.place_spots:
-                                    i = table.action_index(agent, kind, o, spot)
-                                    entries.append((kind, i, (kind, self.spot_class[spot]), spot))
-                                continue
-                            i = table.action_index(agent, kind, o)
-                            if kind is Kind.PICK:
-                                if st < n_spots and table.reach[agent][at][st]:
-                                    entries.append((kind, i, (kind, self.spot_class[st], self.object_class[o]), -1))
-                            elif kind is Kind.THROW:
-                                if table.throw_to[agent][at][o] >= 0:
-                                    entries.append((kind, i, None, -1))
-                            elif kind is Kind.GIVE:
-                                if table.give_ok[at]:
-                                    entries.append((kind, i, None, -1))
-                            elif kind is Kind.TAKE:
-                                entries.append((kind, i, None, -1))
-                        per_st.append(tuple(entries))
-                    per_o.append(per_st)
-                out[agent].append(per_o)
-        return out
-
     def candidates(self, state: State, agent: int) -> tuple[int, ...]:
         """Relevant, symmetry-reduced feasible actions of ``agent`` in ``state`` (``wait`` last)."""
         cache = self._cand[agent]
@@ -418,8 +369,7 @@ class Space:
 
     def _candidates(self, state: State, agent: int) -> tuple[int, ...]:
         where, at, by, obj = state
-        table = self.table
-        hand = table.hand[agent]
+        hand = self.table.hand[agent]
         statuses = list(where)
         if obj >= 0:
             d = self.domain
@@ -427,18 +377,19 @@ class Space:
         empty = hand not in where
         partner_offer = by >= 0 and by != agent
         rows = self._entries[agent][at]
+        pick, take, place = Kind.PICK, Kind.TAKE, Kind.PLACE
         seen: set[object] = set()
         out: list[int] = []
         for o, st in enumerate(statuses):
             for kind, i, sig, spot in rows[o][st]:
-                if kind is Kind.PICK:
+                if kind is pick:
                     if not empty or sig in seen:
                         continue
                     seen.add(sig)
-                elif kind is Kind.TAKE:
+                elif kind is take:
                     if not (partner_offer and obj == o and empty):
                         continue
-                elif kind is Kind.PLACE:
+                elif kind is place:
                     if where[o] != hand or sig in seen or spot in where:
                         continue
                     seen.add(sig)
@@ -446,19 +397,18 @@ class Space:
                     continue
                 out.append(i)
         if agent == 0:
-            n = table.n_objects
-            goto = table.action_index(0, Kind.GOTO, target=0)
+            goto = self._goto
             dests: set[int] = set()
-            per_place = table.goto_obj[at]
+            per_place = self.table.goto_obj[at]
             for t, p in enumerate(where):
                 dest = per_place[p]
                 if dest >= 0 and dest not in dests:
                     dests.add(dest)
                     out.append(goto + t)
-            for k, dest in enumerate(table.goto_static[at]):
-                if dest >= 0 and dest not in dests:
+            for i, dest in self._goto_static[at]:
+                if dest not in dests:
                     dests.add(dest)
-                    out.append(goto + n + k)
+                    out.append(i)
         out.sort()
         out.append(self.wait[agent])
         return tuple(out)
