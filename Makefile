@@ -78,6 +78,7 @@ test-ray: $(RAY_VENV)/bin/.installed
 lint: setup
 	$(BIN)/ruff check .
 	$(BIN)/mypy
+	$(BIN)/python .ci/lint_layers.py
 
 # The documentation site (mkdocs.yml): strict, so a page missing from the nav, a broken
 # link or anchor fails the build. CI runs it as its own stage, after `make test`.

@@ -51,7 +51,14 @@ MAX_KEYS = 5_000_000
 
 _KEY_LIMIT = 2**62
 OUTCOME_FIELDS = ("where", "robot_at", "offer_by", "offer_obj", "ok", "duration", "facts", "mask")
-_SOURCES = ("hg_marl/core", "agents/humans", "agents/planner", "agents/compiled.py", "agents/oracle.py")
+_SOURCES = (
+    "hg_marl/core",
+    "agents/humans",
+    "agents/planner",
+    "agents/models",
+    "agents/compiled.py",
+    "agents/oracle.py",
+)
 
 
 class CompileError(HumanError):
@@ -403,7 +410,7 @@ def compile_human(
 
 def save_table(path: Path, key: str, arrays: dict[str, np.ndarray]) -> None:
     """A compiled table as one ``.npz`` with its content key, written atomically (no pickle)."""
-    from hg_marl.training.io import atomic_write
+    from hg_marl.core.atomic import atomic_write
 
     def write(tmp: Path) -> None:
         buf = io.BytesIO()

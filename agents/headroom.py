@@ -46,6 +46,7 @@ from scipy import sparse
 from scipy.sparse.linalg import spsolve
 from tqdm import tqdm
 
+from hg_marl.agents.models import AnswerTable, Model, StatePacker, build_model
 from hg_marl.agents.oracle import (
     DEFAULT_MEMORY,
     DEFAULT_SECONDS,
@@ -101,25 +102,23 @@ class JointModel:
     ) -> None:
         self.world, self.humans = world, list(humans)
         self.failed_actions, self.max_states = failed_actions, max_states
-        self.budget = budget or Budget()
+        self.budget = budget or Budget(None, None, None)
         self.index: dict[State, int] = {}
         self.states: list[State] = []
         self.pair_start: list[int] = []
         self.pair_action: list[int] = []
         self.pair_terminal: list[bool] = []
         self.dynamics = [_Dynamics() for _ in self.humans]
-        if layout_count(world.scenario) > max_states:
-            raise OracleTooLarge(
-                f"the headroom model of {world.scenario.name!r}: more initial layouts than max_states={max_states}"
-            )
-        layouts = layout_distribution(world)
+        self._arrays: list[tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]] = []
+        """Set by :meth:`from_model`; the Python enumeration keeps lists in ``dynamics``."""
+        self.budget.refuse_count("layouts", layout_count(world.scenario), "initial layouts")
+        layouts = layout_distribution(world, self.budget)
         table = world.table
         wait = table.wait[Agent.ROBOT]
         for dyn, human in zip(self.dynamics, self.humans, strict=True):
             seen = wait if getattr(human, "uses_robot_action", False) else -1
-            for n, (state, q) in enumerate(layouts):
-                if n % 64 == 0:  # a planner-driven human answers each layout with a search
-                    self.budget.check(world, len(self.states), memory=n % 2048 == 0)
+            for n, (state, q) in enumerate(layouts):  # a planner-driven human answers each with a search
+                self.budget.check("first answers", n, len(layouts), "layouts", memory=n % 2048 == 0)
                 for h, p in human.distribution(world, state, seen):
                     if p > 0.0:
                         nxt, _, d = table.successor(state, Agent.HUMAN, h)
@@ -162,8 +161,8 @@ class JointModel:
         k = 0
         try:
             while k < len(self.states):
+                self.budget.check("explore", k, unit="states explored", memory=k % 2048 == 0)
                 if k % 64 == 0:
-                    self.budget.check(self.world, len(self.states), memory=k % 2048 == 0)
                     bar.update(k - bar.n)
                 state = self.states[k]
                 self.pair_start.append(len(self.pair_action))
@@ -195,8 +194,29 @@ class JointModel:
         self.terminal = np.array(self.pair_terminal, dtype=bool)
         self.actions = np.array(self.pair_action, dtype=np.int64)
 
+    @classmethod
+    def from_model(cls, world: World, model: Model, budget: Budget | None = None) -> JointModel:
+        """The joint model read from the array builder's :class:`~hg_marl.agents.models.Model`."""
+        self = cls.__new__(cls)
+        self.world, self.budget = world, budget or Budget(None, None, None)
+        self.n, self.n_pairs = model.n, model.n_pairs
+        self.starts = model.pair_start[:-1]
+        self.pair_state = model.pair_state()
+        self.terminal = model.pair_terminal
+        self.actions = model.pair_action
+        self.dynamics = []
+        self._arrays = []
+        for i, d in enumerate(model.dynamics):
+            dyn = _Dynamics()
+            dyn.regen = list(zip(d.regen_next.tolist(), d.regen_prob.tolist(), d.regen_tau.tolist(), strict=True))
+            self.dynamics.append(dyn)
+            self._arrays.append((model.of(i).t_pair(), d.t_next, d.t_prob, d.t_tau))
+        return self
+
     def arrays(self, i: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Human ``i``'s transitions as arrays: pair, next state, probability, seconds."""
+        if self._arrays:
+            return self._arrays[i]
         d = self.dynamics[i]
         return (
             np.array(d.t_pair, dtype=np.int64),
@@ -223,7 +243,7 @@ class JointModel:
                 delta = float(np.max(np.abs(new - values)))
                 values = new
                 if it % 64 == 0:
-                    self.budget.check(self.world, n)
+                    self.budget.check("solve", it, unit="sweeps", memory=it % 4096 == 0)
                 if delta < tolerance:
                     break
         q = q_of(values)
@@ -350,14 +370,29 @@ def headroom(
         specs.setdefault(label, spec)
     labels = list(specs)
     humans = [_human_policy(specs[label], world) for label in labels]
-    budget = Budget(max_seconds, max_memory, start)
-    model = JointModel(world, humans, failed_actions, max_states, budget, progress)
-    col = [labels.index(label) for label, _ in true]
-    policies = {}
-    for label in tqdm(list(rows), desc="headroom: policies", disable=not progress, file=sys.stderr):
-        policies[label] = model.optimal_policy(labels.index(label))
-    rates = np.array([[model.rate(policies[a], j) for j in col] for a in rows])
-    optimum = np.array([model.rate(policies[label], labels.index(label)) for label, _ in true])
+    budget = Budget(
+        max_seconds,
+        max_memory,
+        max_states,
+        subject=f"the headroom model of {world.scenario.name!r}",
+        hint="use a smaller scenario or fewer humans",
+        start=start,
+    )
+    with budget.deadline():
+        budget.refuse_count("layouts", layout_count(world.scenario), "initial layouts")
+        layouts = layout_distribution(world, budget)
+        packer = StatePacker(world)
+        tables = [AnswerTable(world, h, packer, budget) for h in humans]
+        built = build_model(
+            world, tables, layouts, failed_actions=failed_actions, budget=budget, progress=progress, label="headroom"
+        )
+        model = JointModel.from_model(world, built, budget)
+        col = [labels.index(label) for label, _ in true]
+        policies = {}
+        for label in tqdm(list(rows), desc="headroom: policies", disable=not progress, file=sys.stderr):
+            policies[label] = model.optimal_policy(labels.index(label))
+        rates = np.array([[model.rate(policies[a], j) for j in col] for a in rows])
+        optimum = np.array([model.rate(policies[label], labels.index(label)) for label, _ in true])
     return HeadroomResult(
         scenario=world.scenario.name,
         assumed=tuple(rows),

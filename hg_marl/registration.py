@@ -28,10 +28,10 @@ def register_envs() -> None:
         gymnasium.register(
             ROBOT_VIEW_ID,
             entry_point="hg_marl.agents.views:RobotView",
-            vector_entry_point="hg_marl.agents.views:robot_vector_env",
+            vector_entry_point="hg_marl.agents.vector_envs:robot_vector_env",
         )
         gymnasium.register(
             HUMAN_VIEW_ID,
             entry_point="hg_marl.agents.views:HumanView",
-            vector_entry_point="hg_marl.agents.views:human_vector_env",
+            vector_entry_point="hg_marl.agents.vector_envs:human_vector_env",
         )

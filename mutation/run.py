@@ -49,8 +49,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 CONFIG = ROOT / "mutation" / "modules.toml"
 EQUIVALENT = ROOT / "mutation" / "equivalent.toml"
-COPIED = ("hg_marl", "agents", "training", "tests", "pyproject.toml")
-"""What a scratch copy holds (sources, tests, and pytest's configuration)."""
+COPIED = ("hg_marl", "agents", "training", "tests", "pyproject.toml", "populations", "studies", "docs", "README.md")
+"""What a scratch copy holds (sources, tests, pytest's configuration, and the data and pages tests read)."""
 PACKAGE_DIRS = {"agents": "hg_marl/agents", "training": "hg_marl/training"}
 """pyproject's package-dir: these folders install under hg_marl."""
 
@@ -196,6 +196,8 @@ def scratch_copy(dest: Path) -> Path:
     ignore = shutil.ignore_patterns("__pycache__", "*.pyc", ".hypothesis", ".pytest_cache")
     for name in COPIED:
         src = ROOT / name
+        if not src.exists():  # an optional folder or page this checkout does not have
+            continue
         if src.is_dir():
             shutil.copytree(src, dest / name, ignore=ignore)
         else:

@@ -81,11 +81,22 @@ def register_all(target: typer.Typer, names: tuple[str, ...] = COMMANDS) -> type
     """Add the named subcommands to ``target``, each wrapped by :func:`one_line_errors`."""
     for name in names:
         importlib.import_module(f"hg_marl.training.commands.{name}").register(target)
-    for info in target.registered_commands:
+    _wrap(target, root=True)
+    return target
+
+
+def _wrap(typer_app: typer.Typer, root: bool = False) -> None:
+    """Wrap every command of ``typer_app`` with :func:`one_line_errors`, in its groups too (``train sb3``)."""
+    infos: list[Any] = list(typer_app.registered_commands)
+    if not root and typer_app.registered_callback is not None:
+        infos.append(typer_app.registered_callback)  # a group's own callback (``train --algo``, the old form)
+    for info in infos:
         if info.callback is not None and not getattr(info.callback, "_one_line", False):
             info.callback = one_line_errors(info.callback)
-            info.callback._one_line = True  # type: ignore[attr-defined]
-    return target
+            info.callback._one_line = True
+    for group in typer_app.registered_groups:
+        if group.typer_instance is not None:
+            _wrap(group.typer_instance)
 
 
 register_all(app)

@@ -1,74 +1,19 @@
-"""Atomic writes: a result file is either absent or complete, never half-written.
+"""Atomic writes of results: a result file is either absent or complete, never half-written.
 
-Every result goes to a temporary file in the same directory, is flushed to disk
-(``fsync``), then ``os.replace`` puts it in place (atomic on POSIX) and the directory
-entry is synced too, so an interrupted run or a power cut leaves no torn file and a
-resumed run can trust whatever it finds. Files are made readable by others (0644):
-results are meant to be shared, and ``mkstemp`` alone would leave them 0600.
+:func:`atomic_write` itself lives in :mod:`hg_marl.core.atomic` (below the agents, whose
+caches use it too); this module adds the JSON and text writers of the training runs.
 """
 
 from __future__ import annotations
 
 import json
 import math
-import os
-import tempfile
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from hg_marl.core.errors import output_error
+from hg_marl.core.atomic import FILE_MODE, atomic_write
 
-FILE_MODE = 0o644
-"""Permissions of every result file: the owner writes, everyone reads."""
-
-
-def _fsync_dir(directory: Path) -> None:
-    """Make a rename in ``directory`` durable (a no-op where directories cannot be opened)."""
-    try:
-        fd = os.open(directory, os.O_RDONLY)
-    except OSError:
-        return
-    try:
-        os.fsync(fd)
-    finally:
-        os.close(fd)
-
-
-def atomic_write(path: str | Path, write: Callable[[Path], object]) -> Path:
-    """Call ``write(tmp_path)``, flush it to disk, then move it onto ``path`` (mode 0644).
-
-    Raises:
-        OutputError: a full disk, a forbidden or read-only folder (the temporary file is
-            removed: nothing half-written is left behind).
-    """
-    path = Path(path)
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    except OSError as exc:
-        raise (output_error(exc, path) or exc) from None
-    os.close(fd)
-    try:
-        write(Path(tmp))
-        fd = os.open(tmp, os.O_RDONLY)
-        try:
-            os.fsync(fd)
-        finally:
-            os.close(fd)
-        os.chmod(tmp, FILE_MODE)
-        os.replace(tmp, path)
-        _fsync_dir(path.parent)
-    except OSError as exc:
-        Path(tmp).unlink(missing_ok=True)
-        error = output_error(exc, path)
-        if error is None:
-            raise
-        raise error from None
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return path
+__all__ = ["FILE_MODE", "atomic_write", "write_json", "write_text"]
 
 
 def _plain(value: Any) -> Any:

@@ -216,9 +216,7 @@ def registry_targets() -> set[str]:
     from hg_marl.agents.meta.registry import CRITERIA
     from hg_marl.agents.robots.registry import ROBOTS
 
-    found = {spec.target.partition(":")[0] for spec in HUMANS.values()}
-    found.update(cls.__module__ for cls in (*ROBOTS.values(), *CRITERIA.values()))
-    return found
+    return {entry.module for registry in (HUMANS, ROBOTS, CRITERIA) for entry in registry.values()}
 
 
 def code_modules(roots: tuple[str, ...] | None = None) -> tuple[dict[str, Path], set[str]]:

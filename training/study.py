@@ -45,7 +45,7 @@ from pathlib import Path
 from typing import Any
 
 from hg_marl.core.errors import HgMarlError, StudyError, check_digits, check_finite, check_int, where
-from hg_marl.core.spec import REQUIRED, convert, format_spec, parse_spec
+from hg_marl.core.spec import AgentSpec, format_spec, parse_spec
 from hg_marl.training.limits import MAX_SEED_VALUE, MAX_SEEDS, check_count, check_runs
 
 ORACLE = "oracle"
@@ -188,8 +188,8 @@ def _actor(item: Any, key: str, index: int, src: _Source) -> Actor:
             spec = parse_spec(item, what)
         except HgMarlError as exc:
             raise src.error(str(exc), key, index, item) from None
-        params = {k: convert(v, REQUIRED, f"{what} {k}", from_text=True) for k, v in spec.raw.items()}
-        return Actor(spec.name, params, format_spec(spec.name, params))
+        typed = AgentSpec.of(spec, what)
+        return Actor(typed.name, dict(typed.params), str(typed))
     if isinstance(item, dict):
         unknown = sorted(set(item) - {"name", "params", "label"})
         if unknown:
@@ -281,9 +281,8 @@ def _population(data: Mapping[str, Any], src: _Source) -> list[tuple[Actor, str]
     for split in SPLITS:
         if split in splits:
             for member in population.members(split):
-                spec = parse_spec(member.spec, member.name)
-                params = {k: convert(v, REQUIRED, f"{member.name} {k}", from_text=True) for k, v in spec.raw.items()}
-                out.append((Actor(spec.name, params, member.name), split))
+                typed = AgentSpec.parse(member.spec, member.name)
+                out.append((Actor(typed.name, dict(typed.params), member.name), split))
     if not out:
         raise src.error(f"splits: the population has no members in {', '.join(splits)}", "splits")
     return out

@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -39,7 +39,7 @@ import numpy as np
 import pandas as pd
 
 from hg_marl.core.errors import ConfigError, check_finite, check_int
-from hg_marl.core.spec import REQUIRED, convert, parse_spec
+from hg_marl.core.spec import AgentSpec
 from hg_marl.training.regret import bootstrap_ci, time_to_recover
 from hg_marl.training.sweep import Job, load_log, run_sweep
 
@@ -69,10 +69,20 @@ class SwitchingConfig:
     """Recovery is measured after changes into phases at least this long."""
     members: tuple[tuple[str, str], ...] = ()
     """(name, spec) of every member the pairs name."""
+    _robot_specs: dict[str, AgentSpec] = field(default_factory=dict, init=False, repr=False, compare=False)
+    """Each robot's spec once parsed (see :meth:`robot_spec`)."""
 
     def spec(self, name: str) -> str:
         """The spec of member ``name``."""
         return dict(self.members)[name]
+
+    def robot_spec(self, robot: str) -> AgentSpec:
+        """``--robots`` item ``robot`` parsed and typed, once per config (as a study file types
+        them, so the same robot keys the same runs); the check, the jobs and the table share it."""
+        spec = self._robot_specs.get(robot)
+        if spec is None:
+            spec = self._robot_specs[robot] = AgentSpec.parse(robot, "--robots", f"--robots {robot}")
+        return spec
 
 
 def check_config(config: SwitchingConfig) -> None:
@@ -98,7 +108,7 @@ def check_config(config: SwitchingConfig) -> None:
 
     for robot in config.robots:  # built once here, so a bad spec is refused before any run
         try:
-            job = _job(config, config.pairs[0], config.periods[0], robot, 0)
+            job = _job(config, config.pairs[0], config.periods[0], robot, config.robot_spec(robot), 0)
             make_robot(job.robot, **job.robot_params)
         except (HgMarlError, ValueError, TypeError) as exc:
             raise ConfigError(f"--robots {robot}: {exc}") from None
@@ -111,14 +121,12 @@ def schedule(names: tuple[str, str], period: float, duration: float) -> tuple[li
     return [names[k % 2] for k in range(changes + 1)], at
 
 
-def _job(config: SwitchingConfig, pair: tuple[str, str], period: float, robot: str, seed: int) -> Job:
-    spec = parse_spec(robot, "--robots")
+def _job(config: SwitchingConfig, pair: tuple[str, str], period: float, robot: str, spec: AgentSpec, seed: int) -> Job:
     names, at = schedule(pair, period, config.duration)
     return Job(
         label=f"switch_{pair[0]}_{pair[1]}_{period:g}_{robot}",
         robot=spec.name,
-        # typed as a study file types them, so the same robot keys the same runs
-        robot_params={k: convert(v, REQUIRED, f"--robots {robot} {k}", from_text=True) for k, v in spec.raw.items()},
+        robot_params=dict(spec.params),
         seed=seed,
         scenario=config.scenario,
         duration=config.duration,
@@ -128,9 +136,9 @@ def _job(config: SwitchingConfig, pair: tuple[str, str], period: float, robot: s
 
 
 def switching_jobs(config: SwitchingConfig) -> list[Job]:
-    """One job per (pair, period, robot, seed)."""
+    """One job per (pair, period, robot, seed); each robot's spec parsed once."""
     return [
-        _job(config, pair, period, robot, seed)
+        _job(config, pair, period, robot, config.robot_spec(robot), seed)
         for pair in config.pairs
         for period in config.periods
         for robot in config.robots
@@ -197,7 +205,8 @@ def run_switching(
             tasks: dict[str, list[float]] = {}
             recovery: dict[str, list[float]] = {}
             for robot in config.robots:
-                logs = [load_log(_job(config, pair, period, robot, s), out) for s in range(config.seeds)]
+                spec = config.robot_spec(robot)
+                logs = [load_log(_job(config, pair, period, robot, spec, s), out) for s in range(config.seeds)]
                 tasks[robot] = [float(log["reward"].sum()) for log in logs]
                 rec = [mean_recovery(log, rates, period, config.duration, config.min_phase) for log in logs]
                 recovery[robot] = [r for r in rec if r is not None]

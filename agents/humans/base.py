@@ -16,6 +16,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from hg_marl.core import WAIT, Action, Agent, Kind, State, World
+from hg_marl.core.cycle import seen
 from hg_marl.core.errors import HumanError as HumanError  # re-exported: humans raise it
 from hg_marl.policy import Turn
 
@@ -71,10 +72,8 @@ class StationaryHuman(ABC):
 
 
 def robot_action_of(turn: Turn) -> int:
-    """The robot's action of the current cycle if it succeeded, else -1 (from the turn's events)."""
-    if turn.last_actions[0] < 0 or any(e.kind == "failed" and e.agent == "robot" for e in turn.events):
-        return -1
-    return turn.last_actions[0]
+    """The robot's action of this cycle if it succeeded, else -1 (``cycle.seen``, read from the turn's events)."""
+    return seen(turn.last_actions[0], not any(e.kind == "failed" and e.agent == "robot" for e in turn.events))
 
 
 def sample(dist: Distribution, rng: np.random.Generator) -> int:

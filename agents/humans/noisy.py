@@ -15,6 +15,7 @@ import math
 from hg_marl.agents.humans.base import Distribution, StationaryHuman, deterministic
 from hg_marl.agents.humans.cooperative import CooperativeHuman
 from hg_marl.core import Agent, State, World
+from hg_marl.core.cycle import cycle_length
 
 _MEMO_LIMIT = 200_000
 
@@ -51,7 +52,7 @@ class NoisyHuman(StationaryHuman):
         for index in world.feasible_indices(state, Agent.HUMAN):
             step = world.step(state, Agent.HUMAN, index)
             rest = planner.intent(step.state, to_move=Agent.ROBOT).duration  # inf when no plan
-            out[index] = max(d_robot, step.duration) + rest
+            out[index] = cycle_length(d_robot, step.duration) + rest
         return out
 
     def distribution(self, world: World, state: State, robot_action: int = -1) -> Distribution:

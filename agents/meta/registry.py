@@ -1,8 +1,11 @@
-"""The one registry of MetaController criteria: ``make_criterion(name, **params)``."""
+"""The registry of MetaController criteria: ``make_criterion(name, **params)``.
+
+A :class:`hg_marl.core.registry.Registry` like the humans' and the robots': each
+criterion's parameters and defaults are read from its constructor's signature.
+"""
 
 from __future__ import annotations
 
-import inspect
 from typing import Any
 
 from hg_marl.agents.meta.base import Criterion
@@ -13,11 +16,12 @@ from hg_marl.agents.meta.fixed import HabitOnly, PlannerOnly
 from hg_marl.agents.meta.learning_state import LearningStateCriterion
 from hg_marl.agents.meta.vpi import VPICriterion
 from hg_marl.core.errors import CriterionError
-from hg_marl.core.spec import construct
+from hg_marl.core.registry import Registry
 
-CRITERIA: dict[str, type[Criterion]] = {
-    c.name: c
-    for c in (
+CRITERIA = Registry(
+    "criterion",
+    CriterionError,
+    (
         RandomCriterion,
         PlannerOnly,
         HabitOnly,
@@ -25,9 +29,9 @@ CRITERIA: dict[str, type[Criterion]] = {
         EntropyAndCostCriterion,
         VPICriterion,
         LearningStateCriterion,
-    )
-}
-"""Criterion classes by name (a registry of classes: the only module-level table)."""
+    ),
+)
+"""Every criterion by name (``CRITERIA[name].factory()`` is its class)."""
 
 
 def available_criteria() -> tuple[str, ...]:
@@ -37,14 +41,7 @@ def available_criteria() -> tuple[str, ...]:
 
 def criterion_params(name: str) -> tuple[str, ...]:
     """Parameter names a criterion accepts."""
-    return tuple(inspect.signature(_lookup(name)).parameters)
-
-
-def _lookup(name: str) -> type[Criterion]:
-    try:
-        return CRITERIA[name]
-    except KeyError:
-        raise CriterionError(f"unknown criterion {name!r}; available: {', '.join(CRITERIA)}") from None
+    return tuple(CRITERIA.lookup(name).defaults())
 
 
 def make_criterion(name: str, **params: Any) -> Criterion:
@@ -54,5 +51,5 @@ def make_criterion(name: str, **params: Any) -> Criterion:
         CriterionError: unknown name (the message lists the known ones), unknown parameter
             (lists the accepted ones) or a parameter out of range.
     """
-    criterion: Criterion = construct(name, CRITERIA, params, kind="criterion", error=CriterionError)
+    criterion: Criterion = CRITERIA.make(name, **params)
     return criterion

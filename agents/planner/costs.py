@@ -2,7 +2,8 @@
 
 A plan is a sequence of joint *cycles* (the robot's action, then the human's, the way
 the AEC environment runs them). A cycle lasts ``dt = max(d_robot, d_human)`` because the
-agents act in parallel. Every term below is a sum over cycles, so the total cost is
+agents act in parallel (``hg_marl.core.cycle.cycle_length``, the environment's clock
+rule). Every term below is a sum over cycles, so the total cost is
 additive and the cost-to-go of a state does not depend on how it was reached: that is
 what lets the search share one transposition table entry per state and what makes the
 suffix of an optimal plan optimal (Bellman), which the planner's cache relies on.
@@ -28,6 +29,7 @@ from dataclasses import dataclass, field, fields
 from typing import NamedTuple
 
 from hg_marl.core import Agent, Kind, World
+from hg_marl.core.cycle import cycle_length
 
 TERMS: tuple[str, ...] = ("time", "human_effort", "effort_balance", "human_idle", "human_holding")
 """Names of the cost terms, in the order of :class:`Terms`."""
@@ -147,7 +149,7 @@ def cycle_terms(d_robot: float, active_robot: bool, d_human: float, active_human
         active_human: whether the human's action is not a ``wait``.
         holding: whether the human holds an object after the cycle.
     """
-    dt = max(d_robot, d_human)
+    dt = cycle_length(d_robot, d_human)
     e_r = d_robot if active_robot else 0.0
     e_h = d_human if active_human else 0.0
     return Terms(dt, e_h, max(0.0, e_h - e_r), dt - e_h, dt if holding else 0.0)
@@ -163,7 +165,7 @@ def cycle_cost(
     against ``total(cycle_terms(...))``.
     """
     w_time, w_effort, w_balance, w_idle, w_holding = weights
-    dt = d_robot if d_robot > d_human else d_human
+    dt = d_robot if d_robot > d_human else d_human  # cycle_length, inlined in the search's inner loop
     e_h = d_human if active_human else 0.0
     e_r = d_robot if active_robot else 0.0
     cost = w_time * dt + w_effort * e_h + w_idle * (dt - e_h)

@@ -51,6 +51,9 @@ from hg_marl.agents.planner.relabel import Relabel as Relabel
 from hg_marl.agents.planner.steps import Steps, Successor
 from hg_marl.agents.planner.tables import candidate_entries, next_kinds
 from hg_marl.core import Agent, Kind, State, World
+from hg_marl.core.relabel import Relabel
+
+__all__ = ["HumanEdge", "Relabel", "RobotEdge", "Space", "shared_space"]
 
 LAMBDAS: tuple[float, ...] = (0.0, 0.25, 0.5, 0.75, 1.0)
 """Mixing weights of robot and human work tried by the bound (five: the edges unroll them)."""

@@ -1,24 +1,28 @@
-"""The registry of robot agents: ``make_robot(name, **params)``."""
+"""The registry of robot agents: ``make_robot(name, **params)``.
+
+A :class:`hg_marl.core.registry.Registry` like the humans' and the criteria's: each
+robot's parameters and defaults are read from its constructor's signature.
+"""
 
 from __future__ import annotations
 
-import inspect
 from typing import Any
 
 from hg_marl.agents.robots.base import Robot
 from hg_marl.agents.robots.belief import BeliefRobot
 from hg_marl.agents.robots.habit import HabitRobot
 from hg_marl.agents.robots.hybrid import HybridRobot
+from hg_marl.agents.robots.memory import MemoryRobot
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.agents.robots.sb3 import SB3Robot
 from hg_marl.agents.robots.uniform import RandomRobot
 from hg_marl.core.errors import RobotError
-from hg_marl.core.spec import construct
+from hg_marl.core.registry import Registry
 
-ROBOTS: dict[str, type[Robot]] = {
-    c.name: c for c in (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot, BeliefRobot)
-}
-"""Robot classes by name (a registry of classes: the only module-level table)."""
+ROBOTS = Registry(
+    "robot", RobotError, (PlannerRobot, HabitRobot, HybridRobot, RandomRobot, SB3Robot, BeliefRobot, MemoryRobot)
+)
+"""Every robot by name (``ROBOTS[name].factory()`` is its class)."""
 
 
 def available_robots() -> tuple[str, ...]:
@@ -28,14 +32,7 @@ def available_robots() -> tuple[str, ...]:
 
 def robot_params(name: str) -> tuple[str, ...]:
     """Parameter names a robot accepts."""
-    return tuple(inspect.signature(_lookup(name)).parameters)
-
-
-def _lookup(name: str) -> type[Robot]:
-    try:
-        return ROBOTS[name]
-    except KeyError:
-        raise RobotError(f"unknown robot {name!r}; available: {', '.join(ROBOTS)}") from None
+    return tuple(ROBOTS.lookup(name).defaults())
 
 
 def make_robot(name: str, **params: Any) -> Robot:
@@ -48,5 +45,5 @@ def make_robot(name: str, **params: Any) -> Robot:
         RobotError: unknown name (the message lists the known ones), unknown parameter
             (lists the accepted ones) or a bad value; CriterionError for the criterion's own.
     """
-    robot: Robot = construct(name, ROBOTS, params, kind="robot", error=RobotError)
+    robot: Robot = ROBOTS.make(name, **params)
     return robot

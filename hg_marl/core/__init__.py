@@ -1,4 +1,4 @@
-"""The pure task core: scenarios, state, rules. Imports only the stdlib and numpy."""
+"""The pure task core: scenarios, state, rules, the cycle, specs and registries. Imports only the stdlib and numpy."""
 
 from hg_marl.core.durations import Durations
 from hg_marl.core.errors import (

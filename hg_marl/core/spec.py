@@ -75,6 +75,23 @@ def _split_top_level(text: str) -> list[str]:
     return parts
 
 
+def split_specs(text: str) -> list[str]:
+    """A comma list of specs: ``a,b:k=1,j=2,c`` -> ``[a, b:k=1,j=2, c]``.
+
+    A piece ``k=v`` without a name continues the spec before it (command-line lists of
+    humans or robots, ``--humans`` and ``--robots``).
+    """
+    out: list[str] = []
+    for piece in (p.strip() for p in text.split(",")):
+        if not piece:
+            continue
+        if out and "=" in piece and ":" not in piece and ":" in out[-1]:
+            out[-1] += "," + piece
+        else:
+            out.append(piece)
+    return out
+
+
 def parse_spec(text: str | Spec, what: str = "spec") -> Spec:
     """Split ``"name:k=v,k2=v2"`` into a :class:`Spec` (values stay text until :func:`bind`).
 
@@ -305,31 +322,39 @@ def bind(
     return out
 
 
-def construct(
-    text: str | Spec,
-    classes: Mapping[str, Any],
-    params: Mapping[str, Any],
-    *,
-    kind: str,
-    error: type[HgMarlError],
-) -> Any:
-    """Build ``classes[name](**bound parameters)`` from a spec plus keyword overrides.
+@dataclass(frozen=True)
+class AgentSpec:
+    """A spec parsed once, its values typed as JSON reads them: what a job carries to a worker, as data.
 
-    The one way registries of classes (robots, criteria) turn ``"hybrid:criterion=vpi"``
-    into an object: parameters are typed by the constructor's defaults (:func:`bind`),
-    and a ValueError/TypeError of the constructor becomes ``error`` naming the thing.
+    Parsing and typing happen where the user's text is read (a command line, a study file,
+    a population); from there on the name and the typed values travel as they are, so a
+    worker builds the agent with ``make_robot(spec.name, **spec.params)`` and nothing
+    parses the text again. Values are typed without the registry (``REQUIRED``: any JSON
+    value), as a study file types them, so the same robot written either way keys the
+    same runs; the registry still checks each value against its parameter's default when
+    the agent is built.
     """
-    try:
-        spec = parse_spec(text, kind)
-    except SpecError as exc:
-        raise error(str(exc)) from None
-    cls = classes.get(spec.name)
-    if cls is None:
-        raise error(f"unknown {kind} {spec.name!r}; available: {', '.join(classes)}")
-    kwargs = bind(spec, signature_defaults(cls), params, what=f"{kind} {spec.name!r}", error=error)
-    try:
-        return cls(**kwargs)
-    except HgMarlError:
-        raise
-    except (TypeError, ValueError) as exc:
-        raise error(f"{kind} {spec.name!r}: {exc}") from None
+
+    name: str
+    """Registry name."""
+    params: Mapping[str, Any] = field(default_factory=dict)
+    """Typed parameter values, in the order written."""
+
+    def __str__(self) -> str:
+        return format_spec(self.name, self.params)
+
+    @classmethod
+    def of(cls, spec: Spec, where: str) -> AgentSpec:
+        """Type the values of a parsed spec; ``where`` starts each message (``--robots planner``).
+
+        Raises:
+            SpecError: a value that is not valid JSON where it looks like it, or a NaN/infinite number.
+        """
+        return cls(spec.name, {k: convert(v, REQUIRED, f"{where} {k}", from_text=True) for k, v in spec.raw.items()})
+
+    @classmethod
+    def parse(cls, text: str | AgentSpec, what: str = "spec", where: str | None = None) -> AgentSpec:
+        """:func:`parse_spec` (messages name ``what``) then :meth:`of` (messages start ``where``, default ``what``)."""
+        if isinstance(text, AgentSpec):
+            return text
+        return cls.of(parse_spec(text, what), what if where is None else where)

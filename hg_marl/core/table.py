@@ -153,6 +153,14 @@ class RuleTable:
         done = self.done
         return all(p in done[o] for o, p in enumerate(where))
 
+    def solves(self, state: State, agent: int, index: int) -> bool:
+        """Whether ``agent``'s action ``index`` completes the task in ``state``: the robot waits on a clean table.
+
+        The task's one reward rule (``wait`` is always feasible, so nothing else is asked);
+        ``World.step`` rewards it, the robot-turn models end an episode on it.
+        """
+        return agent == Agent.ROBOT and index == self.wait[agent] and self.is_clean(state.where)
+
     def goto_destination(self, state: State, target: int) -> int:
         """Where ``goto(target)`` takes the robot from ``state``, or -1 if infeasible."""
         n = self.n_objects

@@ -62,12 +62,12 @@ class World:
         """Per object, the first bin that accepts it (names and facts; any of ``bins_of`` will do)."""
         self._actions = table.actions
         self._index = table.index
-        self._cache_limit = cache_entries(
+        self.cache_limit = cache_entries(
             table.n_objects,
             len(self.fact_names),
             max(len(table.actions[Agent.ROBOT]), len(table.actions[Agent.HUMAN])),
         )
-        """Entries each memo table may hold before it is cleared (:func:`cache_entries`)."""
+        """Entries each memo table may hold before it is cleared (:func:`cache_entries`; the cycle's too)."""
         self._step_cache: dict[tuple[State, int, int], Outcome] = {}
         self._facts_cache: dict[State, np.ndarray] = {}
         self._mask_cache: tuple[dict[State, np.ndarray], dict[State, np.ndarray]] = ({}, {})
@@ -192,7 +192,7 @@ class World:
             events.append(Event("placed", name, objects[o], self.place_name(target)))
         elif kind is Kind.GOTO:
             events.append(Event("moved", name, "", self.scenario.robot_locations[nxt.robot_at]))
-        elif agent is Agent.ROBOT and table.is_clean(state.where):
+        elif table.solves(state, agent, index):
             reward = 1.0
             events.append(Event("completed", name, "", "task"))
         return Outcome(nxt, True, duration, reward, tuple(events))
@@ -202,7 +202,7 @@ class World:
         key = (state, agent, index)
         out = self._step_cache.get(key)
         if out is None:
-            if len(self._step_cache) > self._cache_limit:
+            if len(self._step_cache) > self.cache_limit:
                 self._step_cache.clear()
             out = self._step_cache[key] = self._outcome(state, agent, index)
         return out
@@ -230,7 +230,7 @@ class World:
         return len(self.fact_names)
 
     @cached_property
-    def _fact_lookup(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+    def fact_lookup(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
         """Every fact but the offers as a look-up: ``table[robot_at][fact, place of its object]``.
 
         Each fact of the paper's vector depends on one object's place and the robot's
@@ -256,7 +256,7 @@ class World:
 
     def compute_facts(self, state: State) -> np.ndarray:
         """The paper's boolean fact vector for ``state`` (a fresh int8 array)."""
-        lookup, rows, objects, n_fixed = self._fact_lookup
+        lookup, rows, objects, n_fixed = self.fact_lookup
         fixed = lookup[state.robot_at][rows, np.array(state.where, dtype=np.intp)[objects]]
         out = np.zeros(n_fixed + 2 * self.n_objects, dtype=np.int8)
         out[:n_fixed] = fixed
@@ -270,7 +270,7 @@ class World:
         if arr is None:
             arr = self.compute_facts(state)
             arr.flags.writeable = False
-            if len(self._facts_cache) > self._cache_limit:
+            if len(self._facts_cache) > self.cache_limit:
                 self._facts_cache.clear()
             self._facts_cache[state] = arr
         return arr
@@ -287,7 +287,7 @@ class World:
             arr = np.zeros(self.n_actions(agent), dtype=np.int8)
             arr[self.feasible_indices(state, agent)] = 1
             arr.flags.writeable = False
-            if len(cache) > self._cache_limit:
+            if len(cache) > self.cache_limit:
                 cache.clear()
             cache[state] = arr
         return arr

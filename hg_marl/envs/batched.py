@@ -1,22 +1,17 @@
-"""Many tables stepped at once on arrays: the rule table's tabulated rules, batched.
+"""Many tables stepped at once: one seat's Gymnasium vector env over the batched rules.
 
-:class:`BatchedRules` reads :class:`~hg_marl.core.table.RuleTable`'s own tables (who
-reaches which spot from where, where a throw lands, where a goto leads, each action's
-kind, object, target and duration) as numpy arrays, and applies the preconditions and
-effects that ``RuleTable.feasible`` and ``RuleTable.successor`` state to a whole batch of
-states; nothing scenario-specific is computed here. The facts come from
-``World._fact_lookup`` (one fancy index), the table draw from ``World.initial_states``.
-A property test (``tests/env/test_batched.py``) steps it beside ``World.step`` on random
-action sequences and requires identical trajectories.
+The rules over arrays (:class:`BatchState`, :class:`BatchedRules`, the twin of
+``World.step``) live in :mod:`hg_marl.core.batch`, beside the cycle's batched twin in
+:mod:`hg_marl.core.cycle`; both are re-exported here.
 
 :class:`BatchedTable` is one seat's Gymnasium ``VectorEnv``: the learning seat's action
-per table, then the partner's, which reaches it as arrays through :class:`ArrayPartner`
-(``agents/compiled.py`` compiles scripted partners into one, ``agents/batched_learned.py``
-runs a learned SB3 human as one forward pass per step; a partner that also has
-``answer`` and ``outcome`` tables, as a compiled human does, hands the next state, its
-facts and its robot mask, which ``BatchedRules`` computed for every entry at compile
-time, so the human's half of a cycle is a few gathers). Observations, rewards,
-clock, durations, effort, idle time, termination and truncation are those of the
+per table, then the partner's, which reaches it as arrays through an
+:class:`~hg_marl.envs.array_partner.ArrayPartner`, its optional capabilities declared
+there (``agents/compiled.py`` compiles scripted partners into one,
+``agents/batched_learned.py`` runs a learned SB3 human as one forward pass per step; a
+:class:`TabledHuman`, as a compiled human is, hands the next state, its facts and its
+robot mask, computed for every entry at compile time, so the human's half of a cycle is
+a few gathers). Observations, rewards, clock, durations, effort, idle time, termination and truncation are those of the
 single-table views (``agents/views.py``). Autoreset follows Gymnasium 1.x: ``NEXT_STEP``
 by default (the step after an episode's last returns the reset observation with reward
 0, the action ignored), or ``SAME_STEP`` (``autoreset_mode="same_step"``: the last
@@ -25,219 +20,37 @@ observation is returned), which SB3's VecEnv adapter (``hg_marl.wrappers.sb3_vec
 
 Backends: ``device=None`` runs on numpy (CPU); ``device="cpu"`` or ``"cuda"`` keeps the
 same code path and returns observations, rewards and flags as torch tensors (actions may
-be tensors), converted at the boundary only. ``benchmarks/batched_throughput.py``
-measures it at 0.75-1.3x numpy on CPU (no gain: the per-table work is a few integer
-gathers), so numpy is the default; no GPU was available to measure ``"cuda"``.
+be tensors), converted at the boundary only. The per-table work is a few integer
+gathers, so numpy is the default (``benchmarks/batched_throughput.py`` compares them).
 """
 
 from __future__ import annotations
 
-from typing import Any, Protocol
+from typing import Any, cast
 
 import numpy as np
 from gymnasium import spaces
 from gymnasium.vector import AutoresetMode, VectorEnv
 
-from hg_marl.core import Agent, Kind, State, World
+from hg_marl.core import Agent, World, cycle
+from hg_marl.core.batch import BatchedRules, BatchState
 from hg_marl.core.errors import ConfigError, check_int
+from hg_marl.envs.array_partner import ArrayPartner, FollowsClock, ResetsRows, TabledHuman
+
+__all__ = [
+    "MEMORY_LIMIT",
+    "ArrayPartner",
+    "BatchState",
+    "BatchedRules",
+    "BatchedTable",
+    "FollowsClock",
+    "ResetsRows",
+    "TabledHuman",
+    "check_batch",
+]
 
 MEMORY_LIMIT = 2 * 2**30
 """Bytes a batch may allocate (state, facts and masks); checked before allocating."""
-
-
-class BatchState:
-    """A batch of symbolic states: ``where`` (N, objects), ``robot_at``, ``offer_by``, ``offer_obj`` (N,)."""
-
-    __slots__ = ("offer_by", "offer_obj", "robot_at", "rows", "where")
-
-    def __init__(
-        self,
-        where: np.ndarray,
-        robot_at: np.ndarray,
-        offer_by: np.ndarray,
-        offer_obj: np.ndarray,
-        rows: np.ndarray | None = None,
-    ) -> None:
-        self.where, self.robot_at, self.offer_by, self.offer_obj = where, robot_at, offer_by, offer_obj
-        self.rows = np.arange(len(robot_at)) if rows is None else rows
-        """Which tables of the env these are (partners that keep a member or an actor per table read it)."""
-
-    @classmethod
-    def of(cls, states: list[State]) -> BatchState:
-        """A batch from a list of states."""
-        return cls(
-            np.array([s.where for s in states], dtype=np.int64),
-            np.array([s.robot_at for s in states], dtype=np.int64),
-            np.array([s.offer_by for s in states], dtype=np.int64),
-            np.array([s.offer_obj for s in states], dtype=np.int64),
-        )
-
-    def state(self, i: int) -> State:
-        """Table ``i`` as a :class:`State`."""
-        return State(
-            tuple(int(x) for x in self.where[i]),
-            int(self.robot_at[i]),
-            int(self.offer_by[i]),
-            int(self.offer_obj[i]),
-        )
-
-    def __len__(self) -> int:
-        return len(self.robot_at)
-
-    def put(self, rows: np.ndarray, other: BatchState) -> None:
-        """Overwrite tables ``rows`` with ``other``'s (same length; nothing to do when ``other`` is self's view)."""
-        if other.where is self.where:
-            return
-        self.where[rows] = other.where
-        self.robot_at[rows] = other.robot_at
-        self.offer_by[rows] = other.offer_by
-        self.offer_obj[rows] = other.offer_obj
-
-
-class BatchedRules:
-    """``RuleTable``'s tables as arrays and its rules applied to a :class:`BatchState`."""
-
-    def __init__(self, world: World) -> None:
-        t = world.table
-        self.world = world
-        n, m, p = t.n_objects, t.n_spots, t.n_places
-        self.n_objects, self.n_spots, self.n_places = n, m, p
-        self.hand = t.hand
-        # reach over every place code (non-spots are never reached for a pick)
-        reach = np.zeros((2, t.n_locations, p), dtype=bool)
-        reach[:, :, :m] = np.array(t.reach, dtype=bool)
-        self.reach = reach
-        self.throw_to = np.array(t.throw_to, dtype=np.int64)  # (agent, at, object)
-        self.give_ok = np.array(t.give_ok, dtype=bool)  # (at,)
-        self.goto_obj = np.array(t.goto_obj, dtype=np.int64)  # (at, place)
-        self.goto_static = np.array(t.goto_static, dtype=np.int64)  # (at, bins + human)
-        self.spot_human = np.array(t.spot_human, dtype=bool)
-        self.done = np.array([[q in t.done[o] for q in range(p)] for o in range(n)], dtype=bool)
-        self.kind = tuple(np.array([s.kind for s in specs], dtype=np.int64) for specs in t.specs)
-        self.obj = tuple(np.array([s.obj for s in specs], dtype=np.int64) for specs in t.specs)
-        self.target = tuple(np.array([s.target for s in specs], dtype=np.int64) for specs in t.specs)
-        self.duration = tuple(np.array([s.duration for s in specs], dtype=np.float64) for specs in t.specs)
-        self.failed = float(t.durations.failed)
-        self.n_actions = (len(t.specs[0]), len(t.specs[1]))
-        self.first = tuple(
-            {k: t.action_index(a, k, 0, 0) for k in Kind if any(s.kind is k for s in t.specs[a])} for a in Agent
-        )
-        self.wait = t.wait
-
-    # ---- questions ------------------------------------------------------------------
-    def is_clean(self, b: BatchState) -> np.ndarray:
-        """Per table, whether every object is in a bin that accepts it."""
-        return self.done[np.arange(self.n_objects), b.where].all(axis=1)
-
-    def masks(self, b: BatchState, agent: int) -> np.ndarray:
-        """(N, n_actions) booleans: ``RuleTable.feasible`` for every table and action."""
-        n, m = self.n_objects, self.n_spots
-        size = len(b)
-        rows = np.arange(size)
-        where, at = b.where, b.robot_at
-        held = where == self.hand[agent]
-        free = ~held.any(axis=1)
-        out = np.zeros((size, self.n_actions[agent]), dtype=bool)
-        first = self.first[agent]
-        pick, throw, give, take = (first[k] for k in (Kind.PICK, Kind.THROW, Kind.GIVE, Kind.TAKE))
-        out[:, pick : pick + n] = (where < m) & self.reach[agent][at[:, None], where] & free[:, None]
-        out[:, throw : throw + n] = held & (self.throw_to[agent][at] >= 0)
-        out[:, give : give + n] = held & self.give_ok[at][:, None]
-        offered = free & (b.offer_by == 1 - agent)
-        out[rows[offered], take + b.offer_obj[offered]] = True
-        if Kind.PLACE in first:
-            occupied = np.zeros((size, self.n_places), dtype=bool)
-            occupied[rows[:, None], where] = True
-            open_spot = self.spot_human[None, :] & ~occupied[:, :m]
-            place = first[Kind.PLACE]
-            out[:, place : place + n * m] = (held[:, :, None] & open_spot[:, None, :]).reshape(size, n * m)
-        if Kind.GOTO in first:
-            goto = first[Kind.GOTO]
-            out[:, goto : goto + n] = self.goto_obj[at[:, None], where] >= 0
-            statics = self.goto_static.shape[1]
-            out[:, goto + n : goto + n + statics] = self.goto_static[at] >= 0
-        out[:, self.wait[agent]] = True
-        return out
-
-    def step(
-        self, b: BatchState, agent: int, actions: np.ndarray, mask: np.ndarray | None = None
-    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Apply ``RuleTable.successor`` in place: returns (ok, duration, reward) per table.
-
-        ``mask`` may pass the masks of ``b`` for ``agent`` if already computed (they must be
-        those of the state before the offer lapses; see below, they agree on every action).
-        """
-        rows = np.arange(len(b))
-        kind, o, target = self.kind[agent][actions], self.obj[agent][actions], self.target[agent][actions]
-        # a partner's pending offer lapses unless this is its take; a failed take lets it lapse too.
-        # The masks before and after the lapse agree: only TAKE depends on the offer, and a take of
-        # the offered object keeps it.
-        if mask is None:
-            mask = self.masks(b, agent)
-        ok = mask[rows, actions]
-        take_reply = (kind == Kind.TAKE) & (o == b.offer_obj)
-        lapse = (b.offer_by == 1 - agent) & ~(take_reply & ok)
-        reward = np.zeros(len(b))
-        if agent == Agent.ROBOT:  # a successful wait on a clean table (only the waits need the check)
-            waits = np.flatnonzero(ok & (kind == Kind.WAIT))
-            if len(waits):
-                reward[waits] = self.is_clean(BatchState(b.where[waits], b.robot_at, b.offer_by, b.offer_obj))
-        b.offer_by[lapse] = -1
-        b.offer_obj[lapse] = -1
-        where, at = b.where, b.robot_at
-        moves = ok & ((kind == Kind.PICK) | (kind == Kind.TAKE) | (kind == Kind.THROW) | (kind == Kind.PLACE))
-        r, ob = rows[moves], o[moves]
-        k = kind[moves]
-        dest = np.where(
-            k == Kind.THROW,
-            self.throw_to[agent][at[r], ob],
-            np.where(k == Kind.PLACE, target[moves], self.hand[agent]),
-        )
-        where[r, ob] = dest
-        took = ok & (kind == Kind.TAKE)
-        b.offer_by[took] = -1
-        b.offer_obj[took] = -1
-        gave = ok & (kind == Kind.GIVE)
-        b.offer_by[gave] = agent
-        b.offer_obj[gave] = o[gave]
-        went = ok & (kind == Kind.GOTO)
-        if went.any():
-            g, t = rows[went], target[went]
-            n = self.n_objects
-            obj_t = np.minimum(t, n - 1)
-            to_obj = self.goto_obj[at[g], where[g, obj_t]]
-            to_static = self.goto_static[at[g], np.maximum(t - n, 0)]
-            at[g] = np.where(t < n, to_obj, to_static)
-        duration = np.where(ok, self.duration[agent][actions], self.failed)
-        return ok, duration, reward
-
-    def facts(self, b: BatchState) -> np.ndarray:
-        """(N, F) int8: ``World.compute_facts`` for every table (one fancy index)."""
-        lookup, rows, objects, n_fixed = self.world._fact_lookup
-        size = len(b)
-        out = np.zeros((size, n_fixed + 2 * self.n_objects), dtype=np.int8)
-        out[:, :n_fixed] = lookup[b.robot_at[:, None], rows[None, :], b.where[:, objects]]
-        offering = np.flatnonzero(b.offer_by >= 0)
-        out[offering, n_fixed + b.offer_by[offering] * self.n_objects + b.offer_obj[offering]] = 1
-        return out
-
-    def initial(self, rng: np.random.Generator, count: int) -> BatchState:
-        """``count`` fresh tables (``World.initial_states``)."""
-        where, at = self.world.initial_states(rng, count)
-        return BatchState(where, at, np.full(count, -1, dtype=np.int64), np.full(count, -1, dtype=np.int64))
-
-
-class ArrayPartner(Protocol):
-    """The partner of a batched seat: one action per table from arrays.
-
-    ``seen`` is, per table, the learning robot's successful action of this cycle (-1 if it
-    failed), for partners whose choice depends on it; a robot partner gets -1.
-    """
-
-    name: str
-
-    def act(self, batch: BatchState, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
-        """The partner's action index per table."""
 
 
 def check_batch(world: World, num_envs: Any, memory_limit: int = MEMORY_LIMIT) -> int:
@@ -299,6 +112,9 @@ class BatchedTable(VectorEnv):
         self.rules = BatchedRules(self.world)
         self.seat = Agent(seat)
         self.partner = partner
+        self._follows = isinstance(partner, FollowsClock)
+        self._resets = isinstance(partner, ResetsRows)
+        self._tabled = isinstance(partner, TabledHuman) and partner.outcome is not None
         self.continuing, self.max_cycles, self.time_budget = bool(continuing), max_cycles, time_budget
         self.effort_weight = float(effort_weight)
         self.device = device
@@ -416,12 +232,11 @@ class BatchedTable(VectorEnv):
 
     def _partner_move(self, rows: np.ndarray, seen: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The partner's move on tables ``rows``: (actions, ok, duration)."""
-        follow = getattr(self.partner, "follow", None)
-        if follow is not None:  # a partner whose behaviour depends on each table's clock (a schedule)
-            follow(self.clock, self.tasks_solved)
+        if self._follows:
+            cast(FollowsClock, self.partner).follow(self.clock, self.tasks_solved)
         sub = self._sub(rows)
         other = self.seat.other
-        if other is Agent.HUMAN and getattr(self.partner, "outcome", None) is not None:
+        if other is Agent.HUMAN and self._tabled:
             return self._compiled_move(rows, sub, seen)
         acts = np.asarray(self.partner.act(sub, seen, self._partner_rng), dtype=np.int64)
         ok, duration, reward = self.rules.step(sub, other, acts)
@@ -439,7 +254,7 @@ class BatchedTable(VectorEnv):
 
         Tables outside the table are answered by the live human and stepped by the rules.
         """
-        partner: Any = self.partner
+        partner = cast(TabledHuman, self.partner)
         pos, found = partner.answer(sub, seen, self._partner_rng)
         acts = partner.actions[pos]
         if found.all():
@@ -491,19 +306,18 @@ class BatchedTable(VectorEnv):
         won: np.ndarray,
     ) -> tuple[np.ndarray, np.ndarray]:
         """Clock, effort, idle and cycle counters of a finished cycle; (terminated, truncated)."""
-        length = np.maximum(dur[0], dur[1])
+        waited = (
+            cycle.waited_batch(self.world, Agent.ROBOT, acts[0]),
+            cycle.waited_batch(self.world, Agent.HUMAN, acts[1]),
+        )
+        length, idle = cycle.close_batch(dur, waited)
         for a in (0, 1):
-            waited = acts[a] == self.rules.wait[a]
-            self.effort[rows, a] += np.where(ok[a] & ~waited, dur[a], 0.0)
-            self.idle[rows, a] += np.where(waited, length, length - dur[a])
+            self.effort[rows, a] += cycle.effort_batch(ok[a], waited[a], dur[a])
+            self.idle[rows, a] += idle[a]
         self.clock[rows] += length
         self.cycles[rows] += 1
-        truncate = np.zeros(len(rows), dtype=bool)
-        if self.max_cycles is not None:
-            truncate |= self.cycles[rows] >= self.max_cycles
-        if self.time_budget is not None:
-            truncate |= self.clock[rows] >= self.time_budget
-        done = won & (not self.continuing)
+        truncate = cycle.truncated_batch(self.cycles[rows], self.clock[rows], self.max_cycles, self.time_budget)
+        done = cycle.ends_episode(won, self.continuing)
         return done, truncate & ~done
 
     def _robot_cycle(self, rows: np.ndarray, actions: np.ndarray) -> tuple[Any, Any, Any, dict[str, Any]]:
@@ -512,7 +326,7 @@ class BatchedTable(VectorEnv):
         self.state.put(rows, sub)
         self._stale[rows] = True
         won = self._rewarded(rows, reward)
-        h_act, ok_h, d_h = self._partner_move(rows, np.where(ok_r, actions, -1))
+        h_act, ok_h, d_h = self._partner_move(rows, cycle.seen_batch(actions, ok_r))
         done, trunc = self._end_cycle(rows, (actions, h_act), (ok_r, ok_h), (d_r, d_h), won)
         info = self._info(rows, actions, ok_r, "human", h_act, ok_h)
         return reward, done, trunc, info
@@ -535,8 +349,8 @@ class BatchedTable(VectorEnv):
             acts, _, _ = self._partner_move(g, np.full(len(g), -1, dtype=np.int64))
             robot_action[go_on] = acts
             task_reward[go_on] = self._robot_won[g]
-            done = done | (go_on & (task_reward > 0) & (not self.continuing))
-        reward = task_reward - self.effort_weight * work
+            done = done | (go_on & cycle.ends_episode(task_reward, self.continuing))
+        reward = cycle.seat_reward(task_reward, work, self.effort_weight)
         info = self._info(rows, actions, ok_h, "robot", robot_action, np.ones(len(rows), bool))
         info["work"], info["task_reward"] = work, task_reward
         return reward, done, trunc, info
@@ -577,9 +391,8 @@ class BatchedTable(VectorEnv):
         return info
 
     def _reset_partner(self, rows: np.ndarray) -> None:
-        hook = getattr(self.partner, "reset_rows", None)
-        if hook is not None:
-            hook(rows, self._partner_rng)
+        if self._resets:
+            cast(ResetsRows, self.partner).reset_rows(rows, self._partner_rng)
 
     def _reset_rows(self, rows: np.ndarray) -> None:
         self.state.put(rows, self.rules.initial(self._rng, len(rows)))

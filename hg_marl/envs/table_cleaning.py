@@ -21,6 +21,11 @@ Termination                   episodic (default): at the end of the cycle in whi
                               experiments): the table is re-drawn and play goes on.
 Truncation                    after ``max_cycles`` cycles or when the clock reaches
                               ``time_budget`` simulated seconds.
+History (opt-in)              ``history=k`` (default 0: off) appends the interaction history
+                              of the last ``k`` cycles to ``observation`` (``Box(0, 1, (F + H,),
+                              int8)``, ``H = hg_marl.envs.history.history_size(k)``): both
+                              agents' action kinds and failures and the partner's cycles since
+                              progress, relative to the observer (``hg_marl/envs/history.py``).
 Render modes                  ``ansi`` (text), ``rgb_array`` (labelled numpy image); no window,
                               ever (``human`` is refused with a pointer to ``--video``).
 ============================  =================================================================
@@ -59,12 +64,14 @@ from gymnasium import spaces
 from pettingzoo import AECEnv
 from pettingzoo.utils import wrappers
 
-from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Kind, Scenario, State, World
+from hg_marl.core import AGENT_NAMES, Agent, Durations, Event, Scenario, State, World
+from hg_marl.core.cycle import Clock, Half, Halves
 from hg_marl.core.errors import ConfigError, check_bool, check_finite, check_int
 from hg_marl.envs.render import HUMAN_MESSAGE, caption_of, render_ansi, render_rgb
 from hg_marl.policy import Turn
 
-_RESET_EVENT = Event("reset", "table", "", "new layout")
+_NO_HALF = Half(State((), -1), True, 0.0, 0.0, (), 0.0, False)
+"""Stands for the robot's half before the first cycle (each cycle overwrites it before closing)."""
 _AGENT_OF = {name: Agent(i) for i, name in enumerate(AGENT_NAMES)}
 EVENT_SEPARATOR = "; "
 """Joins the sentences of ``infos[agent]["events"]`` (split on it to get them back)."""
@@ -93,6 +100,7 @@ class raw_env(AECEnv):
         render_mode: str | None = None,
         durations: Durations | None = None,
         events_tuple: bool = False,
+        history: int = 0,
     ) -> None:
         """Build the environment.
 
@@ -106,6 +114,7 @@ class raw_env(AECEnv):
             durations: override the scenario's action durations.
             events_tuple: ``infos[agent]["events"]`` as a tuple of sentences instead of
                 one ``"; "``-joined string (see the module docstring).
+            history: cycles of interaction history appended to observations (0: none).
         """
         super().__init__()
         if render_mode == "human":
@@ -131,7 +140,11 @@ class raw_env(AECEnv):
         self.possible_agents = list(AGENT_NAMES)
         self._n_actions = [self.world.n_actions(a) for a in Agent]
         self._action_spaces = {name: spaces.Discrete(n) for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)}
-        f = self.world.n_facts
+        from hg_marl.envs.history import HistoryTracker
+
+        self._history = HistoryTracker(self.world, history)
+        self._ok = [True, True]
+        f = self.world.n_facts + self._history.size
         self._observation_spaces = {
             name: spaces.Dict(
                 {
@@ -141,7 +154,7 @@ class raw_env(AECEnv):
             )
             for name, n in zip(AGENT_NAMES, self._n_actions, strict=True)
         }
-        self._is_wait = [[a.kind is Kind.WAIT for a in self.world.actions(ag)] for ag in Agent]
+        self._half = Halves(self.world).play
         self.events_tuple = bool(events_tuple)
         self._event_text: dict[tuple[Event, ...], str | tuple[str, ...]] = {}
         self._rng = np.random.default_rng()
@@ -186,12 +199,15 @@ class raw_env(AECEnv):
         self.cycles = 0
         self.tasks_solved = 0
         self._effort = [0.0, 0.0]
-        self._idle = [0.0, 0.0]
-        self._cycle_durations = [0.0, 0.0]
+        self._clock = Clock(self.max_cycles, self.time_budget)
+        self._redraw = self._rng if self.continuing else None  # the generator of a continuing run's redraws
+        self._idle = self._clock.idle
+        self._robot_half = _NO_HALF  # the robot's half of the cycle under way
         self._charged = 0.0
         self._done_this_cycle = False
         self._last_actions = [-1, -1]
         self._last_events: list[tuple[Event, ...]] = [(), ()]
+        self._history.reset()
         self.infos = {a: self._info(Agent(i), "", False, ()) for i, a in enumerate(self.agents)}
         self.agent_selection = self.agents[0]
 
@@ -223,21 +239,17 @@ class raw_env(AECEnv):
         agent = _AGENT_OF[name]
         if type(action) is not int or not 0 <= action < self._n_actions[agent]:
             action = self._check_action(agent, action)
-        out = self.world.step(self.world_state, agent, action)
+        out = self._half(self.world_state, agent, action, self._redraw)
         self.world_state = out.state
-        self._cycle_durations[agent] = out.duration
         self._last_actions[agent] = action
-        if out.ok and not self._is_wait[agent][action]:
-            self._effort[agent] += out.duration
+        self._effort[agent] += out.effort
+        self._ok[agent] = out.ok
         events = out.events
         reward = out.reward
         if reward:
             self.tasks_solved += 1
             self.rewards = dict.fromkeys(self.agents, reward)
-            if self.continuing:
-                self.world_state = self.world.initial_state(self._rng)
-                events = (*events, _RESET_EVENT)
-            else:
+            if not self.continuing:
                 self._done_this_cycle = True
         else:
             self.rewards = dict.fromkeys(self.agents, 0.0)
@@ -249,31 +261,28 @@ class raw_env(AECEnv):
             for a in self.agents:
                 cumulative[a] += reward
         if agent is Agent.HUMAN:
-            self._end_cycle()
+            self._end_cycle(out)
             self.agent_selection = "robot"
         else:
+            self._robot_half = out
             self.agent_selection = "human"
 
-    def _end_cycle(self) -> None:
-        durations = self._cycle_durations
-        length = max(durations) + self._charged
-        last, is_wait, idle = self._last_actions, self._is_wait, self._idle
-        for a in (0, 1):
-            waited = last[a] >= 0 and is_wait[a][last[a]]
-            idle[a] += length if waited else length - durations[a]
-        self.clock = clock = self.clock + length
-        self.cycles += 1
-        self._cycle_durations = [0.0, 0.0]
+    def _end_cycle(self, human: Half) -> None:
+        time = self._clock
+        truncate = time.tick(self._robot_half, human, self._charged)
+        self.clock = clock = time.now
+        self.cycles = cycles = time.cycles
+        idle = time.idle
         self._charged = 0.0
-        truncate = (self.max_cycles is not None and self.cycles >= self.max_cycles) or (
-            self.time_budget is not None and clock >= self.time_budget
-        )
+        if self._history.k:
+            last, ok = self._last_actions, self._ok
+            self._history.record(np.array(last[:1]), np.array(ok[:1]), np.array(last[1:]), np.array(ok[1:]))
         done = self._done_this_cycle
         if done or truncate:
             for name in self.agents:
                 self.terminations[name] = done
                 self.truncations[name] = truncate and not done
-        cycles, tasks, effort, infos = self.cycles, self.tasks_solved, self._effort, self.infos
+        tasks, effort, infos = self.tasks_solved, self._effort, self.infos
         for i, name in enumerate(self.agents):
             info = infos[name]
             info["clock"], info["cycle"], info["tasks_solved"] = clock, cycles, tasks
@@ -303,7 +312,10 @@ class raw_env(AECEnv):
         if who is None:
             raise ConfigError(f"observe: unknown agent {agent!r}; the agents are {', '.join(AGENT_NAMES)}")
         state = self.world_state
-        return {"observation": self.world.facts(state), "action_mask": self.world.mask(state, who)}
+        facts = self.world.facts(state)
+        if self._history.k:
+            facts = np.concatenate([facts, self._history.features(who)[0]])
+        return {"observation": facts, "action_mask": self.world.mask(state, who)}
 
     def turn(self, agent: str | None = None) -> Turn:
         """A :class:`Turn` for ``agent`` (default: the selected one), for scripted actors.

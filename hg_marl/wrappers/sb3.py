@@ -27,6 +27,7 @@ from gymnasium.vector import AutoresetMode
 from stable_baselines3.common.vec_env import VecEnv, VecEnvWrapper
 
 from hg_marl.core.errors import ConfigError
+from hg_marl.registration import ROBOT_VIEW_ID, register_envs
 
 
 class BatchedVecEnv(VecEnv):
@@ -103,10 +104,19 @@ class BatchedVecEnv(VecEnv):
 
 
 def batched_vec_env(num_envs: int, **kwargs: Any) -> BatchedVecEnv:
-    """The robot's batched seat (``agents.views.robot_vector_env``) as an SB3 ``VecEnv``."""
-    from hg_marl.agents.views import robot_vector_env
+    """The robot's batched seat as an SB3 ``VecEnv``.
 
-    return BatchedVecEnv(robot_vector_env(num_envs=num_envs, autoreset_mode="same_step", **kwargs))
+    The seat is reached through Gymnasium's registry (its vector entry point, the batched
+    table with its partner compiled), as any user would, so this wrapper imports nothing
+    from the agents' layer above it.
+    """
+    import gymnasium
+
+    register_envs()
+    env = gymnasium.make_vec(
+        ROBOT_VIEW_ID, num_envs=num_envs, vectorization_mode="vector_entry_point", autoreset_mode="same_step", **kwargs
+    )
+    return BatchedVecEnv(env)
 
 
 class InfoMasks(VecEnvWrapper):

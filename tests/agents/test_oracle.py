@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from hg_marl.agents.humans import HumanError, make_human
+from hg_marl.agents.models import Budget
 from hg_marl.agents.oracle import OracleRobot, OracleTooLarge, layout_distribution, oracle_rate
 from hg_marl.agents.robots import make_robot
 from hg_marl.agents.views import RobotView
@@ -241,29 +242,23 @@ def test_model_size_counts_every_option_including_a_failed_one_after_the_complet
     assert result.rate_per_hour == pytest.approx(3600.0 / 11.0)
 
 
-def test_low_memory_stops_the_build_with_the_limit_named(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Below 512 MB of available memory the build stops with one message saying so (checked every 16,384 states)."""
-    from hg_marl.agents import oracle as oracle_module
-
-    monkeypatch.setattr(oracle_module, "_available_bytes", lambda: 100 * 2**20)
-    with pytest.raises(oracle_module.OracleTooLarge) as refused:
-        oracle_module.oracle_rate("roboergosum", "no_handover")  # 65k states: the check runs
+def test_low_memory_stops_the_build_with_the_limit_named() -> None:
+    """Below 512 MB of available memory the build stops with one message naming it, the phase and the progress."""
+    budget = Budget(free_memory=lambda: 100 * 2**20)
+    with pytest.raises(OracleTooLarge) as refused:
+        oracle_rate("roboergosum", "no_handover", budget=budget)
     message = str(refused.value)
     assert "less than 512 MB of memory left" in message and "\n" not in message
-    known = int(message.split("stopped at ")[1].split(" states")[0])
-    assert known > 16384  # the first check comes after 16,384 states were explored, not at every state
+    assert "in phase 'layouts' (0 of 5,040 layouts)" in message  # the first memory reading refuses
 
 
-def test_memory_is_checked_again_every_16384_states(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Memory that runs low after the first check stops the build at the second one (32,768 states explored)."""
-    from hg_marl.agents import oracle as oracle_module
-
-    readings = iter([8 * 2**30])  # plenty at the first check, then 100 MB
-    monkeypatch.setattr(oracle_module, "_available_bytes", lambda: next(readings, 100 * 2**20))
-    with pytest.raises(oracle_module.OracleTooLarge) as refused:
-        oracle_module.oracle_rate("roboergosum", "no_handover")  # 65k states: two checks on the way
-    known = int(str(refused.value).split("stopped at ")[1].split(" states")[0])
-    assert known > 32768
+def test_memory_is_read_again_while_the_model_grows() -> None:
+    """Memory that runs low after the layouts stops the exploration at its next memory reading."""
+    # plenty during the layouts (5,040 deals: one reading) and the first answers (one per 1,024 answers)
+    readings = iter([8 * 2**30] * 7)
+    budget = Budget(free_memory=lambda: next(readings, 100 * 2**20))
+    with pytest.raises(OracleTooLarge, match=r"less than 512 MB of memory left in phase 'explore"):
+        oracle_rate("roboergosum", "no_handover", budget=budget)
 
 
 def test_the_progress_bar_ends_at_the_models_state_count(capsys: pytest.CaptureFixture[str]) -> None:

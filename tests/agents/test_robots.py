@@ -213,8 +213,8 @@ def test_learner_fresh_per_reset_unless_given(world: World) -> None:
 
 
 def test_registry_lists_and_rejects() -> None:
-    assert set(available_robots()) == {"planner", "habit", "hybrid", "random", "sb3", "belief"}
-    listing = r"unknown robot 'oracle'; available: planner, habit, hybrid, random, sb3, belief"
+    assert set(available_robots()) == {"planner", "habit", "hybrid", "random", "sb3", "belief", "memory"}
+    listing = r"unknown robot 'oracle'; available: planner, habit, hybrid, random, sb3, belief, memory"
     with pytest.raises(ValueError, match=listing):
         make_robot("oracle")
     with pytest.raises(RobotError, match=r"robot 'habit' has no parameter 'beta'; its parameters: q_config"):

@@ -7,7 +7,7 @@ import math
 import pytest
 
 from hg_marl.core.errors import ConfigError, HgMarlError, HumanError, check_bool, check_finite, check_int
-from hg_marl.core.spec import REQUIRED, SpecError, bind, format_spec, parse_spec
+from hg_marl.core.spec import REQUIRED, AgentSpec, SpecError, bind, format_spec, parse_spec
 
 
 def test_parse_keeps_name_and_raw_texts() -> None:
@@ -117,3 +117,27 @@ def test_check_int_and_bool() -> None:
 
 def test_messages_are_one_line() -> None:
     assert str(HgMarlError("a\nb  c")) == "a b c"
+
+
+def test_split_specs_keeps_a_specs_parameters_together() -> None:
+    from hg_marl.core.spec import split_specs
+
+    assert split_specs("a,b:k=1,j=2,c") == ["a", "b:k=1,j=2", "c"]
+    assert split_specs(" lazy:p_idle=0.5 , ,cooperative") == ["lazy:p_idle=0.5", "cooperative"]
+    assert split_specs("") == []
+
+
+def test_an_agent_spec_is_parsed_once_and_typed_as_json_reads_it() -> None:
+    spec = AgentSpec.parse('belief:population=pop.toml,k=3,p=0.5,on=true,names=["a","b"]', "--robots")
+    assert spec.name == "belief"
+    assert dict(spec.params) == {"population": "pop.toml", "k": 3, "p": 0.5, "on": True, "names": ["a", "b"]}
+    assert AgentSpec.parse(spec) is spec  # already parsed: carried as it is
+    assert str(spec) == 'belief:k=3,names=["a","b"],on=true,p=0.5,population=pop.toml'  # keys sorted, compact JSON
+    assert AgentSpec.parse("planner") == AgentSpec("planner", {})
+
+
+def test_an_agent_spec_names_the_option_and_the_item_in_its_messages() -> None:
+    with pytest.raises(SpecError, match=r"^--robots 'planner:k': expected key=value"):
+        AgentSpec.parse("planner:k", "--robots")
+    with pytest.raises(SpecError, match=r"^--robots planner:x=\[1 x: not valid JSON: \[1$"):
+        AgentSpec.parse("planner:x=[1", "--robots", "--robots planner:x=[1")

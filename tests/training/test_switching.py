@@ -132,3 +132,30 @@ def test_robot_specs_are_typed_as_a_study_types_them() -> None:
         "at": [600.0, 1200.0],
         "by": "time",
     }
+
+
+def test_each_robot_spec_is_parsed_once_per_config(monkeypatch: pytest.MonkeyPatch) -> None:
+    from hg_marl.core.spec import AgentSpec
+    from hg_marl.training.switching import SwitchingConfig, check_config, switching_jobs
+
+    parsed: list[str] = []
+    real = AgentSpec.parse.__func__  # type: ignore[attr-defined]
+
+    def counting(cls: type[AgentSpec], text: str, what: str = "spec", where: str | None = None) -> AgentSpec:
+        parsed.append(text)
+        return real(cls, text, what, where)
+
+    monkeypatch.setattr(AgentSpec, "parse", classmethod(counting))
+    config = SwitchingConfig(
+        scenario="forced_coordination",
+        pairs=(("a", "b"),),
+        periods=(600.0, 1200.0),
+        robots=("planner", "planner:partner_aware=true"),
+        seeds=3,
+        duration=1800.0,
+        members=(("a", "preference"), ("b", "preference:handover=1.0,shared=-0.5")),
+    )
+    check_config(config)
+    jobs = switching_jobs(config)
+    assert len(jobs) == 1 * 2 * 2 * 3  # pairs x periods x robots x seeds
+    assert parsed == ["planner", "planner:partner_aware=true"]  # the check and all 12 jobs share one parse each

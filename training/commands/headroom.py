@@ -8,19 +8,6 @@ from typing import Annotated
 import typer
 
 
-def split_specs(text: str) -> list[str]:
-    """``a,b:k=1,j=2,c`` -> ``[a, b:k=1,j=2, c]``: a piece ``k=v`` without a name continues the spec before it."""
-    out: list[str] = []
-    for piece in (p.strip() for p in text.split(",")):
-        if not piece:
-            continue
-        if out and "=" in piece and ":" not in piece and ":" in out[-1]:
-            out[-1] += "," + piece
-        else:
-            out.append(piece)
-    return out
-
-
 def register(app: typer.Typer) -> None:
     """Add the ``headroom`` command to ``app``."""
 
@@ -42,6 +29,7 @@ def register(app: typer.Typer) -> None:
         from hg_marl.agents.oracle import OracleTooLarge
         from hg_marl.core.errors import ConfigError, check_finite
         from hg_marl.core.scenario import load_scenario
+        from hg_marl.core.spec import split_specs
         from hg_marl.training.commands.common import check_out_dir
         from hg_marl.training.headroom import partners, write_headroom
 

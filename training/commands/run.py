@@ -9,6 +9,7 @@ import typer
 
 from hg_marl.core.errors import ConfigError
 from hg_marl.core.scenario import load_scenario
+from hg_marl.core.spec import Spec
 from hg_marl.training.commands.common import check_duration, check_out_file, checked, default, spec_with
 from hg_marl.training.runner import RunConfig, check_cycles
 
@@ -75,10 +76,11 @@ def register(app: typer.Typer) -> None:
                 raise ConfigError(f"--criterion {criterion}: only for --robot hybrid, not {robot_spec.name}")
             if "criterion" in robot_spec.raw:
                 raise ConfigError("--criterion and --robot/--robot-param both set criterion")
-            robot_kwargs["criterion"] = criterion
+            # a shorthand for --robot-param criterion=...: one spec carries every robot parameter
+            robot_spec = Spec(robot_spec.name, {**robot_spec.raw, "criterion": criterion})
         if model is not None:
-            if robot_spec.name != "sb3":
-                raise ConfigError(f"--model is for --robot sb3, not {robot_spec.name}")
+            if robot_spec.name not in ("sb3", "memory"):
+                raise ConfigError(f"--model is for --robot sb3 or memory, not {robot_spec.name}")
             robot_kwargs["path"] = str(model)
         the_robot = checked(lambda: make_robot(robot_spec, **robot_kwargs))
         the_human = checked(lambda: make_human(spec_with(human, human_param, "--human", "--human-param")))

@@ -35,9 +35,9 @@ def register(app: typer.Typer) -> None:
 
         from hg_marl.agents.humans.population import load_population
         from hg_marl.core.errors import ConfigError
+        from hg_marl.core.spec import split_specs
         from hg_marl.training import plots
         from hg_marl.training.commands.common import check_duration, check_out_dir, check_workers, counting_bar
-        from hg_marl.training.commands.headroom import split_specs
         from hg_marl.training.io import atomic_write
         from hg_marl.training.limits import MAX_SEEDS, check_count
         from hg_marl.training.switching import (

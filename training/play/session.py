@@ -127,12 +127,12 @@ def build_robot(spec: str) -> Actor:
         RobotError: an unknown robot or parameter, or a bad value (the message names it).
     """
     parsed = parse_spec(spec, "--robot")
-    cls = ROBOTS.get(parsed.name)
-    if cls is None:
+    entry = ROBOTS.get(parsed.name)
+    if entry is None:
         raise RobotError(f"--robot {spec!r}: unknown robot {parsed.name!r}; available: {', '.join(ROBOTS)}")
     defaults = {
         name: (None if p.default is inspect.Parameter.empty else p.default)
-        for name, p in inspect.signature(cls).parameters.items()
+        for name, p in inspect.signature(entry.factory()).parameters.items()
     }
     params = bind(parsed, defaults, what=f"robot {parsed.name!r}", error=RobotError)
     try:

@@ -1,0 +1,130 @@
+"""The partner's answers as arrays: a distribution per (mid-cycle state, robot action seen), stepped.
+
+The model builder asks for the answers of a whole batch of distinct mid-cycle keys at
+once. :class:`AnswerTable` keeps them as a compiled partner does (``agents/compiled.py``):
+sorted packed keys, segment starts, actions and probabilities, looked up with one
+``searchsorted``, and per entry the answer's outcome (the next robot-turn state's key,
+as is and in canonical labelling, and the answer's duration), stepped once with the
+batched rules when the entry is made. Keys the table lacks are answered by the live
+stationary human, one Python call per distinct key, with a budget reading every
+:data:`CHECK_EVERY` answers: a planner-driven human may spend a search on one answer.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from hg_marl.agents.models.budget import Budget
+from hg_marl.agents.models.packing import StatePacker
+from hg_marl.agents.models.partners import batch_answers
+from hg_marl.core import Agent, State, World
+from hg_marl.envs.batched import BatchedRules
+
+CHECK_EVERY = 4
+"""Live answers computed between two budget readings (one answer may cost a planner search; the
+time budget's timer, ``Budget.deadline``, interrupts a long one anyway)."""
+
+FIELDS = ("actions", "probs", "next", "canonical", "d_human")
+"""Per-entry arrays (entries of key ``i`` are ``starts[i]:starts[i + 1]``)."""
+
+
+class AnswerTable:
+    """A stationary human's answers by packed (state, seen) key, grown on demand.
+
+    Args:
+        world: the world.
+        human: a reset stationary human with ``distribution(world, state, robot_action)``.
+        packer: the builder's packer (keys include the robot action seen).
+        budget: read between live answers (phase :attr:`phase`).
+        arrays: answer on arrays where the human has an array version (False: always live).
+    """
+
+    def __init__(
+        self, world: World, human: Any, packer: StatePacker, budget: Budget | None = None, arrays: bool = True
+    ) -> None:
+        self.world, self.human, self.packer = world, human, packer
+        self.budget = budget
+        self.rules = BatchedRules(world)
+        self.uses_robot_action = bool(getattr(human, "uses_robot_action", False))
+        self.keys = np.zeros(0, dtype=np.int64)
+        self.starts = np.zeros(1, dtype=np.int64)
+        self.entries: dict[str, np.ndarray] = {
+            "actions": np.zeros(0, dtype=np.int64),
+            "probs": np.zeros(0, dtype=np.float64),
+            "next": np.zeros(0, dtype=np.int64),
+            "canonical": np.zeros(0, dtype=np.int64),
+            "d_human": np.zeros(0, dtype=np.float64),
+        }
+        self.batch = batch_answers(world, human) if arrays else None
+        """The human's answers on arrays (``agents/models/partners.py``), None to ask it live."""
+        self.live_calls = 0
+        """Distributions asked of the live human (the rest came from the table)."""
+        self.phase = "answers"
+
+    def lookup(self, keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(first entry, entry count) per key; every key must be known (see :meth:`ensure`)."""
+        idx = np.searchsorted(self.keys, keys)
+        return self.starts[idx], self.starts[idx + 1] - self.starts[idx]
+
+    def ensure(self, keys: np.ndarray) -> None:
+        """Answer the distinct sorted ``keys`` the table lacks with the live human, and store them."""
+        if len(self.keys):
+            idx = np.minimum(np.searchsorted(self.keys, keys), len(self.keys) - 1)
+            missing = keys[self.keys[idx] != keys]
+        else:
+            missing = keys
+        if not len(missing):
+            return
+        states, seen = self.packer.unpack(missing)
+        if self.batch is not None:
+            if self.budget is not None:
+                self.budget.check(self.phase, 0, len(missing), "partner answers on arrays")
+            size, actions, probs_arr = self.batch(states)
+            self._store(missing, size, actions, probs_arr)
+            return
+        wheres, ats = states.where.tolist(), states.robot_at.tolist()
+        bys, objs, seens = states.offer_by.tolist(), states.offer_obj.tolist(), seen.tolist()
+        acts: list[int] = []
+        probs: list[float] = []
+        sizes = [0] * len(missing)
+        world, distribution, budget = self.world, self.human.distribution, self.budget
+        for i in range(len(missing)):
+            if budget is not None and i % CHECK_EVERY == 0:
+                budget.check(self.phase, i, len(missing), "partner answers of this step", memory=i % 4096 == 0)
+            dist = distribution(world, State(tuple(wheres[i]), ats[i], bys[i], objs[i]), seens[i])
+            for h, p in dist:
+                if p > 0.0:
+                    acts.append(h)
+                    probs.append(p)
+                    sizes[i] += 1
+        self.live_calls += len(missing)
+        self._store(missing, np.array(sizes, dtype=np.int64), np.array(acts, dtype=np.int64), np.array(probs))
+
+    def _store(self, missing: np.ndarray, size: np.ndarray, actions: np.ndarray, probs: np.ndarray) -> None:
+        """Step the answers of ``missing`` once and merge them into the table."""
+        b, _ = self.packer.unpack(np.repeat(missing, size))
+        _, d_human, _ = self.rules.step(b, Agent.HUMAN, actions)
+        nxt = self.packer.pack(b)
+        self.packer.canonical(b)
+        new = {
+            "actions": actions,
+            "probs": probs.astype(np.float64, copy=False),
+            "next": nxt,
+            "canonical": self.packer.pack(b),
+            "d_human": d_human,
+        }
+        self._merge(missing, size, new)
+
+    def _merge(self, keys: np.ndarray, sizes: np.ndarray, new: dict[str, np.ndarray]) -> None:
+        n_old = len(self.entries["actions"])
+        all_keys = np.concatenate([self.keys, keys])
+        all_sizes = np.concatenate([np.diff(self.starts), sizes])
+        first = np.concatenate([self.starts[:-1], n_old + np.concatenate([[0], np.cumsum(sizes)[:-1]])])
+        order = np.argsort(all_keys, kind="stable")
+        sizes_sorted = all_sizes[order]
+        starts = np.concatenate([[0], np.cumsum(sizes_sorted)]).astype(np.int64)
+        gather = np.repeat(first[order] - starts[:-1], sizes_sorted) + np.arange(starts[-1])
+        self.keys, self.starts = all_keys[order], starts
+        self.entries = {k: np.concatenate([self.entries[k], new[k]])[gather] for k in FIELDS}

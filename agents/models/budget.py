@@ -1,0 +1,180 @@
+"""One budget for every exact-model computation: states, bytes and wall seconds, checked in every phase.
+
+An exact reference (the oracle, the headroom matrix) goes through phases: counting the
+layouts, enumerating them, the partner's first answers on them, exploring the model,
+solving it. Each phase calls :meth:`Budget.check` with how far it got, often enough that
+the work between two calls is small (a few thousand cheap items, or one partner answer);
+a refusal is one line, :class:`OverBudget`, naming the budget, the phase and the progress.
+
+Wall time, not CPU time: a user waiting on ``--max-seconds 5`` waits on the clock on the
+wall. A single partner answer may itself be long (a planner search on a large table), so
+on the main thread :meth:`Budget.deadline` also arms a real-time timer that raises the same
+refusal where the work happens to be when the time runs out; the budget therefore holds
+within its seconds plus the time to unwind, whatever the phase. Off the main thread
+(no signals there) the checks alone hold it.
+
+Tests count work, not seconds: ``clock`` may be any function returning seconds (a test
+passes one that advances by one per call), and the states budget counts states.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import signal
+import threading
+import time
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from types import FrameType
+
+DEFAULT_SECONDS: float | None = None
+"""The library's default wall-time budget: none, so that what a study, a robot or a report
+computes (and stores) never depends on how loaded the machine was. The commands take an
+explicit ``--max-seconds`` (a person waiting at a terminal), and the states and memory
+budgets bound every build."""
+DEFAULT_MEMORY = 4 * 2**30
+"""The default resident memory budget (bytes) of the process during a solve."""
+DEFAULT_STATES = 1_500_000
+"""The default states budget of one model."""
+MIN_FREE_BYTES = 512 * 2**20
+"""Below this much memory available to the kernel, a build stops whatever its own budget."""
+
+
+class OverBudget(RuntimeError):
+    """A computation stopped at its budget; the message is one line naming budget, phase and progress."""
+
+
+def rss() -> int:
+    """This process's resident memory in bytes (``/proc/self/statm``; peak ``ru_maxrss`` elsewhere)."""
+    try:
+        with open("/proc/self/statm", encoding="ascii") as f:
+            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        import resource
+
+        return int(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss) * 1024
+
+
+def available_bytes() -> int | None:
+    """Memory the kernel says is available (Linux ``MemAvailable``), or None if unknown."""
+    try:
+        with open("/proc/meminfo", encoding="ascii") as f:
+            for line in f:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        return None
+    return None
+
+
+@dataclass
+class Budget:
+    """What one exact computation may spend (None: no limit on that resource).
+
+    Args:
+        seconds: wall seconds from ``start``.
+        memory: resident bytes of the process.
+        states: model states (a phase reports them with ``states=``).
+        subject: how the refusal names the computation (``"the oracle for 'paper2015'"``).
+        hint: the advice closing a refusal.
+        clock: the clock ``seconds`` is measured on (tests pass a counter).
+    """
+
+    seconds: float | None = DEFAULT_SECONDS
+    memory: int | None = DEFAULT_MEMORY
+    states: int | None = DEFAULT_STATES
+    subject: str = "the computation"
+    hint: str = "raise the budget or use a smaller scenario"
+    clock: Callable[[], float] = time.perf_counter
+    start: float = field(default=math.nan)
+    phase: str = "start"
+    """The phase under way (the last one :meth:`check` was told of)."""
+    progress: str = ""
+    """How far that phase got, in words."""
+    checks: int = 0
+    """How many times :meth:`check` was called (tests count phases with it)."""
+    free_memory: Callable[[], int | None] = available_bytes
+
+    def __post_init__(self) -> None:
+        if math.isnan(self.start):
+            self.start = self.clock()
+
+    def spent(self) -> float:
+        """Seconds since ``start`` on ``clock``."""
+        return self.clock() - self.start
+
+    def check(
+        self,
+        phase: str,
+        done: int,
+        total: int | None = None,
+        unit: str = "states",
+        *,
+        states: int | None = None,
+        memory: bool = True,
+    ) -> None:
+        """Raise :class:`OverBudget` if over any budget; record where the work is either way.
+
+        ``done`` (of ``total``) ``unit`` tell how far ``phase`` got; ``states``: the model's
+        states so far (checked against the states budget); ``memory``: read the resident
+        memory too (a system call: callers checking very often pass False most times).
+        """
+        self.checks += 1
+        self.phase = phase
+        self.progress = f"{done:,} of {total:,} {unit}" if total is not None else f"{done:,} {unit}"
+        if self.states is not None and states is not None and states > self.states:
+            self._refuse(f"max_states={self.states:,} states ({states:,} states)", "--max-states")
+        if self.seconds is not None:
+            spent = self.spent()
+            if spent > self.seconds:
+                self._refuse(f"{self.seconds:g} s of wall time (after {spent:.1f} s)", "--max-seconds")
+        if memory:
+            if self.memory is not None and rss() > self.memory:
+                self._refuse(f"{self.memory / 2**30:g} GB of memory", "--max-memory")
+            free = self.free_memory()
+            if free is not None and free < MIN_FREE_BYTES:
+                self._refuse(f"the machine: less than {MIN_FREE_BYTES // 2**20} MB of memory left", "--max-states")
+
+    def refuse_count(self, phase: str, count: int, unit: str) -> None:
+        """Refuse before a phase that would enumerate ``count`` items, more than the states budget."""
+        if self.states is not None and count > self.states:
+            self.phase, self.progress = phase, f"0 of {count:,} {unit}"
+            self._refuse(f"max_states={self.states:,} ({count:,} {unit} to enumerate)", "--max-states")
+
+    def _refuse(self, what: str, option: str) -> None:
+        raise OverBudget(
+            f"{self.subject} is over its budget of {what} in phase {self.phase!r} ({self.progress}); "
+            f"raise {option} or {self.hint}"
+        )
+
+    @contextmanager
+    def deadline(self) -> Iterator[None]:
+        """Within the block, a real-time timer refuses at the time budget wherever the work is.
+
+        Only on the main thread (where signals are delivered); elsewhere, and with no time
+        budget, the block runs with the checks alone. The previous handler and timer are
+        restored on exit.
+        """
+        if (
+            self.seconds is None
+            or threading.current_thread() is not threading.main_thread()
+            or self.clock is not time.perf_counter
+        ):
+            yield
+            return
+        left = max(self.seconds - self.spent(), 0.0) + 0.05
+
+        def ring(signum: int, frame: FrameType | None) -> None:
+            self._refuse(f"{self.seconds:g} s of wall time (after {self.spent():.1f} s)", "--max-seconds")
+
+        previous = signal.signal(signal.SIGALRM, ring)
+        old_delay, old_interval = signal.setitimer(signal.ITIMER_REAL, left)
+        try:
+            yield
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, previous)
+            if old_delay > 0:
+                signal.setitimer(signal.ITIMER_REAL, old_delay, old_interval)

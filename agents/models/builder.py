@@ -1,0 +1,332 @@
+"""The exact semi-MDP of a scenario against a stationary partner, built breadth-first on arrays.
+
+States are packed into int64 keys (:class:`~hg_marl.agents.models.packing.StatePacker`).
+A level of the breadth-first search is a batch of robot-turn states: the robot's
+options are read from :meth:`BatchedRules.masks` (every feasible action, in index order,
+then the first infeasible one standing for them all, as the oracle models them), stepped
+with :meth:`BatchedRules.step`; the distinct mid-cycle keys (``np.unique``) get the
+partner's answers from an :class:`~hg_marl.agents.models.answers.AnswerTable` (arrays,
+grown by the live human for keys it lacks), which are stepped again; the next states'
+keys are deduplicated against the sorted known keys with ``searchsorted``. Nothing here
+is written per state in Python except the live partner's answers.
+
+The result, :class:`Model`, is the oracle's model (``agents/oracle.py``): pairs (state,
+robot action) contiguous per state, transitions per pair in CSR form (``t_start``) with
+probabilities and cycle seconds ``max(d_robot, d_human)``, the completing ``wait``
+marked terminal, and the regeneration (the re-drawn tables and the partner's first answer
+on them). A test builds it beside the oracle's Python enumeration and requires the same
+states, transitions and rates.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
+
+import numpy as np
+from scipy import sparse
+from tqdm import tqdm
+
+from hg_marl.agents.models.answers import AnswerTable
+from hg_marl.agents.models.budget import Budget
+from hg_marl.agents.models.packing import StatePacker
+from hg_marl.core import Agent, State, World
+from hg_marl.envs.batched import BatchedRules, BatchState
+
+CHUNK = 1 << 15
+"""Robot-turn states expanded per batch at most (bounds the batch's arrays; the budget is read per batch)."""
+FIRST_CHUNK = 64
+"""The first batch's size, doubled per batch up to :data:`CHUNK`: a states budget is then
+overrun by at most one batch's discoveries while the model is small, and a large model is
+still built in large batches."""
+
+
+@dataclass
+class Dynamics:
+    """One partner's transitions on a model: CSR over pairs, and its regeneration."""
+
+    t_start: np.ndarray
+    """(pairs + 1,) transitions of pair ``p`` are ``t_start[p]:t_start[p + 1]``."""
+    t_next: np.ndarray
+    t_prob: np.ndarray
+    t_tau: np.ndarray
+    regen_next: np.ndarray
+    """The re-drawn tables after the partner's first answer (state ids), with probability and seconds."""
+    regen_prob: np.ndarray
+    regen_tau: np.ndarray
+
+
+@dataclass
+class Model:
+    """A semi-MDP on packed robot-turn states (ids are positions in ``keys``), one dynamics per partner."""
+
+    packer: StatePacker
+    keys: np.ndarray
+    """(n,) the packed state of each id."""
+    pair_start: np.ndarray
+    """(n + 1,) pairs of state ``s`` are ``pair_start[s]:pair_start[s + 1]``."""
+    pair_action: np.ndarray
+    pair_terminal: np.ndarray
+    """Whether the pair is the completing ``wait`` (worth 1, followed by the re-draw)."""
+    dynamics: list[Dynamics]
+    """Per partner (the builder's ``answers`` in order); the state set is closed under all of them."""
+    n_layouts: int
+    partner: int = 0
+    """The partner the ``t_*`` and ``regen_*`` shortcuts and the solver read."""
+
+    def of(self, partner: int) -> Model:
+        """The same model read for another partner (arrays shared)."""
+        return replace(self, partner=partner)
+
+    @property
+    def t_start(self) -> np.ndarray:
+        return self.dynamics[self.partner].t_start
+
+    @property
+    def t_next(self) -> np.ndarray:
+        return self.dynamics[self.partner].t_next
+
+    @property
+    def t_prob(self) -> np.ndarray:
+        return self.dynamics[self.partner].t_prob
+
+    @property
+    def t_tau(self) -> np.ndarray:
+        return self.dynamics[self.partner].t_tau
+
+    @property
+    def regen_next(self) -> np.ndarray:
+        return self.dynamics[self.partner].regen_next
+
+    @property
+    def regen_prob(self) -> np.ndarray:
+        return self.dynamics[self.partner].regen_prob
+
+    @property
+    def regen_tau(self) -> np.ndarray:
+        return self.dynamics[self.partner].regen_tau
+
+    @property
+    def n(self) -> int:
+        """Robot-turn states."""
+        return len(self.keys)
+
+    @property
+    def n_pairs(self) -> int:
+        """(state, robot action) pairs."""
+        return len(self.pair_action)
+
+    def transitions(self) -> sparse.csr_matrix:
+        """(pairs, states) probabilities as CSR."""
+        return sparse.csr_matrix((self.t_prob, self.t_next, self.t_start), shape=(self.n_pairs, self.n))
+
+    def pair_state(self) -> np.ndarray:
+        """The state of each pair."""
+        return np.repeat(np.arange(self.n), np.diff(self.pair_start))
+
+    def t_pair(self) -> np.ndarray:
+        """The pair of each transition."""
+        return np.repeat(np.arange(self.n_pairs), np.diff(self.t_start))
+
+    def states(self) -> list[State]:
+        """The states as :class:`State` tuples, by id (for tests and small models)."""
+        b, _ = self.packer.unpack(self.keys)
+        return [b.state(i) for i in range(len(b))]
+
+
+def _rows(b: BatchState, rows: np.ndarray) -> BatchState:
+    return BatchState(b.where[rows], b.robot_at[rows], b.offer_by[rows], b.offer_obj[rows])
+
+
+class _Index:
+    """Known state keys, sorted, with their ids; ids in order of discovery."""
+
+    def __init__(self) -> None:
+        self.sorted = np.zeros(0, dtype=np.int64)
+        self.ids = np.zeros(0, dtype=np.int64)
+        self.by_id: list[np.ndarray] = []
+        self.n = 0
+
+    def add(self, keys: np.ndarray) -> None:
+        """Give ids to the keys not known yet (``keys`` distinct, in the order ids are wanted)."""
+        pos = np.searchsorted(self.sorted, keys)
+        hit = pos < len(self.sorted)
+        hit[hit] = self.sorted[pos[hit]] == keys[hit]
+        new = keys[~hit]
+        if not len(new):
+            return
+        ids = np.arange(self.n, self.n + len(new), dtype=np.int64)
+        order = np.argsort(new, kind="stable")
+        self.sorted = np.insert(self.sorted, pos[~hit][order], new[order])
+        self.ids = np.insert(self.ids, pos[~hit][order], ids[order])
+        self.by_id.append(new)
+        self.n += len(new)
+
+    def id_of(self, keys: np.ndarray) -> np.ndarray:
+        """Ids of known keys."""
+        return self.ids[np.searchsorted(self.sorted, keys)]
+
+    def keys(self) -> np.ndarray:
+        return np.concatenate(self.by_id) if self.by_id else np.zeros(0, dtype=np.int64)
+
+
+def _first_unique(keys: np.ndarray) -> np.ndarray:
+    """The distinct keys in order of first occurrence."""
+    _, first = np.unique(keys, return_index=True)
+    return keys[np.sort(first)]
+
+
+class _Answered:
+    """Answers of distinct mid-cycle keys: per key a block of (next key, probability, seconds)."""
+
+    def __init__(self, table: AnswerTable, mids: np.ndarray, canonical: bool) -> None:
+        table.ensure(mids)
+        start, size = table.lookup(mids)
+        self.block = np.concatenate([[0], np.cumsum(size)]).astype(np.int64)
+        entry = np.repeat(start - self.block[:-1], size) + np.arange(self.block[-1])
+        e = table.entries
+        self.next = e["canonical" if canonical else "next"][entry]
+        self.prob = e["probs"][entry]
+        self.d_human = e["d_human"][entry]
+        self.size = size
+
+
+def _regen(
+    world: World, table: AnswerTable, lay: BatchState, lay_p: np.ndarray, canonical: bool
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The partner's first answer on each re-drawn table: (next key, probability, seconds) flat."""
+    wait = world.table.wait[Agent.ROBOT]
+    table.phase = "first answers"
+    mid = table.packer.pack(lay, np.full(len(lay), wait if table.uses_robot_action else -1, dtype=np.int64))
+    u, inv = np.unique(mid, return_inverse=True)
+    first = _Answered(table, u, canonical)
+    count = first.size[inv]
+    rows = np.repeat(np.arange(len(lay)), count)
+    entry = np.repeat(first.block[inv] - np.concatenate([[0], np.cumsum(count)[:-1]]), count) + np.arange(len(rows))
+    return first.next[entry], lay_p[rows] * first.prob[entry], np.maximum(world.durations.wait, first.d_human[entry])
+
+
+def build_model(
+    world: World,
+    answers: AnswerTable | Sequence[AnswerTable],
+    layouts: list[tuple[State, float]],
+    *,
+    failed_actions: bool = True,
+    canonical: bool = False,
+    budget: Budget | None = None,
+    progress: bool = False,
+    label: str = "model",
+) -> Model:
+    """The model reachable from ``layouts`` (already canonical when ``canonical``) against ``answers``.
+
+    ``answers``: one partner, or several (the states are then closed under every
+    partner's answers, each partner's transitions kept apart: the headroom's joint model).
+    ``canonical``: keep one state per relabelling class (equivariant partners, as the
+    oracle's symmetry reduction). The budget is read per batch of states (phase
+    ``"explore"``) and between the partners' live answers; its states budget counts the
+    states known.
+    """
+    tables = [answers] if isinstance(answers, AnswerTable) else list(answers)
+    budget = budget or Budget(None, None, None)
+    rules = BatchedRules(world)
+    packer = tables[0].packer
+    wait = rules.wait[Agent.ROBOT]
+    n_robot = rules.n_actions[Agent.ROBOT]
+    lay = BatchState.of([s for s, _ in layouts])
+    lay_p = np.array([p for _, p in layouts], dtype=np.float64)
+    regen = [_regen(world, t, lay, lay_p, canonical) for t in tables]
+    index = _Index()
+    index.add(_first_unique(np.concatenate([packer.pack(lay), *(r[0] for r in regen)])))
+    budget.check("explore", 0, unit=f"states explored ({index.n:,} known)", states=index.n)
+    for t in tables:
+        t.phase = "explore: partner answers"
+    parts: dict[str, list[np.ndarray]] = {k: [] for k in ("size", "action", "terminal")}
+    flows: list[dict[str, list[np.ndarray]]] = [{k: [] for k in ("tcount", "next", "prob", "tau")} for _ in tables]
+    bar = tqdm(
+        desc=f"{label}: states", unit=" states", disable=not progress, file=sys.stderr, dynamic_ncols=True, leave=False
+    )
+    lo, size = 0, FIRST_CHUNK
+    try:
+        while lo < index.n:
+            hi = min(lo + size, index.n)
+            size = min(2 * size, CHUNK)
+            budget.check("explore", lo, unit=f"states explored ({index.n:,} known)", states=index.n)
+            b, _ = packer.unpack(index.keys()[lo:hi] if len(index.by_id) > 1 else index.by_id[0][lo:hi])
+            mask = rules.masks(b, Agent.ROBOT)
+            ps, pa = np.nonzero(mask)
+            order_key = ps * (n_robot + 1) + pa
+            if failed_actions:
+                fails = np.flatnonzero(~mask.all(axis=1))
+                ps = np.concatenate([ps, fails])
+                pa = np.concatenate([pa, np.argmin(mask[fails], axis=1)])
+                order_key = np.concatenate([order_key, fails * (n_robot + 1) + n_robot])
+            order = np.argsort(order_key, kind="stable")
+            ps, pa = ps[order], pa[order]
+            clean = rules.is_clean(b)[ps]
+            pb = _rows(b, ps)
+            ok, d_robot, _ = rules.step(pb, Agent.ROBOT, pa, mask[ps])
+            terminal = ok & (pa == wait) & clean
+            live = np.flatnonzero(~terminal)
+            live_b = _rows(pb, live)
+            outcomes = []
+            for t in tables:
+                seen = np.where(ok[live], pa[live], -1) if t.uses_robot_action else np.full(len(live), -1, np.int64)
+                u, inv = np.unique(packer.pack(live_b, seen), return_inverse=True)
+                ans = _Answered(t, u, canonical)
+                tcount = np.zeros(len(pa), dtype=np.int64)
+                tcount[live] = ans.size[inv]
+                pair_of = np.repeat(np.arange(len(pa)), tcount)
+                block = np.zeros(len(pa), dtype=np.int64)
+                block[live] = ans.block[inv]
+                entry = np.repeat(block - np.concatenate([[0], np.cumsum(tcount)[:-1]]), tcount)
+                entry += np.arange(len(pair_of))
+                outcomes.append((tcount, pair_of, ans, entry))
+            uniq, inv = np.unique(np.concatenate([o[2].next[o[3]] for o in outcomes]), return_inverse=True)
+            index.add(uniq)  # sorted: new states get ids in key order
+            ids = index.id_of(uniq)[inv]
+            at = 0
+            for flow, (tcount, pair_of, ans, entry) in zip(flows, outcomes, strict=True):
+                flow["tcount"].append(tcount)
+                flow["next"].append(ids[at : at + len(entry)])
+                flow["prob"].append(ans.prob[entry])
+                flow["tau"].append(np.maximum(d_robot[pair_of], ans.d_human[entry]))
+                at += len(entry)
+            parts["size"].append(np.bincount(ps, minlength=hi - lo))
+            parts["action"].append(pa)
+            parts["terminal"].append(terminal)
+            bar.update(hi - lo)
+            bar.set_postfix(known=index.n, refresh=False)
+            lo = hi
+        bar.set_postfix(known=index.n)  # the last frame reads the model's count
+    finally:
+        bar.close()
+    budget.check("explore", lo, unit="states explored", states=index.n)
+
+    def cat(arrays: list[np.ndarray], dtype: type) -> np.ndarray:
+        return np.concatenate(arrays).astype(dtype, copy=False) if arrays else np.zeros(0, dtype=dtype)
+
+    def starts(counts: list[np.ndarray]) -> np.ndarray:
+        return np.concatenate([[0], np.cumsum(cat(counts, np.int64))]).astype(np.int64)
+
+    dynamics = [
+        Dynamics(
+            t_start=starts(flow["tcount"]),
+            t_next=cat(flow["next"], np.int64),
+            t_prob=cat(flow["prob"], np.float64),
+            t_tau=cat(flow["tau"], np.float64),
+            regen_next=index.id_of(keys),
+            regen_prob=prob,
+            regen_tau=tau,
+        )
+        for flow, (keys, prob, tau) in zip(flows, regen, strict=True)
+    ]
+    return Model(
+        packer=packer,
+        keys=index.keys(),
+        pair_start=starts(parts["size"]),
+        pair_action=cat(parts["action"], np.int64),
+        pair_terminal=cat(parts["terminal"], bool),
+        dynamics=dynamics,
+        n_layouts=len(layouts),
+    )

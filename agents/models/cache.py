@@ -1,0 +1,84 @@
+"""Exact results cached on disk by content, as the compiled partners are (``agents/compiled.py``).
+
+An oracle's result (its rate, sizes, and its policy and values as packed keys and arrays)
+is stored as one ``.npz`` under a folder the user named, keyed by the sha256 of
+everything that made it: the scenario and durations (their ``repr``), the human's spec
+and the content of any file it names (``path=``), the oracle's options, and the source of
+every module that can change an answer (``compiled.source_digest``: the core rules, the
+humans, the planner, this package, the oracle). The entry stores its key and is refused
+if the key differs; a corrupt entry is rebuilt. Writes are atomic (a temporary file in
+the same folder, then a rename). ``cache=True`` uses ``$HG_MARL_CACHE/oracle`` when that
+variable is set and no disk cache otherwise; a human given as an instance has no content
+key and is never cached.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import os
+import tempfile
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from hg_marl.core import World
+
+
+def cache_folder(cache: Path | str | bool | None) -> Path | None:
+    """The folder ``cache`` names (True: ``$HG_MARL_CACHE/oracle`` if set), or None for no disk cache."""
+    if cache is None or cache is False:
+        return None
+    if cache is True:
+        root = os.environ.get("HG_MARL_CACHE")
+        return Path(root) / "oracle" if root else None
+    return Path(cache)
+
+
+def result_key(world: World, spec: str, options: dict[str, Any]) -> str:
+    """The content key of one result: the compiled partners' key of (world, spec) plus the options."""
+    from hg_marl.agents.compiled import cache_key
+
+    h = hashlib.sha256(cache_key(world, spec).encode())
+    for name in sorted(options):
+        h.update(f"\0{name}={options[name]!r}".encode())
+    return h.hexdigest()
+
+
+def entry_path(folder: Path, world: World, key: str) -> Path:
+    """Where the entry of ``key`` lives."""
+    return folder / f"{world.scenario.name.split(':')[0]}-{key[:24]}.npz"
+
+
+def load_entry(path: Path, key: str) -> dict[str, np.ndarray] | None:
+    """The arrays of the entry at ``path`` if it exists and holds ``key``; None otherwise (corrupt included)."""
+    if not path.exists():
+        return None
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            if str(data["key"]) != key:
+                return None
+            return {k: data[k] for k in data.files if k != "key"}
+    except (OSError, ValueError, KeyError, EOFError):
+        return None
+
+
+def save_entry(path: Path, key: str, arrays: dict[str, np.ndarray]) -> None:
+    """Write the entry atomically (no pickle); a folder that cannot be written is left alone."""
+    buf = io.BytesIO()
+    np.savez(buf, key=np.array(key), **arrays)  # type: ignore[arg-type]
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    except OSError:
+        return
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(buf.getvalue())
+            f.flush()
+            os.fsync(f.fileno())
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except OSError:
+        Path(tmp).unlink(missing_ok=True)  # nothing half-written is left behind

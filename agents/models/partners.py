@@ -1,0 +1,127 @@
+"""Stationary partners whose answers are computed on arrays, a batch of states at a time.
+
+The model builder's cost, once the robot's side is on arrays, is the partner's answers:
+one Python call per distinct mid-cycle state. For the partners whose rule is a few table
+look-ups per action, :func:`batch_answers` returns the same distributions for a whole
+batch with numpy; the builder's :class:`~hg_marl.agents.models.AnswerTable` uses it and
+falls back to the live human for every other partner. Each function below restates its
+human's rule (``agents/humans/random_human.py``, ``agents/humans/preference.py``) in the
+same floating-point order, and a test compares them with the live humans state by state.
+
+- ``random`` (``feasible_only``): uniform over the human's mask.
+- ``preference`` with ``temperature=0``: each feasible action's score, the best one above 0
+  in index order with the same tie rule (``_TIE``), the offer taken with ``accept``, mixed
+  with ``wait`` by ``p_idle``. A softmax (``temperature > 0``) stays live.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from hg_marl.core import Agent, Kind, World
+from hg_marl.envs.batched import BatchedRules, BatchState
+
+Answers = Callable[[BatchState], tuple[np.ndarray, np.ndarray, np.ndarray]]
+"""A batch of mid-cycle states -> (entries per state, actions, probabilities), entries in index order."""
+
+_TIE = 1e-9  # agents/humans/preference.py's tie rule
+
+
+def batch_answers(world: World, human: Any) -> Answers | None:
+    """An array version of ``human``'s distribution, or None when it has none (answered live)."""
+    from hg_marl.agents.humans.preference import PreferenceHuman
+    from hg_marl.agents.humans.random_human import RandomHuman
+
+    if type(human) is RandomHuman and human.feasible_only:
+        return _uniform(BatchedRules(world))
+    if type(human) is PreferenceHuman and human.temperature == 0.0:
+        return _preference(world, human)
+    return None
+
+
+def _uniform(rules: BatchedRules) -> Answers:
+    def answers(b: BatchState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        mask = rules.masks(b, Agent.HUMAN)
+        sizes = mask.sum(axis=1)
+        rows, actions = np.nonzero(mask)
+        return sizes, actions, 1.0 / sizes[rows]
+
+    return answers
+
+
+def _preference(world: World, h: Any) -> Answers:
+    rules = BatchedRules(world)
+    t = world.table
+    sc = world.scenario
+    specs = t.specs[Agent.HUMAN]
+    n_actions = len(specs)
+    wait = rules.wait[Agent.HUMAN]
+    robot_reaches = np.zeros(t.n_places, dtype=bool)
+    robot_reaches[: t.n_spots] = [bool(s.reach.robot_from) for s in sc.spots]
+    colour_match = [bool(h.colour) and c == h.colour for c in sc.object_colours]
+    held = np.full(n_actions, -np.inf)  # the score of an action on the held object
+    for i, (kind, _, target, duration) in enumerate(specs):
+        if kind in (Kind.THROW, Kind.GIVE, Kind.PLACE):
+            held[i] = h._held_score(kind, target, duration, tuple(robot_reaches[: t.n_spots].tolist()))
+    first = rules.first[Agent.HUMAN]
+    pick, throw, give, take = (first[k] for k in (Kind.PICK, Kind.THROW, Kind.GIVE, Kind.TAKE))
+    place = first[Kind.PLACE]
+    m, n = t.n_spots, t.n_objects
+    hand = t.hand[Agent.HUMAN]
+    spot_human = np.array(t.spot_human, dtype=bool)
+    throw_to = rules.throw_to[Agent.HUMAN]
+    pick_cost = [h.haste * specs[pick + o].duration for o in range(n)]
+    bonus_colour = [h.colour_bonus if colour_match[o] else 0.0 for o in range(n)]
+
+    def answers(b: BatchState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        size = len(b)
+        rows = np.arange(size)
+        mask = rules.masks(b, Agent.HUMAN)
+        score = np.where(mask, held[None, :], -np.inf)
+        score[:, wait] = 0.0
+        score[:, take : take + n] = -np.inf
+        occupied = np.zeros((size, t.n_places), dtype=bool)
+        occupied[rows[:, None], b.where] = True
+        for o in range(n):
+            can = mask[:, pick + o]
+            if not can.any():
+                continue
+            origin = b.where[:, o]
+            side = robot_reaches[origin]
+            best = np.full(size, -np.inf)
+            best = np.where(throw_to[b.robot_at, o] >= 0, np.maximum(best, held[throw + o]), best)
+            best = np.where(rules.give_ok[b.robot_at], np.maximum(best, held[give + o]), best)
+            for s in range(m):
+                ok = spot_human[s] & ~occupied[:, s] & (origin != s) & (robot_reaches[s] != side)
+                best = np.where(ok, np.maximum(best, held[place + o * m + s]), best)
+            bonus = np.where(side, h.robot_side, 0.0) + bonus_colour[o]
+            value = (best + bonus) - pick_cost[o]
+            score[:, pick + o] = np.where(can & np.isfinite(best), value, -np.inf)
+        choice = np.full(size, wait, dtype=np.int64)
+        top = np.full(size, _TIE)
+        for a in range(n_actions):
+            if a == wait:
+                continue
+            better = score[:, a] > top + _TIE
+            choice[better] = a
+            top[better] = score[better, a]
+        offered = (b.offer_by == Agent.ROBOT) & ~(b.where == hand).any(axis=1) & (h.accept > 0.0)
+        # up to three entries per state: the offer's take, the choice, the idle wait
+        act = np.stack([np.where(offered, take + b.offer_obj, -1), choice, np.full(size, wait)], axis=1)
+        prob = np.stack([np.full(size, h.accept), np.where(offered, (1.0 - h.accept) * 1.0, 1.0), np.zeros(size)], 1)
+        if h.p_idle > 0.0:
+            prob[:, :2] = (1.0 - h.p_idle) * prob[:, :2]
+            merged = choice == wait
+            prob[:, 2] = np.where(merged, h.p_idle + prob[:, 1], h.p_idle)
+            prob[merged, 1] = 0.0
+        else:
+            act[:, 2] = -1
+        keep = (act >= 0) & (prob > 0.0)
+        order = np.argsort(np.where(keep, act, n_actions + 1), axis=1, kind="stable")
+        act, prob, keep = (np.take_along_axis(x, order, axis=1) for x in (act, prob, keep))
+        return keep.sum(axis=1), act[keep], prob[keep]
+
+    return answers

@@ -1,0 +1,150 @@
+"""Model building on arrays beside the Python enumeration it replaced, measured in the same run.
+
+Run: ``python benchmarks/model_build.py [--member m01] [--members] [--headroom] [--eight]``.
+
+1. **Builder rate** on ``roboergosum`` against a population member (a stationary human;
+   no symmetry reduction: the full model). Each builder runs twice: cold (the partner
+   answers live, one Python call per distinct mid-cycle state, as both builders must)
+   and warm (the partner's answers already tabulated: the array builder reuses its
+   ``AnswerTable``; the Python enumeration gets a human answering from a dict of the
+   first run's answers), which isolates what the builder itself costs. States per second
+   of each, and the ratio; the array builder also with the partner on arrays
+   (``agents/models/partners.py``). Times are wall and CPU seconds; the rates are per CPU
+   second (one core), which a loaded machine inflates less than wall time. Goal: >= 1M states/s.
+2. ``--members``: every ``roboergosum`` member's oracle (wall seconds, states, rate). Goal <= 5 s each.
+3. ``--headroom``: ``hg-marl headroom --scenario roboergosum --population populations/roboergosum.toml``
+   in-process, timed, with ``--max-seconds 600``. Goal <= 60 s.
+4. ``--eight``: the oracle of an 8-object table (``generated:objects=8,bins=2`` against
+   ``random``). Goal <= 60 s and 4 GB.
+"""
+
+from __future__ import annotations
+
+import argparse
+import resource
+import time
+from typing import Any
+
+from hg_marl.agents.humans.population import load_population
+from hg_marl.agents.models import AnswerTable, Budget, StatePacker, build_model
+from hg_marl.agents.models.layouts import layout_distribution
+from hg_marl.agents.oracle import OverBudget, _human_policy, _Model, oracle_rate
+from hg_marl.core import Agent, State, World
+
+POPULATION = "populations/roboergosum.toml"
+
+
+class Tabulated:
+    """A human answering from a dict filled by a live one (the warm run of the Python enumeration)."""
+
+    def __init__(self, live: Any) -> None:
+        self.live, self.memo = live, {}
+        self.uses_robot_action = bool(getattr(live, "uses_robot_action", False))
+        self.name = getattr(live, "name", "human")
+
+    def distribution(self, world: World, state: State, robot_action: int = -1) -> Any:
+        key = (state, robot_action)
+        found = self.memo.get(key)
+        if found is None:
+            found = self.memo[key] = self.live.distribution(world, state, robot_action)
+        return found
+
+
+def python_build(world: World, human: Any) -> int:
+    """The Python enumeration (``agents/oracle.py`` ``_Model``) of the full model; its state count."""
+    model = _Model(world, human, True, 10**7)
+    layouts = layout_distribution(world)
+    wait, wait_index = world.durations.wait, world.n_actions(Agent.ROBOT) - 1
+    regen = [nxt for table, _ in layouts for nxt, _, _ in model.replies(table, wait, wait_index)]
+    model.build([s for s, _ in layouts] + regen)
+    return len(model.states)
+
+
+def builder_rates(member: str) -> None:
+    spec = {m.name: m.spec for m in load_population(POPULATION).members()}[member]
+    world = World("roboergosum")
+    layouts = layout_distribution(world)
+    print(f"roboergosum against {member} ({spec}), full model, one core:")
+    tab = Tabulated(_human_policy(spec, world))
+    old = new = 0.0
+    for run in ("cold", "warm"):
+        start, cpu = time.perf_counter(), time.process_time()
+        n = python_build(world, tab)
+        old = time.process_time() - cpu
+        report("python enumeration", run, n, time.perf_counter() - start, old)
+    for live in (True, False):
+        answers = AnswerTable(world, _human_policy(spec, world), StatePacker(world), arrays=not live)
+        for run in ("cold", "warm"):
+            start, cpu = time.perf_counter(), time.process_time()
+            model = build_model(world, answers, layouts)
+            new = time.process_time() - cpu
+            report(
+                f"array builder, {'live' if live else 'array'} partner", run, model.n, time.perf_counter() - start, new
+            )
+    print(f"  warm ratio (array / python, CPU): {old / new:.1f}x; goal >= 1,000,000 states/s")
+
+
+def report(what: str, run: str, n: int, wall: float, cpu: float) -> None:
+    """One line: states, wall and CPU seconds, states per CPU second."""
+    print(f"  {what:<32} {run}: {n:>9,} states, {wall:7.2f} s wall, {cpu:7.2f} s CPU = {n / cpu:>11,.0f} states/s")
+
+
+def members() -> None:
+    print("every roboergosum member's oracle (goal <= 5 s each):")
+    for m in load_population(POPULATION).members():
+        start, cpu = time.perf_counter(), time.process_time()
+        try:
+            r = oracle_rate("roboergosum", m.spec, max_seconds=600)
+            what = f"{r.rate_per_hour:8.3f} tasks/h, {r.n_states:>8,} states, {r.iterations} sweeps"
+        except OverBudget as exc:
+            what = f"refused: {exc}"
+        print(f"  {m.name}: {time.perf_counter() - start:7.2f} s wall, {time.process_time() - cpu:6.2f} s CPU  {what}")
+
+
+def headroom_time() -> None:
+    from hg_marl.agents.headroom import headroom
+
+    pop = load_population(POPULATION)
+    start, cpu = time.perf_counter(), time.process_time()
+    try:
+        res = headroom("roboergosum", [(m.name, m.spec) for m in pop.members()], max_seconds=600)
+        what = f"{res.n_states:,} states, headroom {res.headroom:.3f}"
+    except OverBudget as exc:
+        what = f"refused: {exc}"
+    wall, spent = time.perf_counter() - start, time.process_time() - cpu
+    print(f"headroom roboergosum, whole population: {wall:.1f} s wall, {spent:.1f} s CPU ({what}); goal <= 60 s")
+
+
+def eight() -> None:
+    start, cpu = time.perf_counter(), time.process_time()
+    try:
+        r = oracle_rate("generated:objects=8,bins=2", "random", budget=Budget(600, None, 10**7))
+        what = f"{r.rate_per_hour:.3f} tasks/h, {r.n_states:,} states"
+    except OverBudget as exc:
+        what = f"refused: {exc}"
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**20
+    print(
+        f"8-object oracle (generated:objects=8,bins=2 vs random): {time.perf_counter() - start:.1f} s wall, "
+        f"{time.process_time() - cpu:.1f} s CPU, "
+        f"peak {peak:.2f} GB so far in this process ({what}); goal <= 60 s, 4 GB"
+    )
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--member", default="m01", help="population member of the builder-rate run")
+    parser.add_argument("--members", action="store_true", help="time every member's oracle")
+    parser.add_argument("--headroom", action="store_true", help="time the population's headroom matrix")
+    parser.add_argument("--eight", action="store_true", help="time an 8-object table's oracle")
+    args = parser.parse_args()
+    builder_rates(args.member)
+    if args.members:
+        members()
+    if args.eight:
+        eight()
+    if args.headroom:
+        headroom_time()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,205 @@
+"""Many tables stepped at once on arrays: the rule table's tabulated rules, batched.
+
+:class:`BatchedRules` reads :class:`~hg_marl.core.table.RuleTable`'s own tables (who
+reaches which spot from where, where a throw lands, where a goto leads, each action's
+kind, object, target and duration) as numpy arrays, and applies the preconditions and
+effects that ``RuleTable.feasible`` and ``RuleTable.successor`` state to a whole batch of
+states; nothing scenario-specific is computed here. The facts come from
+``World.fact_lookup`` (one fancy index), the table draw from ``World.initial_states``.
+A property test (``tests/env/test_batched.py``) steps it beside ``World.step`` on random
+action sequences and requires identical trajectories.
+
+It is the batched twin of :meth:`World.step <hg_marl.core.World.step>`, as the
+``*_batch`` functions of :mod:`hg_marl.core.cycle` are the twin of the cycle's scalar
+rules; :class:`hg_marl.envs.batched.BatchedTable` runs both over a seat's tables, and
+the compiled partners (``agents/compiled.py``) tabulate their outcomes with it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hg_marl.core.types import Agent, Kind, State
+from hg_marl.core.world import World
+
+
+class BatchState:
+    """A batch of symbolic states: ``where`` (N, objects), ``robot_at``, ``offer_by``, ``offer_obj`` (N,)."""
+
+    __slots__ = ("offer_by", "offer_obj", "robot_at", "rows", "where")
+
+    def __init__(
+        self,
+        where: np.ndarray,
+        robot_at: np.ndarray,
+        offer_by: np.ndarray,
+        offer_obj: np.ndarray,
+        rows: np.ndarray | None = None,
+    ) -> None:
+        self.where, self.robot_at, self.offer_by, self.offer_obj = where, robot_at, offer_by, offer_obj
+        self.rows = np.arange(len(robot_at)) if rows is None else rows
+        """Which tables of the env these are (partners that keep a member or an actor per table read it)."""
+
+    @classmethod
+    def of(cls, states: list[State]) -> BatchState:
+        """A batch from a list of states."""
+        return cls(
+            np.array([s.where for s in states], dtype=np.int64),
+            np.array([s.robot_at for s in states], dtype=np.int64),
+            np.array([s.offer_by for s in states], dtype=np.int64),
+            np.array([s.offer_obj for s in states], dtype=np.int64),
+        )
+
+    def state(self, i: int) -> State:
+        """Table ``i`` as a :class:`State`."""
+        return State(
+            tuple(int(x) for x in self.where[i]),
+            int(self.robot_at[i]),
+            int(self.offer_by[i]),
+            int(self.offer_obj[i]),
+        )
+
+    def __len__(self) -> int:
+        return len(self.robot_at)
+
+    def put(self, rows: np.ndarray, other: BatchState) -> None:
+        """Overwrite tables ``rows`` with ``other``'s (same length; nothing to do when ``other`` is self's view)."""
+        if other.where is self.where:
+            return
+        self.where[rows] = other.where
+        self.robot_at[rows] = other.robot_at
+        self.offer_by[rows] = other.offer_by
+        self.offer_obj[rows] = other.offer_obj
+
+
+class BatchedRules:
+    """``RuleTable``'s tables as arrays and its rules applied to a :class:`BatchState`."""
+
+    def __init__(self, world: World) -> None:
+        t = world.table
+        self.world = world
+        n, m, p = t.n_objects, t.n_spots, t.n_places
+        self.n_objects, self.n_spots, self.n_places = n, m, p
+        self.hand = t.hand
+        # reach over every place code (non-spots are never reached for a pick)
+        reach = np.zeros((2, t.n_locations, p), dtype=bool)
+        reach[:, :, :m] = np.array(t.reach, dtype=bool)
+        self.reach = reach
+        self.throw_to = np.array(t.throw_to, dtype=np.int64)  # (agent, at, object)
+        self.give_ok = np.array(t.give_ok, dtype=bool)  # (at,)
+        self.goto_obj = np.array(t.goto_obj, dtype=np.int64)  # (at, place)
+        self.goto_static = np.array(t.goto_static, dtype=np.int64)  # (at, bins + human)
+        self.spot_human = np.array(t.spot_human, dtype=bool)
+        self.done = np.array([[q in t.done[o] for q in range(p)] for o in range(n)], dtype=bool)
+        self.kind = tuple(np.array([s.kind for s in specs], dtype=np.int64) for specs in t.specs)
+        self.obj = tuple(np.array([s.obj for s in specs], dtype=np.int64) for specs in t.specs)
+        self.target = tuple(np.array([s.target for s in specs], dtype=np.int64) for specs in t.specs)
+        self.duration = tuple(np.array([s.duration for s in specs], dtype=np.float64) for specs in t.specs)
+        self.failed = float(t.durations.failed)
+        self.n_actions = (len(t.specs[0]), len(t.specs[1]))
+        self.first = tuple(
+            {k: t.action_index(a, k, 0, 0) for k in Kind if any(s.kind is k for s in t.specs[a])} for a in Agent
+        )
+        self.wait = t.wait
+
+    # ---- questions ------------------------------------------------------------------
+    def is_clean(self, b: BatchState) -> np.ndarray:
+        """Per table, whether every object is in a bin that accepts it."""
+        return self.done[np.arange(self.n_objects), b.where].all(axis=1)
+
+    def masks(self, b: BatchState, agent: int) -> np.ndarray:
+        """(N, n_actions) booleans: ``RuleTable.feasible`` for every table and action."""
+        n, m = self.n_objects, self.n_spots
+        size = len(b)
+        rows = np.arange(size)
+        where, at = b.where, b.robot_at
+        held = where == self.hand[agent]
+        free = ~held.any(axis=1)
+        out = np.zeros((size, self.n_actions[agent]), dtype=bool)
+        first = self.first[agent]
+        pick, throw, give, take = (first[k] for k in (Kind.PICK, Kind.THROW, Kind.GIVE, Kind.TAKE))
+        out[:, pick : pick + n] = (where < m) & self.reach[agent][at[:, None], where] & free[:, None]
+        out[:, throw : throw + n] = held & (self.throw_to[agent][at] >= 0)
+        out[:, give : give + n] = held & self.give_ok[at][:, None]
+        offered = free & (b.offer_by == 1 - agent)
+        out[rows[offered], take + b.offer_obj[offered]] = True
+        if Kind.PLACE in first:
+            occupied = np.zeros((size, self.n_places), dtype=bool)
+            occupied[rows[:, None], where] = True
+            open_spot = self.spot_human[None, :] & ~occupied[:, :m]
+            place = first[Kind.PLACE]
+            out[:, place : place + n * m] = (held[:, :, None] & open_spot[:, None, :]).reshape(size, n * m)
+        if Kind.GOTO in first:
+            goto = first[Kind.GOTO]
+            out[:, goto : goto + n] = self.goto_obj[at[:, None], where] >= 0
+            statics = self.goto_static.shape[1]
+            out[:, goto + n : goto + n + statics] = self.goto_static[at] >= 0
+        out[:, self.wait[agent]] = True
+        return out
+
+    def step(
+        self, b: BatchState, agent: int, actions: np.ndarray, mask: np.ndarray | None = None
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Apply ``RuleTable.successor`` in place: returns (ok, duration, reward) per table.
+
+        ``mask`` may pass the masks of ``b`` for ``agent`` if already computed (they must be
+        those of the state before the offer lapses; see below, they agree on every action).
+        """
+        rows = np.arange(len(b))
+        kind, o, target = self.kind[agent][actions], self.obj[agent][actions], self.target[agent][actions]
+        # a partner's pending offer lapses unless this is its take; a failed take lets it lapse too.
+        # The masks before and after the lapse agree: only TAKE depends on the offer, and a take of
+        # the offered object keeps it.
+        if mask is None:
+            mask = self.masks(b, agent)
+        ok = mask[rows, actions]
+        take_reply = (kind == Kind.TAKE) & (o == b.offer_obj)
+        lapse = (b.offer_by == 1 - agent) & ~(take_reply & ok)
+        reward = np.zeros(len(b))
+        if agent == Agent.ROBOT:  # a successful wait on a clean table (only the waits need the check)
+            waits = np.flatnonzero(ok & (kind == Kind.WAIT))
+            if len(waits):
+                reward[waits] = self.is_clean(BatchState(b.where[waits], b.robot_at, b.offer_by, b.offer_obj))
+        b.offer_by[lapse] = -1
+        b.offer_obj[lapse] = -1
+        where, at = b.where, b.robot_at
+        moves = ok & ((kind == Kind.PICK) | (kind == Kind.TAKE) | (kind == Kind.THROW) | (kind == Kind.PLACE))
+        r, ob = rows[moves], o[moves]
+        k = kind[moves]
+        dest = np.where(
+            k == Kind.THROW,
+            self.throw_to[agent][at[r], ob],
+            np.where(k == Kind.PLACE, target[moves], self.hand[agent]),
+        )
+        where[r, ob] = dest
+        took = ok & (kind == Kind.TAKE)
+        b.offer_by[took] = -1
+        b.offer_obj[took] = -1
+        gave = ok & (kind == Kind.GIVE)
+        b.offer_by[gave] = agent
+        b.offer_obj[gave] = o[gave]
+        went = ok & (kind == Kind.GOTO)
+        if went.any():
+            g, t = rows[went], target[went]
+            n = self.n_objects
+            obj_t = np.minimum(t, n - 1)
+            to_obj = self.goto_obj[at[g], where[g, obj_t]]
+            to_static = self.goto_static[at[g], np.maximum(t - n, 0)]
+            at[g] = np.where(t < n, to_obj, to_static)
+        duration = np.where(ok, self.duration[agent][actions], self.failed)
+        return ok, duration, reward
+
+    def facts(self, b: BatchState) -> np.ndarray:
+        """(N, F) int8: ``World.compute_facts`` for every table (one fancy index)."""
+        lookup, rows, objects, n_fixed = self.world.fact_lookup
+        size = len(b)
+        out = np.zeros((size, n_fixed + 2 * self.n_objects), dtype=np.int8)
+        out[:, :n_fixed] = lookup[b.robot_at[:, None], rows[None, :], b.where[:, objects]]
+        offering = np.flatnonzero(b.offer_by >= 0)
+        out[offering, n_fixed + b.offer_by[offering] * self.n_objects + b.offer_obj[offering]] = 1
+        return out
+
+    def initial(self, rng: np.random.Generator, count: int) -> BatchState:
+        """``count`` fresh tables (``World.initial_states``)."""
+        where, at = self.world.initial_states(rng, count)
+        return BatchState(where, at, np.full(count, -1, dtype=np.int64), np.full(count, -1, dtype=np.int64))

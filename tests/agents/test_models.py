@@ -1,0 +1,263 @@
+"""The array model builder and sparse solver against the Python enumeration they replaced.
+
+Expected values come from ``reference_oracle`` (the oracle before the array builder: one
+Python state at a time, value iteration with ``np.bincount``), a simpler implementation
+of the same model: same states, same (state, action, next state, seconds, probability)
+transitions, same regeneration, rates to 1e-9.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from hg_marl.agents.models import AnswerTable, Budget, StatePacker, build_model, solve
+from hg_marl.agents.models.layouts import canonical_layouts, layout_distribution
+from hg_marl.agents.oracle import _human_policy, oracle_rate
+from hg_marl.agents.planner.space import Relabel
+from hg_marl.core import State, World
+from hg_marl.envs.batched import BatchState
+from tests.agents.reference_oracle import Reference, reference_oracle
+
+SMALL = ("paper2015", "asymmetric_advantages", "forced_coordination")
+HUMANS = ("cooperative", "lazy", "random", "no_handover", "noisy", "adversarial", "lazy:p_idle=0.5")
+
+
+def array_model(world: World, human: Any, symmetry: bool | None = None) -> tuple[Any, bool]:
+    live = _human_policy(human, world)
+    canonical = bool(getattr(live, "equivariant", False)) if symmetry is None else symmetry
+    canonical = canonical and Relabel(world).active
+    layouts = canonical_layouts(world) if canonical else layout_distribution(world)
+    answers = AnswerTable(world, live, StatePacker(world))
+    return build_model(world, answers, layouts, canonical=canonical), canonical
+
+
+def as_dicts(model: Any) -> tuple[dict[tuple[State, int], dict[tuple[State, float], float]], dict[State, float]]:
+    states = model.states()
+    pair_state = model.pair_state()
+    transitions: dict[tuple[State, int], dict[tuple[State, float], float]] = {}
+    for pair, a in enumerate(model.pair_action.tolist()):
+        out = transitions.setdefault((states[pair_state[pair]], a), {})
+        for t in range(model.t_start[pair], model.t_start[pair + 1]):
+            key = (states[model.t_next[t]], float(model.t_tau[t]))
+            out[key] = out.get(key, 0.0) + float(model.t_prob[t])
+    regen: dict[State, float] = {}
+    for s, p in zip(model.regen_next.tolist(), model.regen_prob.tolist(), strict=True):
+        regen[states[s]] = regen.get(states[s], 0.0) + p
+    return transitions, regen
+
+
+def assert_same(model: Any, ref: Reference) -> None:
+    transitions, regen = as_dicts(model)
+    assert model.n == ref.n_states and len(model.t_next) == ref.n_transitions
+    assert transitions.keys() == ref.transitions.keys()
+    for pair, out in ref.transitions.items():
+        assert out.keys() == transitions[pair].keys(), pair
+        for key, p in out.items():
+            assert transitions[pair][key] == pytest.approx(p, rel=1e-12), (pair, key)
+    assert regen.keys() == ref.regen.keys()
+    for s, p in ref.regen.items():
+        assert regen[s] == pytest.approx(p, rel=1e-12)
+
+
+@pytest.mark.parametrize("scenario", SMALL)
+@pytest.mark.parametrize("human", HUMANS)
+def test_the_array_model_is_the_python_enumeration(scenario: str, human: str) -> None:
+    world = World(scenario)
+    ref = reference_oracle(world, human)
+    model, _ = array_model(world, human)
+    assert_same(model, ref)
+    result = oracle_rate(world, human)
+    assert result.rate_per_hour == pytest.approx(ref.rate_per_hour, rel=1e-9, abs=1e-9)
+    assert (result.n_states, result.n_transitions) == (ref.n_states, ref.n_transitions)
+    for state, action in ref.policy.items():  # ties broken alike: the first best action in option order
+        assert result.policy[state] == action
+        assert result.values[state] == pytest.approx(ref.values[state], rel=1e-9, abs=1e-9)
+
+
+@pytest.mark.parametrize(
+    "human",
+    [
+        "random",
+        pytest.param("no_handover", marks=pytest.mark.slow),
+        pytest.param("adversarial", marks=pytest.mark.slow),
+    ],
+)
+def test_roboergosum_matches_the_python_enumeration(human: str) -> None:
+    world = World("roboergosum")
+    ref = reference_oracle(world, human)
+    model, _ = array_model(world, human)
+    assert_same(model, ref)
+    assert oracle_rate(world, human).rate_per_hour == pytest.approx(ref.rate_per_hour, rel=1e-9, abs=1e-9)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("member", [0, 5, 11])  # the Python reference takes minutes per member
+def test_roboergosum_members_match_the_python_enumeration(member: int) -> None:
+    from hg_marl.agents.humans.population import load_population
+
+    spec = load_population("populations/roboergosum.toml").members()[member].spec
+    world = World("roboergosum")
+    ref = reference_oracle(world, spec)
+    assert_same(array_model(world, spec)[0], ref)
+    assert oracle_rate(world, spec).rate_per_hour == pytest.approx(ref.rate_per_hour, rel=1e-9, abs=1e-9)
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    objects=st.integers(1, 3),
+    bins=st.integers(1, 2),
+    seed=st.integers(0, 50),
+    human=st.sampled_from(["random", "lazy", "no_handover", "noisy"]),
+)
+def test_generated_scenarios_match_the_python_enumeration(objects: int, bins: int, seed: int, human: str) -> None:
+    world = World(f"generated:objects={objects},spots={objects + 1},bins={bins},seed={seed}")
+    ref = reference_oracle(world, human)
+    model, _ = array_model(world, human)
+    assert_same(model, ref)
+    solution = solve(model)
+    rate = 0.0 if np.isinf(solution.seconds_per_task) else 3600.0 / solution.seconds_per_task
+    assert rate == pytest.approx(ref.rate_per_hour, rel=1e-9, abs=1e-9)
+
+
+def test_canonical_relabelling_on_arrays_is_relabel_canonical() -> None:
+    world = World("roboergosum")
+    relabel, packer = Relabel(world), StatePacker(world)
+    rng = np.random.default_rng(0)
+    states = []
+    for _ in range(300):  # random states, offers included: the relabelling is a pure function of the state
+        where = tuple(int(x) for x in rng.integers(0, world.table.n_places, world.n_objects))
+        by = int(rng.integers(-1, 2))
+        states.append(
+            State(where, int(rng.integers(0, world.table.n_locations)), by, int(rng.integers(0, 6)) if by >= 0 else -1)
+        )
+    b = BatchState.of(states)
+    packer.canonical(b)
+    assert [b.state(i) for i in range(len(b))] == [relabel.canonical(s)[0] for s in states]
+
+
+def test_a_packed_key_unpacks_to_its_state() -> None:
+    world = World("paper2015")
+    packer = StatePacker(world)
+    states = [s for s, _ in layout_distribution(world)]
+    b = BatchState.of(states)
+    keys = packer.pack(b, np.arange(len(b)) % 5 - 1)
+    back, seen = packer.unpack(keys)
+    assert [back.state(i) for i in range(len(back))] == states
+    assert seen.tolist() == (np.arange(len(b)) % 5 - 1).tolist()
+    assert [packer.pack_one(s) for s in states] == packer.pack(b).tolist()
+
+
+def test_the_solver_reads_its_budget_while_sweeping() -> None:
+    world = World("paper2015")
+    model, _ = array_model(world, "random")
+    budget = Budget(None, None, None)
+    solve(model, budget=budget)
+    assert budget.phase == "solve" and budget.checks >= 2
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "forced_coordination"])
+def test_the_headroom_joint_model_on_arrays_is_the_python_joint_model(scenario: str) -> None:
+    from hg_marl.agents.headroom import JointModel
+    from hg_marl.agents.models.layouts import layout_distribution as layouts_of
+
+    world = World(scenario)
+    specs = ["cooperative", "lazy", "no_handover", "random", "preference:handover=-1,shared=1"]
+    reference = JointModel(world, [_human_policy(h, world) for h in specs])
+    packer = StatePacker(world)
+    tables = [AnswerTable(world, _human_policy(h, world), packer) for h in specs]
+    arrays = JointModel.from_model(world, build_model(world, tables, layouts_of(world)))
+    assert arrays.n == reference.n and arrays.n_pairs == reference.n_pairs
+    for i in range(len(specs)):
+        assert len(arrays.arrays(i)[0]) == len(reference.arrays(i)[0])
+        ref_choice, new_choice = reference.optimal_policy(i), arrays.optimal_policy(i)
+        for j in range(len(specs)):  # every policy against every partner: the matrix's entries
+            assert arrays.rate(new_choice, j) == pytest.approx(reference.rate(ref_choice, j), rel=1e-9, abs=1e-9)
+
+
+def test_a_cached_result_is_the_computed_one_and_its_key_follows_the_content(tmp_path: Any) -> None:
+    from hg_marl.agents.models.cache import result_key
+
+    world = World("paper2015")
+    first = oracle_rate(world, "lazy", cache=tmp_path)
+    assert len(list(tmp_path.glob("paper2015-*.npz"))) == 1
+    again = oracle_rate(world, "lazy", cache=tmp_path)
+    assert again.iterations == first.iterations and again.rate_per_hour == first.rate_per_hour
+    assert dict(again.policy) == dict(first.policy) and dict(again.values) == dict(first.values)
+    options = {"failed_actions": True, "symmetry": None, "tolerance": 1e-9, "max_iterations": 200_000}
+    key = result_key(world, "lazy", options)
+    assert key == result_key(World("paper2015"), "lazy", dict(options))  # same content, same key
+    assert key != result_key(world, "lazy:p_idle=0.5", options)  # another human
+    assert key != result_key(world, "lazy", {**options, "failed_actions": False})  # another option
+    assert key != result_key(World("forced_coordination"), "lazy", options)  # another scenario
+    oracle_rate(world, "lazy", cache=tmp_path, failed_actions=False)  # another option: another entry
+    assert len(list(tmp_path.glob("paper2015-*.npz"))) == 2
+
+
+def test_a_corrupt_cache_entry_is_rebuilt(tmp_path: Any) -> None:
+    world = World("paper2015")
+    first = oracle_rate(world, "no_handover", cache=tmp_path)
+    (entry,) = tmp_path.glob("*.npz")
+    entry.write_bytes(b"not an npz")
+    again = oracle_rate(world, "no_handover", cache=tmp_path)
+    assert again.rate_per_hour == first.rate_per_hour and again.n_states == first.n_states
+    assert entry.read_bytes()[:2] == b"PK"  # rewritten as a zip archive
+
+
+def mid_states(world: World, count: int = 3000) -> list[State]:
+    """Mid-cycle states the robot's actions reach on random walks (offers included)."""
+    rng = np.random.default_rng(1)
+    out: list[State] = []
+    layouts = [s for s, _ in layout_distribution(world)]
+    while len(out) < count:
+        s = layouts[int(rng.integers(len(layouts)))]
+        for _ in range(30):
+            opts = world.feasible_indices(s, 0)
+            s = world.table.successor(s, 0, opts[int(rng.integers(len(opts)))])[0]
+            out.append(s)
+            opts = world.feasible_indices(s, 1)
+            s = world.table.successor(s, 1, opts[int(rng.integers(len(opts)))])[0]
+    return out
+
+
+PREFERENCES = [
+    "random",
+    "preference",
+    "preference:accept=0.5,p_idle=0.3,haste=0.2,colour=blue,colour_bonus=0.4",
+    "preference:handover=-1,shared=1,keep=0.3,robot_side=0.8,accept=0",
+    "preference:self_work=2,p_idle=1",
+]
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "roboergosum", "forced_coordination"])
+def test_array_answers_are_the_live_humans_answers(scenario: str) -> None:
+    from hg_marl.agents.humans.population import load_population
+    from hg_marl.agents.models.partners import batch_answers
+
+    world = World(scenario)
+    states = mid_states(world)
+    b = BatchState.of(states)
+    members = [m.spec for m in load_population("populations/roboergosum.toml").members()]
+    for spec in [*PREFERENCES, *members]:
+        live = _human_policy(spec, world)
+        batch = batch_answers(world, live)
+        assert batch is not None, spec
+        sizes, actions, probs = batch(b)
+        at = 0
+        for i, s in enumerate(states):
+            expected = [(h, p) for h, p in live.distribution(world, s, -1) if p > 0.0]
+            got = list(zip(actions[at : at + sizes[i]].tolist(), probs[at : at + sizes[i]].tolist(), strict=True))
+            assert got == expected, (spec, s)
+            at += sizes[i]
+
+
+def test_a_softmax_preference_is_answered_live() -> None:
+    from hg_marl.agents.models.partners import batch_answers
+
+    world = World("paper2015")
+    assert batch_answers(world, _human_policy("preference:temperature=0.5", world)) is None
+    assert batch_answers(world, _human_policy("random:feasible_only=false", world)) is None
