@@ -47,7 +47,6 @@ from hg_marl.agents.planner.costs import CostWeights
 from hg_marl.agents.planner.domain import Domain
 from hg_marl.agents.planner.exactsum import ExactSums
 from hg_marl.agents.planner.models import HumanModel
-from hg_marl.agents.planner.relabel import Relabel as Relabel
 from hg_marl.agents.planner.steps import Steps, Successor
 from hg_marl.agents.planner.tables import candidate_entries, next_kinds
 from hg_marl.core import Agent, Kind, State, World
