@@ -10,6 +10,14 @@ warm time (the same query again: a cache hit), nodes expanded, and how many call
 proved the optimum within the node budget. Targets:
 paper2015 initial state <= 1 ms median, roboergosum <= 10 ms, 20 objects <= 100 ms with
 the optimum proven.
+
+Beside each row, ``ref cpu`` is the median CPU time of the same cold plans with the
+search as it was before its inner loop was compiled into tables (``planner_reference.py``:
+edges by ``successor_feasible``, sums by ``math.fsum``, the old candidate and search
+loops, run by the same :class:`Planner`), measured in the same run on fresh worlds, each
+reference plan right after the plan it is compared with;
+``x`` is the ratio and ``same`` says whether both found the same plans and costs. On a
+loaded machine read the ratio, not the milliseconds.
 """
 
 from __future__ import annotations
@@ -17,11 +25,32 @@ from __future__ import annotations
 import argparse
 import statistics
 import time
+from unittest.mock import patch
 
 import numpy as np
+from planner_reference import ReferenceSpace, reference_astar  # benchmarks/ is the script's folder
 
 from hg_marl.agents.planner import Planner, PlannerConfig
+from hg_marl.agents.planner.domain import Domain
 from hg_marl.core import State, World
+
+
+def reference_plan(world: World, state: State, budget: int) -> tuple[float, tuple[object, float]]:
+    """CPU seconds of one cold plan by a :class:`Planner` searching as it did before
+    (:mod:`planner_reference`) on a fresh world, and the plan found (cycles, cost)."""
+    fresh = World(world.scenario, world.durations)
+    planner = Planner(fresh, PlannerConfig(node_budget=budget))
+    planner.space = ReferenceSpace(Domain(fresh, planner.human_model), planner.config.weights)
+    with patch("hg_marl.agents.planner.planner.astar", reference_astar):
+        start_cpu = time.process_time()
+        result = planner.plan(state)
+        cpu = time.process_time() - start_cpu
+    return cpu, (result.plan.cycles if result.plan else None, result.cost)
+
+
+def same_plans(a: list[tuple[object, float]], b: list[tuple[object, float]]) -> bool:
+    """Equal cycles and equal costs (both priced by the same plan replay)."""
+    return a == b
 
 
 def percentile(values: list[float], q: float) -> float:
@@ -32,7 +61,9 @@ def percentile(values: list[float], q: float) -> float:
 
 def measure(cases: list[tuple[World, State]], budget: int) -> dict[str, float | int | str]:
     """Cold and warm planning statistics over ``(world, initial state)`` cases."""
-    cold, cpu, init, warm, nodes, proven = [], [], [], [], [], 0
+    cold, cpu, init, warm, nodes, proven, plans = [], [], [], [], [], 0, []
+    ref: list[float] = []
+    ref_plans: list[tuple[object, float]] = []
     for world, state in cases:
         start_cpu = time.process_time()
         planner = Planner(world, PlannerConfig(node_budget=budget))
@@ -46,6 +77,10 @@ def measure(cases: list[tuple[World, State]], budget: int) -> dict[str, float | 
         warm.append(time.perf_counter() - start)
         nodes.append(result.nodes)
         proven += result.success and result.optimal
+        plans.append((result.plan.cycles if result.plan else None, result.cost))
+        ref_cpu, ref_plan = reference_plan(world, state, budget)  # interleaved: the same load
+        ref.append(ref_cpu)
+        ref_plans.append(ref_plan)
     return {
         "median_ms": statistics.median(cold) * 1e3,
         "p95_ms": percentile(cold, 95) * 1e3,
@@ -55,6 +90,8 @@ def measure(cases: list[tuple[World, State]], budget: int) -> dict[str, float | 
         "nodes_med": int(statistics.median(nodes)),
         "nodes_max": max(nodes),
         "proven": f"{proven}/{len(cold)}",
+        "ref_ms": statistics.median(ref) * 1e3,
+        "same": "yes" if same_plans(plans, ref_plans) else "NO",
     }
 
 
@@ -82,7 +119,7 @@ def main() -> None:
     args = parser.parse_args()
     header = (
         f"{'workload':<24}{'median ms':>10}{'p95 ms':>10}{'cpu ms':>9}{'init ms':>9}{'warm us':>9}"
-        f"{'nodes med':>10}{'nodes max':>10}{'proven':>8}"
+        f"{'nodes med':>10}{'nodes max':>10}{'proven':>8}{'ref cpu':>9}{'x':>6}{'same':>6}"
     )
     print(header)
     print("-" * len(header))
@@ -90,7 +127,8 @@ def main() -> None:
         row = measure(cases, args.budget)
         print(
             f"{label:<24}{row['median_ms']:>10.2f}{row['p95_ms']:>10.2f}{row['cpu_ms']:>9.2f}{row['init_ms']:>9.2f}{row['warm_us']:>9.1f}"
-            f"{row['nodes_med']:>10}{row['nodes_max']:>10}{row['proven']:>8}",
+            f"{row['nodes_med']:>10}{row['nodes_max']:>10}{row['proven']:>8}{row['ref_ms']:>9.2f}"
+            f"{float(row['ref_ms']) / float(row['cpu_ms']):>6.2f}{row['same']:>6}",
             flush=True,
         )
 

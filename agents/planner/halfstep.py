@@ -65,108 +65,86 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
     robot_edges = space.robot_edges
     human_edges = space.human_edges
 
-    # node arrays
-    states: list[State] = []
-    parents: list[int] = []
-    acts: list[int] = []  # robot nodes: the human action that led here; human nodes: the robot action
-    keys: list[object] = []
-    kinds: list[int] = []  # 0 robot node, 1 human node, 2 terminal
-    durs: list[float] = []
-    actives: list[bool] = []
+    # nodes: (state, parent, action, key, kind, robot duration, robot active); ``action`` is,
+    # at a robot node, the human action that led there and, at a human node, the robot action;
+    # ``kind`` 0 robot node, 1 human node, 2 terminal. One tuple per node: the inner loop's
+    # cheapest record.
+    nodes: list[tuple[State, int, int, object, int, float, bool]] = []
     best_r: dict[object, float] = {}
     best_h: dict[object, float] = {}
     heap: list[tuple[float, float, int]] = []
-    push = heapq.heappush
-
-    def add(
-        state: State, parent: int, action: int, g: float, kind: int, key: object, f: float, dr: float, act: bool
-    ) -> None:
-        node = len(states)
-        states.append(state)
-        parents.append(parent)
-        acts.append(action)
-        keys.append(key)
-        kinds.append(kind)
-        durs.append(dr)
-        actives.append(act)
-        push(heap, (f, -g, node))
-
-    def expand_r(node: int, g: float, s: State) -> None:
-        for ar, s1, d_r, k1, h in robot_edges(s):
-            active = ar != wait_r
-            key = (k1, d_r, active)
-            if g >= best_h.get(key, math.inf) - 1e-12:
-                continue
-            best_h[key] = g
-            add(s1, node, ar, g, 1, key, g + h, d_r, active)
-
-    def expand_h(node: int, g: float) -> None:
-        s1 = states[node]
-        d_r = durs[node]
-        active_r = actives[node]
-        ar = acts[node]
-        parent = parents[node]
-        noop = states[parent] if (ar == wait_r and parent >= 0) else None
-        give = ar in gives
-        for ah, s2, d_h, take, active_h, holding, key, h in human_edges(s1):
-            if noop is not None and s2 == noop:
-                continue  # a cycle in which nothing happens only costs time
-            g2 = g + cycle_cost(weights, d_r, active_r and (not give or take), d_h, active_h, holding)
-            if g2 >= best_r.get(key, math.inf) - 1e-12:
-                continue
-            best_r[key] = g2
-            add(s2, node, ah, g2, 0, key, g2 + h, 0.0, False)
+    push, pop, inf = heapq.heappush, heapq.heappop, math.inf
+    new_node = nodes.append
 
     if to_move is Agent.HUMAN:
         d_r, ra = robot_part
         # the root is a human node; its replies are the first cycle (the robot's part given)
-        add(root, -1, ra, 0.0, 1, None, 0.0, d_r, ra >= 0 and ra != wait_r)
+        new_node((root, -1, ra, None, 1, d_r, ra >= 0 and ra != wait_r))
+        push(heap, (0.0, -0.0, 0))
     else:
         key = key_of(root)
         if sums(root, key) is None:
             return SearchOutcome(None, math.inf, 0, "unreachable")
         best_r[key] = 0.0
-        add(root, -1, -1, 0.0, 0, key, 0.0, 0.0, False)
+        new_node((root, -1, -1, key, 0, 0.0, False))
+        push(heap, (0.0, -0.0, 0))
     expanded = 0
 
     while heap:
-        _, neg_g, node = heapq.heappop(heap)
+        _, neg_g, node = pop(heap)
         g = -neg_g
-        kind = kinds[node]
+        s, parent, act, nkey, kind, d_r, active_r = nodes[node]
         if kind == 2:
-            return SearchOutcome(_path(states, parents, acts, kinds, node, wait_r), g, expanded)
+            return SearchOutcome(_path(nodes, node, wait_r), g, expanded)
         if kind == 0:
-            if g > best_r[keys[node]] + 1e-12:
+            if g > best_r[nkey] + 1e-12:
                 continue
-        elif keys[node] is not None and g > best_h[keys[node]] + 1e-12:
+        elif nkey is not None and g > best_h[nkey] + 1e-12:
             continue
-        if kind == 1:
-            expand_h(node, g)
+        if kind == 1:  # a human node: the cycle's replies, priced
+            noop = nodes[parent][0] if (act == wait_r and parent >= 0) else None
+            give = act in gives
+            for ah, s2, d_h, take, active_h, holding, key, h in human_edges(s):
+                if noop is not None and s2 == noop:
+                    continue  # a cycle in which nothing happens only costs time
+                g2 = g + cycle_cost(weights, d_r, active_r and (not give or take), d_h, active_h, holding)
+                if g2 >= best_r.get(key, inf) - 1e-12:
+                    continue
+                best_r[key] = g2
+                push(heap, (g2 + h, -g2, len(nodes)))
+                new_node((s2, node, ah, key, 0, 0.0, False))
             continue
         if expanded >= budget:
             return SearchOutcome(None, math.inf, expanded, "budget")
         expanded += 1
-        s = states[node]
-        where = s.where
-        if all(p in done[o] for o, p in enumerate(where)):
-            add(s, node, wait_h, g + final_cost, 2, None, g + final_cost, 0.0, False)
+        if all(p in done[o] for o, p in enumerate(s.where)):
+            g2 = g + final_cost
+            push(heap, (g2, -g2, len(nodes)))
+            new_node((s, node, wait_h, None, 2, 0.0, False))
             continue
-        expand_r(node, g, s)
+        for ar, s1, d_r, k1, h in robot_edges(s):
+            active = ar != wait_r
+            key = (k1, d_r, active)
+            if g >= best_h.get(key, inf) - 1e-12:
+                continue
+            best_h[key] = g
+            push(heap, (g + h, -g, len(nodes)))
+            new_node((s1, node, ar, key, 1, d_r, active))
     return SearchOutcome(None, math.inf, expanded, "no plan")
 
 
 def _path(
-    states: list[State], parents: list[int], acts: list[int], kinds: list[int], node: int, wait_r: int
+    nodes: list[tuple[State, int, int, object, int, float, bool]], node: int, wait_r: int
 ) -> list[tuple[int, int]]:
     """The cycles from the root to terminal ``node``."""
-    out = [(wait_r, acts[node])]
-    node = parents[node]
+    out = [(wait_r, nodes[node][2])]
+    node = nodes[node][1]
     while node >= 0:
-        h = parents[node]  # robot node ``node`` was reached by a human reply from human node ``h``
+        h = nodes[node][1]  # robot node ``node`` was reached by a human reply from human node ``h``
         if h < 0:
             break  # the root (a robot node)
-        ar = acts[h] if parents[h] >= 0 else -1
-        out.append((ar, acts[node]))
-        node = parents[h]
+        ar = nodes[h][2] if nodes[h][1] >= 0 else -1
+        out.append((ar, nodes[node][2]))
+        node = nodes[h][1]
     out.reverse()
     return out

@@ -140,7 +140,7 @@ def build_plan(
     cycles: list[tuple[int, int]],
     robot_part: tuple[float, int] = (0.0, NO_ACTION),
 ) -> Plan:
-    """Replay ``cycles`` from ``root`` with ``World.step`` and derive times, terms and links.
+    """Replay ``cycles`` from ``root`` with the rule table and derive times, terms and links.
 
     Args:
         world: the rules.
@@ -154,6 +154,7 @@ def build_plan(
     wait_h = world.n_actions(Agent.HUMAN) - 1
     robot_acts, human_acts = world.actions(Agent.ROBOT), world.actions(Agent.HUMAN)
     names = world.action_names
+    successor = world.table.successor  # what ``World.step`` returns, without its events
     states, terms = [root], []
     streams: tuple[list[Step], list[Step]] = ([], [])
     clock, state = 0.0, root
@@ -161,13 +162,12 @@ def build_plan(
         if ar == NO_ACTION:
             d_r, r_act = robot_part
         else:
-            out = world.step(state, Agent.ROBOT, ar)
-            d_r, r_act, state = out.duration, ar, out.state
+            state, _, d_r = successor(state, Agent.ROBOT, ar)
+            r_act = ar
             streams[0].append(Step(Agent.ROBOT, ar, names[0][ar], k, clock, clock + d_r, robot_acts[ar].obj, ""))
-        out = world.step(state, Agent.HUMAN, ah)
-        state = out.state
-        streams[1].append(Step(Agent.HUMAN, ah, names[1][ah], k, clock, clock + out.duration, human_acts[ah].obj, ""))
-        t = cycle_terms(d_r, robot_active(world, r_act, ah), out.duration, ah != wait_h, hand_h in state.where)
+        state, _, d_h = successor(state, Agent.HUMAN, ah)
+        streams[1].append(Step(Agent.HUMAN, ah, names[1][ah], k, clock, clock + d_h, human_acts[ah].obj, ""))
+        t = cycle_terms(d_r, robot_active(world, r_act, ah), d_h, ah != wait_h, hand_h in state.where)
         terms.append(t)
         clock += t.time
         states.append(state)

@@ -221,7 +221,7 @@ class Planner:
                 continue
             if k > 0:
                 self._put((plan.states[k], Agent.ROBOT, NO_ACTION), (result, k))
-            mid = world.step(plan.states[k], Agent.ROBOT, ar).state
+            mid = world.table.successor(plan.states[k], Agent.ROBOT, ar)[0]
             self._put((mid, Agent.HUMAN, ar), (result, k))
 
     def _put(self, key: _Key, value: tuple[PlanResult, int]) -> None:
@@ -242,7 +242,7 @@ class Planner:
             cycles = list(plan.cycles[k:])
             root = plan.states[k]
             if to_move is Agent.HUMAN:
-                root = self.world.step(root, Agent.ROBOT, cycles[0][0]).state
+                root = self.world.table.successor(root, Agent.ROBOT, cycles[0][0])[0]
                 cycles[0] = (NO_ACTION, cycles[0][1])
             sub = build_plan(self.world, root, to_move, cycles, self._robot_part(ra))
         terms: Terms = sub.totals

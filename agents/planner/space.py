@@ -40,24 +40,26 @@ from __future__ import annotations
 
 import math
 from math import fsum
-from operator import getitem
+from operator import getitem, sub
 from typing import NamedTuple
 
 from hg_marl.agents.planner.costs import CostWeights
 from hg_marl.agents.planner.domain import Domain
+from hg_marl.agents.planner.exactsum import ExactSums
 from hg_marl.agents.planner.models import HumanModel
+from hg_marl.agents.planner.steps import Steps, Successor
+from hg_marl.agents.planner.tables import candidate_entries, next_kinds
 from hg_marl.core import Agent, Kind, State, World
 from hg_marl.core.relabel import Relabel
 
 __all__ = ["HumanEdge", "Relabel", "RobotEdge", "Space", "shared_space"]
 
 LAMBDAS: tuple[float, ...] = (0.0, 0.25, 0.5, 0.75, 1.0)
-"""Mixing weights of robot and human work tried by the bound."""
+"""Mixing weights of robot and human work tried by the bound (five: the edges unroll them)."""
 
 _CACHE_LIMIT = 500_000
-
-Entry = tuple[Kind, int, object, int]
-"""A tabulated candidate: (kind, action index, symmetry signature or None, PLACE spot or -1)."""
+_new = tuple.__new__
+"""Builds the edges' ``NamedTuple`` s without their Python-level ``__new__`` (same values)."""
 
 
 _SPACES = "_planner_spaces"
@@ -149,6 +151,8 @@ class Space:
         self.offer_tables = self._offer_tables()
         """``tables`` for states where the robot is offering: the offered object may also go
         back to the robot's hand (the human lets the offer lapse)."""
+        self._exact = ExactSums(self.tables, self.offer_tables, world.n_objects)
+        """The same sums as ``fsum`` over :attr:`tables`, by integer addition."""
         self.empty_move_coef = tuple(cr * world.durations.goto for cr, _ in self.coefs)
         """What one saved empty-handed move is worth in the bound, per ``LAMBDAS[k]``."""
         self.saves_at = tuple(
@@ -158,14 +162,27 @@ class Space:
             )
             for at in range(self.n_locs)
         )
-        self._next = self._tabulate_next()
+        self._saves_places = tuple(
+            (handover, frozenset(p for p, ok in enumerate(spots) if ok)) for handover, spots in self.saves_at
+        )
+        """:attr:`saves_at` with the spots as a set of place codes (spots come first)."""
+        self._next = next_kinds(self)
+        self.steps = Steps(table)
+        """The rule table's transitions decoded per action index (the inner loop's)."""
+        self._cr = tuple(c for c, _ in self.coefs)
         acts = table.actions
         self.robot_gives = frozenset(i for i, a in enumerate(acts[0]) if a.kind is Kind.GIVE)
         """Robot give indices (an unanswered give is not robot activity, see ``robot_active``)."""
         self.human_takes = frozenset(i for i, a in enumerate(acts[1]) if a.kind is Kind.TAKE)
         # spots worth placing on: the robot can pick from them (other human moves are not steps of any method)
         self.place_spots = tuple(sp for sp, locs in enumerate(domain.spot_locs) if locs and domain.spot_human[sp])
-        self._entries = self._tabulate_candidates()
+        self._entries = candidate_entries(self)
+        self._goto = table.action_index(0, Kind.GOTO, target=0)
+        self._goto_static = tuple(
+            tuple((self._goto + world.n_objects + k, dest) for k, dest in enumerate(row) if dest >= 0)
+            for row in table.goto_static
+        )
+        """Per robot location, the gotos to bins and the human that lead somewhere: (index, destination)."""
         self._cand: tuple[dict[State, tuple[int, ...]], dict[State, tuple[int, ...]]] = ({}, {})
         self._bound: dict[object, float] = {}
         self._sums: dict[object, tuple[float, ...] | None] = {}
@@ -209,24 +226,6 @@ class Space:
             out.append(per_k)
         return out
 
-    def _tabulate_next(self) -> tuple[list[list[list[tuple[Kind, ...]]]], ...]:
-        """``next[agent][robot_at][o][status]``: kinds that are a next step of an applicable method."""
-        d = self.domain
-        out: tuple[list[list[list[tuple[Kind, ...]]]], ...] = ([], [])
-        for agent in Agent:
-            for at in range(self.n_locs):
-                per_o = []
-                for o in range(d.n_objects):
-                    rows = []
-                    for st in range(d.n_status):
-                        kinds: set[Kind] = set()
-                        for _, w in d.works(o, st, at):
-                            kinds |= w.robot_next if agent is Agent.ROBOT else w.human_next
-                        rows.append(tuple(sorted(kinds)))
-                    per_o.append(rows)
-                out[agent].append(per_o)
-        return out
-
     def statuses(self, state: State) -> list[int]:
         """Status code of every object (see :meth:`Domain.status`)."""
         out = list(state.where)
@@ -252,17 +251,23 @@ class Space:
         """
         out = self._robot_edges.get(state)
         if out is None:
-            apply, key_of, base = self.table.successor_feasible, self.key, self.base
-            cr = [c for c, _ in self.coefs]
-            edges = []
-            for ar in self.candidates(state, Agent.ROBOT):
-                s1, d_r = apply(state, Agent.ROBOT, ar)
-                key = key_of(s1)
-                sm = self.cached_sums(s1, key)
-                if sm is not None:
-                    h = base + max(v + c * d_r for v, c in zip(sm, cr, strict=True))
-                    edges.append(RobotEdge(ar, s1, d_r, key, h))
-            out = tuple(edges)
+            base = self.base
+            c0, c1, c2, c3, c4 = self._cr
+            out = tuple(
+                [
+                    _new(
+                        RobotEdge,
+                        (
+                            ar,
+                            s1,
+                            d_r,
+                            key,
+                            base + max(v0 + c0 * d_r, v1 + c1 * d_r, v2 + c2 * d_r, v3 + c3 * d_r, v4 + c4 * d_r),
+                        ),
+                    )
+                    for ar, s1, d_r, key, (v0, v1, v2, v3, v4) in self._successors(state, 0, self.candidates(state, 0))
+                ]
+            )
             if len(self._robot_edges) > _CACHE_LIMIT:
                 self._robot_edges.clear()
             self._robot_edges[state] = out
@@ -272,25 +277,25 @@ class Space:
         """The replies the human model allows at mid-cycle ``state`` applied (dead ends left out), memoised."""
         out = self._human_edges.get(state)
         if out is None:
-            apply, key_of, base = self.table.successor_feasible, self.key, self.base
+            base = self.base
             hand_h = self.table.hand[Agent.HUMAN]
             wait_h = self.wait[Agent.HUMAN]
-            edges = []
-            for ah in self.allowed(state):
-                s2, d_h = apply(state, Agent.HUMAN, ah)
-                key = key_of(s2)
-                sm = self.cached_sums(s2, key)
-                if sm is not None:
-                    edges.append(
-                        HumanEdge(
-                            ah, s2, d_h, ah in self.human_takes, ah != wait_h, hand_h in s2.where, key, base + max(sm)
-                        )
-                    )
-            out = tuple(edges)
+            takes = self.human_takes
+            out = tuple(
+                [
+                    _new(HumanEdge, (ah, s2, d_h, ah in takes, ah != wait_h, hand_h in s2.where, key, base + max(sm)))
+                    for ah, s2, d_h, key, sm in self._successors(state, 1, self.allowed(state))
+                ]
+            )
             if len(self._human_edges) > _CACHE_LIMIT:
                 self._human_edges.clear()
             self._human_edges[state] = out
         return out
+
+    def _successors(self, state: State, agent: int, actions: tuple[int, ...]) -> list[Successor]:
+        """``actions`` applied with their canonical keys and sums (:meth:`.Steps.successors`)."""
+        codes = self._codes if self.symmetric else None
+        return self.steps.successors(state, agent, actions, self.key, self.cached_sums, codes, self._sums)
 
     def allowed(self, state: State) -> tuple[int, ...]:
         """The human replies a deterministic model allows at ``state`` (its candidates, filtered)."""
@@ -316,15 +321,19 @@ class Space:
         statuses = list(where)
         if state.offer_obj >= 0:
             statuses[state.offer_obj] = d.human_offer if state.offer_by == 1 else d.robot_offer
-        tabs = self.tables if state.offer_by != 0 else self.offer_tables
-        vals = [fsum(map(getitem, tab[at], statuses)) for tab in tabs]  # exactly rounded: order-free
-        if math.inf in vals:
-            return None
+        if self._exact.packed is not None:  # ``fsum``'s value by one integer sum
+            vals = self._exact.sums(state.offer_by == 0, at, statuses)
+            if vals is None:
+                return None
+        else:
+            tabs = self.tables if state.offer_by != 0 else self.offer_tables
+            vals = [fsum(map(getitem, tab[at], statuses)) for tab in tabs]  # exactly rounded: order-free
+            if math.inf in vals:
+                return None
         if d.robot_hand not in where:
-            handover, spots = self.saves_at[at]
-            n_spots = d.n_spots
-            if handover or any(p < n_spots and spots[p] for p in where):
-                return tuple(v - e for v, e in zip(vals, self.empty_move_coef, strict=True))
+            handover, spots = self._saves_places[at]
+            if handover or not spots.isdisjoint(where):
+                return tuple(map(sub, vals, self.empty_move_coef))
         return tuple(vals)
 
     def bound(self, state: State, key: object = None) -> float:
@@ -349,41 +358,6 @@ class Space:
         return (tuple(sorted(map(getitem, self._codes, state.where))), state.robot_at, state.offer_by)
 
     # ---- candidates --------------------------------------------------------------
-    def _tabulate_candidates(self) -> tuple[list[list[list[tuple[Entry, ...]]]], ...]:
-        """``entries[agent][robot_at][o][status]``: candidate actions whose reach holds there."""
-        world, d, table = self.world, self.domain, self.table
-        n_spots = world.n_spots
-        out: tuple[list[list[list[tuple[Entry, ...]]]], ...] = ([], [])
-        for agent in Agent:
-            for at in range(self.n_locs):
-                per_o = []
-                for o in range(world.n_objects):
-                    per_st = []
-                    for st in range(d.n_status):
-                        entries: list[Entry] = []
-                        for kind in self._next[agent][at][o][st]:
-                            if kind is Kind.PLACE:
-                                for spot in self.place_spots:
-                                    i = table.action_index(agent, kind, o, spot)
-                                    entries.append((kind, i, (kind, self.spot_class[spot]), spot))
-                                continue
-                            i = table.action_index(agent, kind, o)
-                            if kind is Kind.PICK:
-                                if st < n_spots and table.reach[agent][at][st]:
-                                    entries.append((kind, i, (kind, self.spot_class[st], self.object_class[o]), -1))
-                            elif kind is Kind.THROW:
-                                if table.throw_to[agent][at][o] >= 0:
-                                    entries.append((kind, i, None, -1))
-                            elif kind is Kind.GIVE:
-                                if table.give_ok[at]:
-                                    entries.append((kind, i, None, -1))
-                            elif kind is Kind.TAKE:
-                                entries.append((kind, i, None, -1))
-                        per_st.append(tuple(entries))
-                    per_o.append(per_st)
-                out[agent].append(per_o)
-        return out
-
     def candidates(self, state: State, agent: int) -> tuple[int, ...]:
         """Relevant, symmetry-reduced feasible actions of ``agent`` in ``state`` (``wait`` last)."""
         cache = self._cand[agent]
@@ -397,8 +371,7 @@ class Space:
 
     def _candidates(self, state: State, agent: int) -> tuple[int, ...]:
         where, at, by, obj = state
-        table = self.table
-        hand = table.hand[agent]
+        hand = self.table.hand[agent]
         statuses = list(where)
         if obj >= 0:
             d = self.domain
@@ -406,18 +379,19 @@ class Space:
         empty = hand not in where
         partner_offer = by >= 0 and by != agent
         rows = self._entries[agent][at]
+        pick, take, place = Kind.PICK, Kind.TAKE, Kind.PLACE
         seen: set[object] = set()
         out: list[int] = []
         for o, st in enumerate(statuses):
             for kind, i, sig, spot in rows[o][st]:
-                if kind is Kind.PICK:
+                if kind is pick:
                     if not empty or sig in seen:
                         continue
                     seen.add(sig)
-                elif kind is Kind.TAKE:
+                elif kind is take:
                     if not (partner_offer and obj == o and empty):
                         continue
-                elif kind is Kind.PLACE:
+                elif kind is place:
                     if where[o] != hand or sig in seen or spot in where:
                         continue
                     seen.add(sig)
@@ -425,19 +399,18 @@ class Space:
                     continue
                 out.append(i)
         if agent == 0:
-            n = table.n_objects
-            goto = table.action_index(0, Kind.GOTO, target=0)
+            goto = self._goto
             dests: set[int] = set()
-            per_place = table.goto_obj[at]
+            per_place = self.table.goto_obj[at]
             for t, p in enumerate(where):
                 dest = per_place[p]
                 if dest >= 0 and dest not in dests:
                     dests.add(dest)
                     out.append(goto + t)
-            for k, dest in enumerate(table.goto_static[at]):
-                if dest >= 0 and dest not in dests:
+            for i, dest in self._goto_static[at]:
+                if dest not in dests:
                     dests.add(dest)
-                    out.append(goto + n + k)
+                    out.append(i)
         out.sort()
         out.append(self.wait[agent])
         return tuple(out)

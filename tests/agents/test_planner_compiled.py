@@ -1,0 +1,86 @@
+"""The planner's compiled inner loop against the rules it was compiled from.
+
+:class:`Steps` must give what ``RuleTable.successor_feasible`` gives for every feasible
+action, and :class:`ExactSums` what ``math.fsum`` gives over the bound's tables, on every
+state of seeded random walks (both agents, offers included) and on a hand-made table whose
+plain left-to-right sum is known to differ from the exactly rounded one.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from hg_marl.agents.planner import CostWeights, Planner, PlannerConfig
+from hg_marl.agents.planner.exactsum import ExactSums
+from hg_marl.agents.planner.steps import Steps
+from hg_marl.core import Agent, State, World
+
+SCENARIOS = ("paper2015", "roboergosum", "generated:objects=6,human_only=0.8,seed=1")
+
+
+def walk(world: World, seed: int, length: int) -> list[State]:
+    """States of a seeded random walk, the agents alternating."""
+    rng = np.random.default_rng(seed)
+    state = world.initial_state(rng)
+    out = [state]
+    agent = Agent.ROBOT
+    for _ in range(length):
+        acts = world.feasible_indices(state, agent)
+        state = world.step(state, agent, int(acts[int(rng.integers(len(acts)))])).state
+        out.append(state)
+        agent = Agent.HUMAN if agent is Agent.ROBOT else Agent.ROBOT
+    return out
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_steps_equal_successor_feasible(scenario: str) -> None:
+    world = World(scenario)
+    steps = Steps(world.table)
+    checked = 0
+    for seed in range(4):
+        for state in walk(world, seed, 30):
+            for agent in Agent:
+                for index in world.feasible_indices(state, agent):
+                    assert steps.apply(state, agent, index) == world.table.successor_feasible(state, agent, index)
+                    checked += 1
+    assert checked > 500
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
+@pytest.mark.parametrize("weights", [CostWeights(), CostWeights(0.1, 0.3, 0.7, 1 / 3, 0.01)])
+def test_packed_sums_equal_fsum(scenario: str, weights: CostWeights) -> None:
+    world = World(scenario)
+    space = Planner(world, PlannerConfig(weights=weights)).space
+    assert space._exact.packed is not None
+    d = space.domain
+    for seed in range(4):
+        for state in walk(world, seed, 30):
+            statuses = space.statuses(state)
+            tabs = space.tables if state.offer_by != 0 else space.offer_tables
+            expected = [math.fsum(tab[state.robot_at][o][st] for o, st in enumerate(statuses)) for tab in tabs]
+            got = space._exact.sums(state.offer_by == 0, state.robot_at, statuses)
+            if math.inf in expected:
+                assert got is None
+            else:
+                assert got == expected, state
+            assert d.n_status > max(statuses)
+
+
+def test_packed_sums_are_exactly_rounded_on_a_hand_made_table() -> None:
+    # one location, three objects with one status each; 0.1 + 0.2 + 0.3 is 0.6000000000000001
+    # summed left to right, 0.6 exactly rounded (what fsum gives)
+    plain = [[[[0.1], [0.2], [0.3]]], [[[1e-3], [2.5], [math.inf]]]]
+    exact = ExactSums(plain, plain, 3)
+    assert 0.1 + 0.2 + 0.3 != 0.6
+    assert exact.sums(False, 0, [0, 0, 0]) is None  # an infinite value: a dead end
+    two = ExactSums([[[[0.1], [0.2], [0.3]]]], [[[[0.1], [0.2], [0.3]]]], 3)
+    assert two.sums(False, 0, [0, 0, 0]) == [0.6]
+    assert two.sums(True, 0, [0, 0, 0]) == [0.6]
+
+
+def test_negative_values_keep_to_fsum() -> None:
+    exact = ExactSums([[[[-1.0], [2.0]]]], [[[[-1.0], [2.0]]]], 2)
+    assert exact.packed is None
