@@ -88,6 +88,11 @@ class SB3Robot(Robot):
         self.file: ModelFile | None = None
         if path is not None:
             self.file = load_model_file(path, what="--model", seat="robot")
+            if self.file.header.get("algo") == "RecurrentPPO":
+                raise RobotError(
+                    f"--model {path}: a RecurrentPPO model needs its LSTM state and history observation carried "
+                    "between turns, which the sb3 robot does not do (see docs/learned-robots.md)"
+                )
             model = build_sb3(self.file, optimizer=False)
             observation = self.file.header["observation"]
         if observation not in OBSERVATIONS:
