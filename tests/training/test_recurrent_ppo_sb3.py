@@ -34,7 +34,7 @@ def _config(out: Path, **kw: object) -> RecurrentSb3Config:
         "out": out,
     }
     base.update(kw)
-    return RecurrentSb3Config(**base)  # type: ignore[arg-type]
+    return RecurrentSb3Config(**base)
 
 
 def test_an_infeasible_action_is_a_no_op_that_costs_the_failed_duration(tmp_path: Path) -> None:

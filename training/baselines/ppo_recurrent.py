@@ -389,8 +389,13 @@ def train_from_options(
     checkpoint_freq: int | None,
     progress: bool,
     overrides: tuple[str, ...] = (),
+    held_out: tuple[str, ...] = (),
 ) -> list[str]:
-    """What ``hg-marl train --algo ppo_recurrent`` does (the command only parses): train, return the summary lines."""
+    """What ``hg-marl train --algo ppo_recurrent`` does (the command only parses): train, return the summary lines.
+
+    With ``held_out`` partners and checkpoints, also the generalisation curve
+    (``training/baselines/heldout_curve.py``): ``curve_heldout.csv`` and ``generalisation.png``.
+    """
     values: dict[str, Any] = {
         "humans": humans,
         "scenario": scenario,
@@ -405,4 +410,11 @@ def train_from_options(
         checkpoint_freq if checkpoint_freq is not None else values.get("steps", RecurrentConfig.steps) // 10
     )
     config = config_from_options(values, overrides)
-    return summary(train_recurrent(config), config)
+    if not (held_out and config.checkpoint_freq):
+        return summary(train_recurrent(config), config)
+    from hg_marl.training.baselines.heldout_curve import HeldOutCurve, plot_generalisation
+
+    curve = HeldOutCurve(config, held_out, config.checkpoint_freq)
+    lines = summary(train_recurrent(config, on_update=curve), config)
+    png = plot_generalisation(curve.write(), config.out / "generalisation.png", f"{config.scenario}, {config.recipe}")
+    return [*lines, f"  curve   {curve.path} (train vs held-out partners), {png}"]

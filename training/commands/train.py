@@ -335,10 +335,12 @@ def train_ppo_recurrent(
     """The recurrent batched learner in the robot seat, against a population recipe."""
     check_out_dir(out, "--out")
     from hg_marl.training.baselines.envs import split_population
+    from hg_marl.training.baselines.heldout_curve import held_out_members
     from hg_marl.training.baselines.ppo_batched import population_members
     from hg_marl.training.baselines.ppo_recurrent import train_from_options
 
     members = population_members(population) if population is not None else tuple(split_population(human))
-    args = (members, scenario, recipe, steps, seed, out, checkpoint_freq, progress, tuple(hp or ()))
+    held_out = held_out_members(population) if population is not None else ()
+    args = (members, scenario, recipe, steps, seed, out, checkpoint_freq, progress, tuple(hp or ()), held_out)
     for line in checked(lambda: train_from_options(*args)):
         typer.echo(line)
