@@ -7,8 +7,8 @@ score against partners it never met, drawn against steps. At each checkpoint
 each partner, train and held-out alike, on ``eval_envs`` fresh tables for
 ``eval_seconds`` simulated seconds (the protocol of ``greedy_rate``), and divides by the
 exact best response's rate when the oracle can solve that partner (BR-Prox,
-``min(1, rate / oracle rate)``); otherwise the BR-Prox cell is empty and the plot falls
-back to tasks per hour.
+``min(1, rate / oracle rate)``); otherwise (or when the oracle itself solves nothing) the
+BR-Prox cell is empty and that partner is left out of the split's mean BR-Prox.
 
 File ``curve_heldout.csv``, one row per (checkpoint, partner)::
 
@@ -81,7 +81,16 @@ class HeldOutCurve:
             rate = greedy_rate(net, self.envs[partner], self.config.eval_seconds, self.config.seed + EVAL_SEED)
             best = self.oracle[partner]
             prox = min(1.0, rate / best) if best else None
-            self.rows.append((steps, split, partner, round(rate, 3), best, None if prox is None else round(prox, 4)))
+            self.rows.append(
+                (
+                    steps,
+                    split,
+                    partner,
+                    round(rate, 3),
+                    None if best is None else round(best, 3),
+                    None if prox is None else round(prox, 4),
+                )
+            )
         self.write()
 
     def write(self) -> Path:
@@ -93,8 +102,14 @@ class HeldOutCurve:
         return self.path
 
 
+def _mean_scored(cells: list[str]) -> float:
+    """Mean over the partners that have a BR-Prox (an oracle that solves nothing gives none); NaN if none has."""
+    scored = [float(c) for c in cells if c]
+    return float(np.mean(scored)) if scored else float("nan")
+
+
 def read_curve(path: Path) -> dict[str, dict[str, np.ndarray]]:
-    """Per split: ``steps`` and the mean ``tasks_per_hour`` and ``br_prox`` (NaN where any partner has none)."""
+    """Per split: ``steps``, the mean ``tasks_per_hour`` and the mean ``br_prox`` of the partners that have one."""
     with open(path, newline="") as handle:
         rows = list(csv.DictReader(handle))
     out: dict[str, dict[str, np.ndarray]] = {}
@@ -102,16 +117,13 @@ def read_curve(path: Path) -> dict[str, dict[str, np.ndarray]]:
         mine = [r for r in rows if r["split"] == split]
         steps = sorted({int(r["steps"]) for r in mine})
         rate = [np.mean([float(r["tasks_per_hour"]) for r in mine if int(r["steps"]) == s]) for s in steps]
-        prox = [
-            np.mean([float(r["br_prox"]) if r["br_prox"] else np.nan for r in mine if int(r["steps"]) == s])
-            for s in steps
-        ]
+        prox = [_mean_scored([r["br_prox"] for r in mine if int(r["steps"]) == s]) for s in steps]
         out[split] = {"steps": np.asarray(steps), "tasks_per_hour": np.asarray(rate), "br_prox": np.asarray(prox)}
     return out
 
 
 def plot_generalisation(csv_path: Path, png: Path, title: str = "") -> Path:
-    """Train vs held-out partners against steps (BR-Prox when every partner has an oracle rate, else tasks/h)."""
+    """Train vs held-out partners against steps (BR-Prox when every checkpoint has one, else tasks per hour)."""
     from hg_marl.training.plots import _pyplot, _save
 
     curves = read_curve(csv_path)
