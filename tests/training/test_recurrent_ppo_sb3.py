@@ -9,8 +9,13 @@ import pytest
 
 pytest.importorskip("sb3_contrib")
 
+from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.robots import make_robot
+from hg_marl.agents.sb3_limits import check_policy_kwargs
+from hg_marl.core import Agent
 from hg_marl.core.errors import HgMarlError
+from hg_marl.envs.table_cleaning import raw_env
+from hg_marl.training.baselines.envs import EnvSpec
 from hg_marl.training.baselines.recurrent_ppo_sb3 import (
     RecurrentSb3Config,
     greedy_play,
@@ -18,6 +23,8 @@ from hg_marl.training.baselines.recurrent_ppo_sb3 import (
     make_vec,
     train,
 )
+from hg_marl.training.baselines.train import TrainConfig
+from hg_marl.training.baselines.train import train as train_sb3
 
 
 def _config(out: Path, **kw: object) -> RecurrentSb3Config:
@@ -75,10 +82,55 @@ def test_train_save_reload_plays_the_same(tmp_path: Path) -> None:
     assert 0.0 <= play.infeasible <= 1.0 and play.tasks_per_hour >= 0.0
 
 
-def test_the_sb3_robot_refuses_a_recurrent_model(tmp_path: Path) -> None:
+def test_the_sb3_robot_refuses_a_model_trained_with_history(tmp_path: Path) -> None:
     result = train(_config(tmp_path, steps=128, num_envs=4))
-    with pytest.raises(HgMarlError, match="RecurrentPPO"):
+    with pytest.raises(HgMarlError, match="history"):
         make_robot("sb3", path=str(result.path))
+    with pytest.raises(HgMarlError, match="RecurrentPPO"):
+        make_human("learned", path=str(result.path))
+
+
+def test_train_sb3_recurrent_ppo_plays_in_run_with_its_lstm_state_carried(tmp_path: Path) -> None:
+    """``hg-marl train sb3 --algo recurrent_ppo``: the sb3 robot acts as SB3's own predict with the state carried."""
+    config = TrainConfig(
+        algo="recurrent_ppo",
+        env=EnvSpec(scenario="forced_coordination", partners=("preference",)),
+        steps=256,
+        out=tmp_path,
+        hp_overrides=("n_steps=64", "n_envs=2", "batch_size=64", "n_epochs=1", "policy_kwargs.lstm_hidden_size=16"),
+        eval_freq=0,
+        tensorboard=False,
+    )
+    result = train_sb3(config)
+    robot = make_robot("sb3", path=str(result.path))
+    reference = result.model  # the in-memory model: SB3's predict is the reference
+    env = raw_env(scenario="forced_coordination", continuing=True, max_cycles=40)
+    human = make_human("preference")
+    actions, expected = [], []
+    for episode in range(2):  # the second episode checks the reset: same start, same actions
+        env.reset(seed=0)
+        robot.reset(env.world, Agent.ROBOT, np.random.default_rng(0))
+        human.reset(env.world, Agent.HUMAN, np.random.default_rng(1))
+        state, start = None, np.ones(1, dtype=bool)
+        for _ in range(15):
+            turn = env.turn("robot")
+            facts = np.asarray(turn.observation["observation"])
+            want, state = reference.predict(facts, state=state, episode_start=start, deterministic=True)
+            start = np.zeros(1, dtype=bool)
+            got = robot.act(turn)
+            actions.append((episode, got))
+            expected.append((episode, int(want)))
+            env.step(got)
+            env.step(human.act(env.turn("human")))
+    assert actions == expected
+    assert [a for e, a in actions if e == 0] == [a for e, a in actions if e == 1]
+
+
+def test_a_header_asking_for_a_huge_lstm_is_refused() -> None:
+    for bad in ({"lstm_hidden_size": 10**6}, {"n_lstm_layers": 0}, {"lstm_hidden_size": True}):
+        with pytest.raises(HgMarlError, match="lstm"):
+            check_policy_kwargs(bad, "policy_kwargs", HgMarlError)
+    check_policy_kwargs({"lstm_hidden_size": 64, "n_lstm_layers": 1}, "policy_kwargs", HgMarlError)
 
 
 def test_bad_config_names_the_field(tmp_path: Path) -> None:

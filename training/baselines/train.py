@@ -78,7 +78,7 @@ class TrainConfig:
     """One training run."""
 
     algo: str = "maskable_ppo"
-    """``ppo``, ``a2c``, ``dqn`` or ``maskable_ppo``."""
+    """``ppo``, ``a2c``, ``dqn``, ``maskable_ppo`` or ``recurrent_ppo``."""
     env: EnvSpec = field(default_factory=EnvSpec)
     """Seat, partner(s), scenario, observation, episode length, effort weight."""
     steps: int | None = None

@@ -1,6 +1,6 @@
 """``hg-marl train``: one subcommand per algorithm family.
 
-- ``hg-marl train sb3``: a Stable-Baselines3 algorithm (ppo, a2c, dqn, maskable_ppo) in
+- ``hg-marl train sb3``: a Stable-Baselines3 algorithm (ppo, a2c, dqn, maskable_ppo, recurrent_ppo) in
   the robot seat against humans, or in the human seat against a robot;
 - ``hg-marl train ppo-batched``: the batched PPO learner in the robot seat;
 - ``hg-marl train bc``: behaviour cloning of recorded play (a ``learned`` human).
@@ -133,7 +133,9 @@ def register(app: typer.Typer) -> None:
 
     @train.command("sb3")
     def sb3_command(
-        algo: Annotated[str, typer.Option(help="ppo, a2c, dqn or maskable_ppo.")] = "maskable_ppo",
+        algo: Annotated[
+            str, typer.Option(help="ppo, a2c, dqn, maskable_ppo or recurrent_ppo (sb3-contrib's LSTM PPO, unmasked).")
+        ] = "maskable_ppo",
         seat: Seat = "robot",
         human: Human = "cooperative",
         robot: Robot = "planner",
