@@ -138,3 +138,8 @@ def test_bad_config_names_the_field(tmp_path: Path) -> None:
         train(_config(tmp_path, lstm_hidden=0))
     with pytest.raises(HgMarlError, match="learning_rate"):
         train(_config(tmp_path, learning_rate=float("nan")))
+
+
+def test_recurrent_ppo_trains_the_robot_seat_only() -> None:
+    with pytest.raises(HgMarlError, match="robot seat only"):
+        TrainConfig(algo="recurrent_ppo", env=EnvSpec(seat="human", partners=("planner",)))
