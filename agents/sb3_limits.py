@@ -30,6 +30,11 @@ MAX_LAYERS = 16
 MAX_PARAMETERS = 16_000_000
 """Most weights between consecutive hidden layers (64 MB of float32; Adam keeps two more copies)."""
 
+MAX_LSTM_UNITS = 1024
+"""Widest LSTM accepted (RecurrentPPO's ``lstm_hidden_size``: 4 x 1024 x 1024 weights per layer)."""
+MAX_LSTM_LAYERS = 4
+"""Most stacked LSTM layers accepted (RecurrentPPO's ``n_lstm_layers``)."""
+
 MAX_BUFFER = 1_000_000
 """Largest DQN replay buffer (SB3's default)."""
 
@@ -128,3 +133,7 @@ def check_policy_kwargs(policy_kwargs: Any, what: str, error: type[HgMarlError])
         raise error(f"{what}: expected a mapping, got {policy_kwargs!r}")
     if "net_arch" in policy_kwargs:
         check_net_arch(policy_kwargs["net_arch"], f"{what}.net_arch", error)
+    for key, most in (("lstm_hidden_size", MAX_LSTM_UNITS), ("n_lstm_layers", MAX_LSTM_LAYERS)):
+        value = policy_kwargs.get(key)
+        if value is not None and not (isinstance(value, int) and not isinstance(value, bool) and 1 <= value <= most):
+            raise error(f"{what}.{key}: expected an integer in [1, {most}], got {value!r}")

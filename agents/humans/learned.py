@@ -173,6 +173,8 @@ class LearnedHuman(StationaryHuman):
         else:
             from hg_marl.agents.model_file import build_sb3
 
+            if header.get("algo") == "RecurrentPPO":
+                raise HumanError(f"human 'learned': {path}: a RecurrentPPO (LSTM) policy is not a stationary partner")
             self._model = build_sb3(self.file, optimizer=False)
 
     def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:

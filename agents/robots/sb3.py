@@ -12,6 +12,12 @@ Action masks. A maskable model (``MaskablePPO``) is always given the turn's mask
 training. Plain models (PPO, A2C, DQN) act as they were trained: they never saw the mask
 and may choose an infeasible action, which then fails (legal input, as in the paper).
 
+Memory. A ``RecurrentPPO`` model (an LSTM policy) carries its LSTM state from turn to
+turn and resets it when the episode starts, as in training; its action is the mode of
+the policy's distribution (or a draw with the robot's generator). A model trained with the
+history observation on the batched table (``training/baselines/recurrent_ppo_sb3.py``)
+is refused: the robot does not rebuild that observation.
+
 Decision time. A forward pass of a small MLP costs well under a millisecond; the robot
 charges the same deterministic constant as the habitual expert
 (:class:`~hg_marl.agents.meta.cost.CostModel` ``habit``, 1 ms) unless given a ``cost``
@@ -88,6 +94,11 @@ class SB3Robot(Robot):
         self.file: ModelFile | None = None
         if path is not None:
             self.file = load_model_file(path, what="--model", seat="robot")
+            if self.file.header.get("history"):
+                raise RobotError(
+                    f"--model {path}: trained with the history observation on the batched table, which the sb3 "
+                    "robot does not rebuild (play it with the library, see docs/learned-robots.md)"
+                )
             model = build_sb3(self.file, optimizer=False)
             observation = self.file.header["observation"]
         if observation not in OBSERVATIONS:
@@ -95,12 +106,37 @@ class SB3Robot(Robot):
         self.model = model
         self.observation: str = str(observation)
         self.maskable = is_maskable(model)
+        self.recurrent = type(model).__name__ == "RecurrentPPO"
+        """An LSTM policy: its state is carried from turn to turn and reset with the episode."""
+        self._lstm: Any = None
+        self._start = True
 
     def _reset(self, world: World) -> None:
         if self.agent is not Agent.ROBOT:
             raise RobotError("the sb3 robot plays the robot seat only")
         if self.file is not None:
             check_world(self.file, world, Agent.ROBOT)
+        self._lstm, self._start = None, True
+
+    def _recurrent(self, obs: Any) -> int:
+        """An LSTM policy's action (mode or a draw with the robot's generator), its state carried."""
+        import torch
+
+        policy = self.model.policy
+        if self._lstm is None:
+            zeros = np.zeros(policy.lstm_hidden_state_shape, dtype=np.float32)
+            self._lstm = (zeros, zeros)
+        with torch.no_grad():
+            tensor, _ = policy.obs_to_tensor(obs)
+            states = (torch.as_tensor(self._lstm[0]), torch.as_tensor(self._lstm[1]))
+            start = torch.tensor([float(self._start)])
+            dist, (h, c) = policy.get_distribution(tensor, states, start)
+            probs = dist.distribution.probs.cpu().numpy().reshape(-1).astype(np.float64)
+        self._lstm, self._start = (h.cpu().numpy(), c.cpu().numpy()), False
+        if self.deterministic:
+            return int(np.argmax(probs))
+        probs /= probs.sum()
+        return int(self.rng.choice(len(probs), p=probs))
 
     def _sample(self, obs: Any, mask: np.ndarray) -> int:
         """Draw from the policy's distribution with the robot's own generator."""
@@ -121,7 +157,9 @@ class SB3Robot(Robot):
         t0 = time.perf_counter()
         obs = observation_of(turn.observation, self.observation)
         mask = np.asarray(turn.mask).astype(bool)
-        if not self.deterministic and hasattr(self.model.policy, "get_distribution"):
+        if self.recurrent:
+            action = self._recurrent(obs)
+        elif not self.deterministic and hasattr(self.model.policy, "get_distribution"):
             action = self._sample(obs, mask)
         else:
             kwargs: dict[str, Any] = {"action_masks": mask} if self.maskable else {}

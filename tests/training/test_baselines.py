@@ -61,7 +61,8 @@ def trained(tmp_path_factory: pytest.TempPathFactory):
 @pytest.mark.parametrize("algo", list(ALGOS))
 def test_every_yaml_parses(algo: str) -> None:
     hp = load_hyperparams(algo)
-    assert hp.policy == "MlpPolicy" and hp.n_envs >= 1 and hp.n_timesteps > 0
+    assert hp.policy == ("MlpLstmPolicy" if algo == "recurrent_ppo" else "MlpPolicy")
+    assert hp.n_envs >= 1 and hp.n_timesteps > 0
     assert "policy" not in hp.kwargs and "n_envs" not in hp.kwargs
 
 

@@ -247,7 +247,7 @@ def test_docs_page_python_blocks_run(tmp_path: Path, monkeypatch: pytest.MonkeyP
     monkeypatch.chdir(tmp_path)
     page = Path(__file__).resolve().parents[2] / "docs" / "learned-robots.md"
     blocks = re.findall(r"```python\n(.*?)```", page.read_text(), re.S)
-    assert len(blocks) == 2
+    assert len(blocks) == 4
     for i, block in enumerate(blocks):
         exec(compile(block, f"{page.name}:block{i}", "exec"), {})
 

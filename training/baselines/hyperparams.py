@@ -25,7 +25,13 @@ import yaml
 from hg_marl.agents.sb3_limits import check_kwargs
 from hg_marl.core.errors import ConfigError, ModelFileError, check_digits, check_int
 
-ALGOS: Mapping[str, str] = {"ppo": "PPO", "a2c": "A2C", "dqn": "DQN", "maskable_ppo": "MaskablePPO"}
+ALGOS: Mapping[str, str] = {
+    "ppo": "PPO",
+    "a2c": "A2C",
+    "dqn": "DQN",
+    "maskable_ppo": "MaskablePPO",
+    "recurrent_ppo": "RecurrentPPO",
+}
 """Command-line algorithm names and their SB3 / sb3-contrib class names."""
 
 OWN_KEYS = ("policy", "n_envs", "n_timesteps")
@@ -153,7 +159,7 @@ def load_hyperparams(
             f"{', '.join(OWN_KEYS)}, {', '.join(sorted(known))}"
         )
     n_steps = merged.get("n_steps")
-    if algo in ("ppo", "maskable_ppo") and isinstance(n_steps, int) and n_steps * n_envs < 2:
+    if algo in ("ppo", "maskable_ppo", "recurrent_ppo") and isinstance(n_steps, int) and n_steps * n_envs < 2:
         raise HyperparamError(f"{algo}: n_steps x n_envs must be at least 2 (a rollout of one step has no advantage)")
     return Hyperparams(algo, policy, n_envs, n_timesteps, merged)
 

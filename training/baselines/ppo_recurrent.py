@@ -333,8 +333,10 @@ def train_recurrent(
         elapsed = time.perf_counter() - began
         rate = buf.tasks / max(buf.clock, 1e-9) * HOUR
         curve.append(f"{steps},{rate:.3f},{buf.env_seconds:.2f},{elapsed - buf.env_seconds:.2f}")
-        if on_update is not None:
+        if on_update is not None:  # its time (held-out evaluations) is kept out of the speeds
+            tick = time.perf_counter()
             on_update(steps, net)
+            began += time.perf_counter() - tick
         if next_ckpt is not None and steps >= next_ckpt:
             checkpoints.append(_save(net, env, config.out / "checkpoints" / f"ckpt_{steps}_steps.json", config, steps))
             next_ckpt = (steps // config.checkpoint_freq + 1) * config.checkpoint_freq
@@ -389,8 +391,13 @@ def train_from_options(
     checkpoint_freq: int | None,
     progress: bool,
     overrides: tuple[str, ...] = (),
+    held_out: tuple[str, ...] = (),
 ) -> list[str]:
-    """What ``hg-marl train --algo ppo_recurrent`` does (the command only parses): train, return the summary lines."""
+    """What ``hg-marl train --algo ppo_recurrent`` does (the command only parses): train, return the summary lines.
+
+    With ``held_out`` partners and checkpoints, also the generalisation curve
+    (``training/baselines/heldout_curve.py``): ``curve_heldout.csv`` and ``generalisation.png``.
+    """
     values: dict[str, Any] = {
         "humans": humans,
         "scenario": scenario,
@@ -405,4 +412,11 @@ def train_from_options(
         checkpoint_freq if checkpoint_freq is not None else values.get("steps", RecurrentConfig.steps) // 10
     )
     config = config_from_options(values, overrides)
-    return summary(train_recurrent(config), config)
+    if not (held_out and config.checkpoint_freq):
+        return summary(train_recurrent(config), config)
+    from hg_marl.training.baselines.heldout_curve import HeldOutCurve, plot_generalisation
+
+    curve = HeldOutCurve(config, held_out, config.checkpoint_freq)
+    lines = summary(train_recurrent(config, on_update=curve), config)
+    png = plot_generalisation(curve.write(), config.out / "generalisation.png", f"{config.scenario}, {config.recipe}")
+    return [*lines, f"  curve   {curve.path} (train vs held-out partners), {png}"]

@@ -78,7 +78,7 @@ class TrainConfig:
     """One training run."""
 
     algo: str = "maskable_ppo"
-    """``ppo``, ``a2c``, ``dqn`` or ``maskable_ppo``."""
+    """``ppo``, ``a2c``, ``dqn``, ``maskable_ppo`` or ``recurrent_ppo``."""
     env: EnvSpec = field(default_factory=EnvSpec)
     """Seat, partner(s), scenario, observation, episode length, effort weight."""
     steps: int | None = None
@@ -110,6 +110,8 @@ class TrainConfig:
 
     def __post_init__(self) -> None:
         check_algo(self.algo)
+        if self.algo == "recurrent_ppo" and self.env.seat != "robot":
+            raise ConfigError("--algo recurrent_ppo: robot seat only (a partner with memory is not a stationary human)")
         if self.steps is not None:
             check_int(self.steps, "--steps", minimum=1, maximum=MAX_STEPS)
         check_int(self.eval_freq, "--eval-freq", minimum=0)

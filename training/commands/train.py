@@ -1,6 +1,6 @@
 """``hg-marl train``: one subcommand per algorithm family.
 
-- ``hg-marl train sb3``: a Stable-Baselines3 algorithm (ppo, a2c, dqn, maskable_ppo) in
+- ``hg-marl train sb3``: a Stable-Baselines3 algorithm (ppo, a2c, dqn, maskable_ppo, recurrent_ppo) in
   the robot seat against humans, or in the human seat against a robot;
 - ``hg-marl train ppo-batched``: the batched PPO learner in the robot seat;
 - ``hg-marl train bc``: behaviour cloning of recorded play (a ``learned`` human).
@@ -133,7 +133,9 @@ def register(app: typer.Typer) -> None:
 
     @train.command("sb3")
     def sb3_command(
-        algo: Annotated[str, typer.Option(help="ppo, a2c, dqn or maskable_ppo.")] = "maskable_ppo",
+        algo: Annotated[
+            str, typer.Option(help="ppo, a2c, dqn, maskable_ppo or recurrent_ppo (sb3-contrib's LSTM PPO, unmasked).")
+        ] = "maskable_ppo",
         seat: Seat = "robot",
         human: Human = "cooperative",
         robot: Robot = "planner",
@@ -335,10 +337,12 @@ def train_ppo_recurrent(
     """The recurrent batched learner in the robot seat, against a population recipe."""
     check_out_dir(out, "--out")
     from hg_marl.training.baselines.envs import split_population
+    from hg_marl.training.baselines.heldout_curve import held_out_members
     from hg_marl.training.baselines.ppo_batched import population_members
     from hg_marl.training.baselines.ppo_recurrent import train_from_options
 
     members = population_members(population) if population is not None else tuple(split_population(human))
-    args = (members, scenario, recipe, steps, seed, out, checkpoint_freq, progress, tuple(hp or ()))
+    held_out = held_out_members(population) if population is not None else ()
+    args = (members, scenario, recipe, steps, seed, out, checkpoint_freq, progress, tuple(hp or ()), held_out)
     for line in checked(lambda: train_from_options(*args)):
         typer.echo(line)
