@@ -24,11 +24,11 @@ another scenario's reach, say) is planned live and counted in :attr:`CompiledRob
 
 The stall rule (the project's rule that no robot waits forever on a partner who leaves
 the task solvable) is the progress guard every robot obeys, in its array form
-(:class:`~hg_marl.agents.progress.ArrayProgressGuard`). Per table, ``unchanged`` counts the consecutive robot turns at which
-the state equals the state at that table's previous robot turn (the robot's move and the
-human's answer together changed nothing: the robot waited, or offered an object that
-lapsed, while the human did nothing useful). When ``unchanged >= stall_after`` (``K``,
-default :data:`STALL_AFTER` = 4, the guard's ``PROGRESS_AFTER``), the
+(:class:`~hg_marl.agents.progress.ArrayProgressGuard`). Per table, ``unchanged`` counts
+the consecutive robot turns at which the state equals the state at that table's previous
+robot turn (the robot's move and the human's answer together changed nothing: the robot
+waited, or offered an object that lapsed, while the human did nothing useful). When ``unchanged >= stall_after`` (``K``,
+default :data:`STALL_AFTER` = 12, the guard's ``PROGRESS_AFTER``), the
 robot takes, instead of the planner's action, the ``(m mod n)``-th feasible non-wait
 action in index order, where ``n`` is the number of such actions and ``m`` the stall moves
 this table took since its reset (so a stall that comes back tries the next move, as the

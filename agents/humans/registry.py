@@ -53,6 +53,8 @@ class HumanSpec:
 
 _P = "hg_marl.agents.humans."
 _IDLE = Param(0.0, "probability of doing nothing (wait) at any turn")
+_FO = _P + "family_out:"
+_FO_P = {"p_idle": _IDLE}
 HUMANS: Mapping[str, HumanSpec] = {
     spec.name: spec
     for spec in (
@@ -130,6 +132,33 @@ HUMANS: Mapping[str, HumanSpec] = {
                 "deterministic": Param(False, "take the most probable action instead of sampling"),
                 "fallback": Param("wait", "table kind, unseen observation: 'wait' or 'random'"),
             },
+        ),
+        # The family-out set (agents/humans/family_out.py): no recipe trains or tunes on these.
+        HumanSpec("fo_freeze_on_offer", _FO + "FreezeOnOffer", "family-out: freezes while offered, never takes", _FO_P),
+        HumanSpec("fo_mirror", _FO + "Mirror", "family-out: does the robot's kind of action of the cycle", _FO_P),
+        HumanSpec("fo_picky", _FO + "Picky", "family-out: handles only every other object (even index)", _FO_P),
+        HumanSpec("fo_shy", _FO + "Shy", "family-out: freezes while the robot is at a handover place", _FO_P),
+        HumanSpec("fo_after_waits", _FO + "AfterWaits", "family-out: takes only after two robot waits", _FO_P, False),
+        HumanSpec(
+            "fo_bursts",
+            _FO + "Bursts",
+            "family-out: works, then rests, by the clock",
+            {"work": Param(90.0, "seconds of work"), "rest": Param(60.0, "seconds of rest"), "p_idle": _IDLE},
+            stationary=False,
+        ),
+        HumanSpec(
+            "fo_forgetful",
+            _FO + "Forgetful",
+            "family-out: forgets what it picked for a while",
+            {"hold": Param(30.0, "seconds an object stays forgotten"), "p_idle": _IDLE},
+            stationary=False,
+        ),
+        HumanSpec(
+            "fo_slow_start",
+            _FO + "SlowStart",
+            "family-out: watches first, then helps",
+            {"warmup": Param(120.0, "seconds of watching"), "p_idle": _IDLE},
+            stationary=False,
         ),
         HumanSpec(
             "replay",

@@ -48,6 +48,10 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   belief cannot move), it plays the oracle robot's fallback:
   the planner's move, or a feasible non-wait move when the planner would wait as well;
   once stalled, the planner drives until the partner does something or a task is solved.
+- **The progress guard** every robot obeys (:mod:`hg_marl.agents.progress`): when the
+  state has not changed for ``K`` of its turns (a refused offer repeated while the belief
+  keeps a member who accepts offers often enough to explain each refusal), it takes the
+  guard's feasible move, whatever the belief says (``reason="no_progress"``).
 
 The members' oracles are solved at the first reset in a world and kept for the
 robot's lifetime (a pure cache: the same inputs give the same values).
@@ -64,6 +68,7 @@ import numpy as np
 from hg_marl.agents.oracle import OracleResult, OracleRobot, _human_policy, _Model, oracle_rate
 from hg_marl.agents.partner import PartnerPosterior
 from hg_marl.agents.planner.space import Relabel
+from hg_marl.agents.progress import ProgressGuard
 from hg_marl.agents.robots.base import Robot
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.core import Agent, State, World
@@ -144,6 +149,7 @@ class BeliefRobot(Robot):
         self._fallback = OracleRobot(result=None)
         self._planner = PlannerRobot()
         self._prev: tuple[State, int] | None = None
+        self.progress = ProgressGuard()
 
     def _reset(self, world: World) -> None:
         """Solve each member's oracle (once per world) and forget the previous run's evidence."""
@@ -164,6 +170,7 @@ class BeliefRobot(Robot):
         self._fallback.reset(world, self.agent, self.rng)
         self._planner.reset(world, self.agent, self.rng.spawn(1)[0])
         self._off_population = False
+        self.progress.reset()
 
     def _observe(self, turn: Turn) -> None:
         """Update the posterior from the human's move since the previous turn."""
@@ -222,6 +229,14 @@ class BeliefRobot(Robot):
         world, state = turn.world, turn.state
         post = self.posterior.posterior()
         weights = [post[spec] for spec in self.member_specs]
+        if self.progress.observe(state):
+            # Nothing changed for K turns (a refused offer repeated, waits answered by waits):
+            # whatever the belief says, the move it keeps choosing does not work with this partner.
+            action = self.progress.move(world, state)
+            partner = self.member_names[int(np.argmax(weights))]
+            self.last_decision = Decision("guard", action, reason="no_progress", partner=partner)
+            self._prev = (state, action)
+            return action
         order = [int(np.argmax(weights))] if self.hedge == "map" else list(range(len(weights)))
         mixed: dict[int, float] = {}
         total = 0.0
