@@ -67,6 +67,7 @@ import numpy as np
 
 from hg_marl.agents.oracle import OracleResult, OracleRobot, _human_policy, _Model, oracle_rate
 from hg_marl.agents.partner import PartnerPosterior
+from hg_marl.agents.partner_model import LearnedPartner
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.agents.progress import ProgressGuard
 from hg_marl.agents.robots.base import Robot
@@ -99,6 +100,10 @@ class BeliefRobot(Robot):
         hedge: ``"map"`` (most probable member) or ``"qmdp"`` (expected seconds under the mixture).
         unknown: prior probability that the partner is none of the members (0: a closed world).
         probe: expected seconds the robot may give up to learn who its partner is (0: never probes).
+        open_world: the "none of them" hypothesis: ``"uniform"`` (the uniform partner) or
+            ``"learned"`` (a partner model learned online from this partner's answers,
+            :class:`~hg_marl.agents.partner_model.LearnedPartner`; its prequential evidence
+            competes with the members').
     """
 
     name = "belief"
@@ -112,6 +117,7 @@ class BeliefRobot(Robot):
         hedge: str = "map",
         unknown: float = 0.05,
         probe: float = 0.0,
+        open_world: str = "uniform",
     ) -> None:
         from hg_marl.agents.humans.population import load_population
 
@@ -133,14 +139,19 @@ class BeliefRobot(Robot):
             raise RobotError(f"belief.population: a member plays {UNKNOWN!r}, the robot's 'none of them' hypothesis")
         # The open world: "none of the members" is the uniform partner (the registry's
         # `random` human), so it wins only where the members explain the moves worse than chance.
-        types = (*self.member_specs, UNKNOWN) if unknown > 0 else self.member_specs
+        if open_world not in ("uniform", "learned"):
+            raise RobotError(f"belief.open_world: expected uniform or learned, got {open_world!r}")
+        self.open_world = open_world
+        learned = LearnedPartner() if open_world == "learned" and unknown > 0 else None
+        self._unknown_name = learned.name if learned is not None else UNKNOWN
+        types = (*self.member_specs, self._unknown_name) if unknown > 0 else self.member_specs
         prior = [(1.0 - unknown) / len(members)] * len(members) + ([unknown] if unknown > 0 else [])
         self.unknown = unknown
         if not (math.isfinite(probe) and probe >= 0.0):
             raise RobotError(f"belief.probe: expected seconds >= 0, got {probe!r}")
         self.probe = probe
         try:
-            self.posterior = PartnerPosterior(types=types, prior=prior, decay=decay, epsilon=epsilon)
+            self.posterior = PartnerPosterior(types=types, prior=prior, decay=decay, epsilon=epsilon, learned=learned)
         except ValueError as exc:
             raise RobotError(f"belief: {exc}") from None
         self._world: World | None = None
@@ -254,7 +265,7 @@ class BeliefRobot(Robot):
         action = min(mixed, key=lambda a: (mixed[a], a)) if mixed else -1
         # The partner explained by no member better than by chance is off the population:
         # a member's best response would be a guess, the planner replans from what it sees.
-        off_population = self.unknown > 0 and post[UNKNOWN] > max(weights)
+        off_population = self.unknown > 0 and post[self._unknown_name] > max(weights)
         if off_population:
             if not self._off_population:
                 self._planner.last_decision = None  # its expectation from an earlier spell is stale
@@ -263,7 +274,7 @@ class BeliefRobot(Robot):
             record = self._planner.last_decision
             assert record is not None
             reason = "no member explains the partner, the planner drives: " + record.reason
-            self.last_decision = replace(record, reason=reason, partner=UNKNOWN)
+            self.last_decision = replace(record, reason=reason, partner=self._unknown_name)
             self._prev = (state, int(action))
             return int(action)
         self._off_population = False
