@@ -33,7 +33,7 @@ from __future__ import annotations
 import math
 from collections import Counter
 
-from hg_marl.core import Agent, Kind, State, World
+from hg_marl.core import Agent, State, World
 
 FAILED = -1
 """The robot action kind of a failed (or unknown) robot action."""
@@ -62,7 +62,7 @@ class LearnedPartner:
 
     def reset(self) -> None:
         """Forget every count (a new run)."""
-        self.counts: dict[Context, Counter[int]] = {}
+        self.counts: dict[Context, dict[int, float]] = {}
 
     @staticmethod
     def context(world: World, state: State, robot_action: int) -> Context:
@@ -78,9 +78,9 @@ class LearnedPartner:
     def kind_distribution(self, world: World, state: State, robot_action: int) -> dict[int, float]:
         """``p(kind)`` over the kinds feasible for the partner at ``state``."""
         kinds = {int(world.actions(Agent.HUMAN)[i].kind) for i in world.feasible_indices(state, Agent.HUMAN)}
-        counts = self.counts.get(self.context(world, state, robot_action), Counter())
-        total = sum(counts[k] + self.alpha for k in kinds)
-        return {k: (counts[k] + self.alpha) / total for k in kinds}
+        counts = self.counts.get(self.context(world, state, robot_action), {})
+        total = sum(counts.get(k, 0.0) + self.alpha for k in kinds)
+        return {k: (counts.get(k, 0.0) + self.alpha) / total for k in kinds}
 
     def distribution(self, world: World, state: State, robot_action: int = -1) -> list[tuple[int, float]]:
         """The predicted answer over the partner's feasible ground actions (an answer distribution)."""
@@ -97,7 +97,8 @@ class LearnedPartner:
     def update(self, world: World, state: State, robot_action: int, human_action: int) -> None:
         """Count the answer ``human_action`` (after :meth:`predict`, for a prequential evidence)."""
         ctx = self.context(world, state, robot_action)
-        counts = self.counts.setdefault(ctx, Counter())
+        counts = self.counts.setdefault(ctx, {})
         for k in counts:
             counts[k] *= self.forget
-        counts[int(world.actions(Agent.HUMAN)[human_action].kind)] += 1.0
+        kind = int(world.actions(Agent.HUMAN)[human_action].kind)
+        counts[kind] = counts.get(kind, 0.0) + 1.0

@@ -1,13 +1,15 @@
 """The progress guard: one rule for every robot, no more than K moves that change nothing in a row.
 
 A partner who refuses every offer and mostly idles is the stall the guard exists for: a
-robot that keeps offering (or waiting for it) changes nothing, turn after turn. Expected values come from the rule as the module docstring states it (recomputed here
+robot that keeps offering (or waiting for it) changes nothing, turn after turn. Expected
+values come from the rule as the module docstring states it (recomputed here
 from the world's own feasibility, not from the guard's code) and from counting unchanged
 robot-turn states in the run.
 """
 
 from __future__ import annotations
 
+import itertools
 from typing import Any
 
 import numpy as np
@@ -49,7 +51,7 @@ class Recording:
 def longest_unchanged(states: list[State]) -> int:
     """Longest run of robot turns whose state equals the previous turn's (a move that changed nothing)."""
     best = run_ = 0
-    for a, b in zip(states, states[1:], strict=False):
+    for a, b in itertools.pairwise(states):
         run_ = run_ + 1 if a == b else 0
         best = max(best, run_)
     return best
