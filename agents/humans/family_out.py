@@ -33,8 +33,10 @@ from hg_marl.agents.humans.base import (
     check_p_idle,
     deterministic,
     first_feasible,
+    human_only_spots,
     index_of,
     sample,
+    shared_spots,
     tidy_action,
     wait_index,
     with_idle,
@@ -116,12 +118,12 @@ class FreezeOnOffer(_Stationary):
 
 
 class Mirror(_Stationary):
-    """``fo_mirror``: does the same kind of action as the robot in this cycle.
+    """``fo_mirror``: works only while the robot works, echoing the kind of the robot's action.
 
-    Robot picks: it picks (the tidying rule's pick, if that is a pick); robot throws: it
-    throws what it holds if it can; robot offers: it takes; robot takes: it hands over what
-    it holds; robot moves, waits or fails: it waits. Stationary in (state, robot action)
-    (``uses_robot_action``): an imitator who works only while the robot does.
+    Robot waits or fails: it waits. Robot offers: it takes. Otherwise it does its own
+    tidying move (the robot's kind where the tidying rule offers one: a pick for a pick, a
+    throw for a throw), so it keeps pace with an active robot and stops with an idle one.
+    Stationary in (state, robot action) (``uses_robot_action``): an imitator.
     """
 
     name = "fo_mirror"
@@ -132,36 +134,59 @@ class Mirror(_Stationary):
         if robot_action < 0:
             return wait
         kind = world.actions(Agent.ROBOT)[robot_action].kind
+        if kind is Kind.WAIT:
+            return wait
         if kind is Kind.GIVE:
             index = take_offer(world, state)
             return index if index >= 0 else wait
         held = world.holding(state, Agent.HUMAN)
         if kind is Kind.THROW and held >= 0:
             index = first_feasible(world, state, [index_of(world, Kind.THROW, held)])
-            return index if index >= 0 else wait
-        if kind is Kind.TAKE and held >= 0:
-            index = first_feasible(world, state, [index_of(world, Kind.GIVE, held)])
-            return index if index >= 0 else wait
-        if kind is Kind.PICK:
-            index = tidy_action(world, state, give=True)
-            if index >= 0 and world.actions(Agent.HUMAN)[index].kind is Kind.PICK:
+            if index >= 0:
                 return index
-        return wait
+        return helpful(world, state, take=False)
 
 
 class Picky(_Stationary):
-    """``fo_picky``: handles only every other object (even index): takes, picks and throws those only.
+    """``fo_picky``: throws, takes and hands over only every other object (even index).
 
-    A person who clears only the things they consider theirs (here: objects ``0, 2, 4...``)
-    and ignores the rest, offers included. Stationary; not equivariant (the rule names
-    objects by index).
+    A person who clears only the things they consider theirs (objects ``0, 2, 4...``): the
+    others it never throws, takes nor hands over; it only moves one that lies where the
+    robot cannot reach onto a free shared spot (so the task stays solvable, by the robot).
+    Stationary; not equivariant (the rule names objects by index).
     """
 
     name = "fo_picky"
 
     def rule(self, world: World, state: State, robot_action: int) -> int:
-        mine = frozenset(range(0, world.n_objects, 2))
-        return helpful(world, state, objects=mine)
+        wait = wait_index(world)
+        held = world.holding(state, Agent.HUMAN)
+        shared = shared_spots(world)
+        if held >= 0:
+            if held % 2 == 0:
+                index = tidy_action(world, state, give=True)
+            else:
+                index = first_feasible(world, state, [index_of(world, Kind.PLACE, held, s) for s in shared])
+            return index if index >= 0 else wait
+        if state.offer_obj >= 0 and state.offer_obj % 2 == 0:
+            index = take_offer(world, state)
+            if index >= 0:
+                return index
+        free_shared = any(s not in state.where for s in shared)
+        only_human = human_only_spots(world)
+        for o, place in enumerate(state.where):
+            if place >= world.n_spots or not world.spot_reachable(state, Agent.HUMAN, place):
+                continue
+            if o % 2 == 0:
+                bin_ok = world.table.throw_to[Agent.HUMAN][state.robot_at][o] >= 0
+                useful = bin_ok or (place in only_human and free_shared)
+            else:
+                useful = place in only_human and free_shared
+            if useful:
+                index = first_feasible(world, state, [index_of(world, Kind.PICK, o)])
+                if index >= 0:
+                    return index
+        return wait
 
 
 class Shy(_Stationary):

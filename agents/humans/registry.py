@@ -135,8 +135,8 @@ HUMANS: Mapping[str, HumanSpec] = {
         ),
         # The family-out set (agents/humans/family_out.py): no recipe trains or tunes on these.
         HumanSpec("fo_freeze_on_offer", _FO + "FreezeOnOffer", "family-out: freezes while offered, never takes", _FO_P),
-        HumanSpec("fo_mirror", _FO + "Mirror", "family-out: does the robot's kind of action of the cycle", _FO_P),
-        HumanSpec("fo_picky", _FO + "Picky", "family-out: handles only every other object (even index)", _FO_P),
+        HumanSpec("fo_mirror", _FO + "Mirror", "family-out: works only while the robot works, echoing its kind", _FO_P),
+        HumanSpec("fo_picky", _FO + "Picky", "family-out: throws, takes, gives only even-index objects", _FO_P),
         HumanSpec("fo_shy", _FO + "Shy", "family-out: freezes while the robot is at a handover place", _FO_P),
         HumanSpec("fo_after_waits", _FO + "AfterWaits", "family-out: takes only after two robot waits", _FO_P, False),
         HumanSpec(
