@@ -33,7 +33,8 @@ from __future__ import annotations
 import math
 from collections import Counter
 
-from hg_marl.core import Agent, State, World
+from hg_marl.agents.planner.models import HUMAN_KINDS, RestrictedHuman
+from hg_marl.core import Agent, Kind, State, World
 
 FAILED = -1
 """The robot action kind of a failed (or unknown) robot action."""
@@ -63,6 +64,10 @@ class LearnedPartner:
     def reset(self) -> None:
         """Forget every count (a new run)."""
         self.counts: dict[Context, dict[int, float]] = {}
+        self.chances: dict[int, float] = {}
+        """Per kind, the (forgetting) number of answers at which it was feasible."""
+        self.taken: dict[int, float] = {}
+        """Per kind, the (forgetting) number of those answers that were of this kind."""
 
     @staticmethod
     def context(world: World, state: State, robot_action: int) -> Context:
@@ -102,3 +107,23 @@ class LearnedPartner:
             counts[k] *= self.forget
         kind = int(world.actions(Agent.HUMAN)[human_action].kind)
         counts[kind] = counts.get(kind, 0.0) + 1.0
+        for k in {int(world.actions(Agent.HUMAN)[i].kind) for i in world.feasible_indices(state, Agent.HUMAN)}:
+            self.chances[k] = self.forget * self.chances.get(k, 0.0) + 1.0
+            self.taken[k] = self.forget * self.taken.get(k, 0.0) + float(k == kind)
+
+    def refused_kinds(self, min_chances: float = 3.0, below: float = 0.1) -> frozenset[Kind]:
+        """Kinds the partner (almost) never does when it can: feasible ``min_chances`` times, done < ``below``."""
+        return frozenset(
+            Kind(k)
+            for k, n in self.chances.items()
+            if k != int(Kind.WAIT) and n >= min_chances and self.taken.get(k, 0.0) / n < below
+        )
+
+    def planner_model(self) -> RestrictedHuman:
+        """The planner's human model of this partner: cooperative, without the kinds it refuses.
+
+        The planner's human-aware search then plans as the partner behaves (a partner who
+        never takes gets no handover in the plan); the answer distribution itself is the
+        belief's evidence, not the planner's input, which keeps the planner's search small.
+        """
+        return RestrictedHuman("learned", HUMAN_KINDS - self.refused_kinds())

@@ -270,6 +270,9 @@ class BeliefRobot(Robot):
             if not self._off_population:
                 self._planner.last_decision = None  # its expectation from an earlier spell is stale
             self._off_population = True
+            if self.posterior.learned is not None:
+                # Plan as the partner behaves: without the kinds of action it refuses.
+                self._planner.partnering.base = self.posterior.learned.planner_model()
             action = self._planner.act(turn)
             record = self._planner.last_decision
             assert record is not None

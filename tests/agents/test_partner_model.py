@@ -91,3 +91,19 @@ def test_belief_robot_with_the_learned_model_runs_and_names_it() -> None:
     assert len(log) > 20
     with pytest.raises(Exception, match="open_world"):
         make_robot("belief", population="populations/paper2015.toml", open_world="nope")
+
+
+def test_refused_kinds_leave_the_planners_model() -> None:
+    """Three refusals of an offer (forget 1: take feasible 3 times, done 0 times): take is refused."""
+    world = World("paper2015")
+    mid, give = offered_state(world)
+    wait = world.n_actions(Agent.HUMAN) - 1
+    model = LearnedPartner(forget=1.0)
+    for n in range(3):
+        assert Kind.TAKE not in model.refused_kinds()  # fewer than 3 chances: no verdict yet
+        model.update(world, mid, give, wait)
+        assert model.chances[int(Kind.TAKE)] == n + 1 and model.taken[int(Kind.TAKE)] == 0
+    assert Kind.TAKE in model.refused_kinds()
+    assert Kind.WAIT not in model.refused_kinds()
+    assert Kind.TAKE not in model.planner_model().allowed_kinds
+    assert Kind.THROW in model.planner_model().allowed_kinds
