@@ -33,8 +33,11 @@ from __future__ import annotations
 import math
 from collections import Counter
 
+import numpy as np
+
 from hg_marl.agents.planner.models import HUMAN_KINDS, RestrictedHuman
 from hg_marl.core import Agent, Kind, State, World
+from hg_marl.policy import Turn
 
 FAILED = -1
 """The robot action kind of a failed (or unknown) robot action."""
@@ -127,3 +130,25 @@ class LearnedPartner:
         belief's evidence, not the planner's input, which keeps the planner's search small.
         """
         return RestrictedHuman("learned", HUMAN_KINDS - self.refused_kinds())
+
+
+def observe_move(model: LearnedPartner, world: World, previous: tuple[State, int] | None, turn: Turn) -> None:
+    """Count the partner's move since the robot's previous turn (``previous``: its state and action).
+
+    The state the partner answered in is the robot's previous state after the robot's own
+    action (the rules make it deterministic); a solved task re-draws the table, so that
+    cycle is not counted, nor one whose reconstruction does not hold.
+    """
+    human_action = turn.last_actions[1]
+    if previous is None or human_action < 0 or turn.reward > 0:
+        return
+    state, robot_action = previous
+    step = world.step(state, Agent.ROBOT, robot_action)
+    if world.step(step.state, Agent.HUMAN, human_action).state == turn.state:
+        model.update(world, step.state, robot_action if step.ok else -1, human_action)
+
+
+def partner_features(model: LearnedPartner) -> np.ndarray:
+    """The partner model's verdicts a habit can read: does it refuse to take, to give (0/1 each)."""
+    refused = model.refused_kinds()
+    return np.array([Kind.TAKE in refused, Kind.GIVE in refused], dtype=np.int8)

@@ -22,10 +22,13 @@ from __future__ import annotations
 
 from typing import Any
 
+import numpy as np
+
 from hg_marl.agents.habit import QLearner, QLearnerConfig
 from hg_marl.agents.meta.base import Criterion, HabitView, PlanProposal
 from hg_marl.agents.meta.controller import MetaController
 from hg_marl.agents.meta.cost import CostModel
+from hg_marl.agents.partner_model import LearnedPartner, observe_move, partner_features
 from hg_marl.agents.progress import ProgressGuard
 from hg_marl.agents.robots.base import LearningRobot, habit_stall_move, plan_proposal
 from hg_marl.agents.robots.partnering import Partnering
@@ -51,6 +54,9 @@ class HybridRobot(LearningRobot):
         human_model: the human model the planner assumes (None: cooperative).
         partner_aware: plan against the most probable partner type, learnt online
             (:class:`~hg_marl.agents.partner.PartnerPosterior`) instead of ``human_model``.
+        partner_features: the habit also reads the learned partner model's verdicts (does the
+            partner refuse to take, to give: :func:`~hg_marl.agents.partner_model.partner_features`),
+            so what is learnt about this partner splits the habit's states where it matters.
         q_config, learner, learn, cost, share_objects: as for :class:`~hg_marl.agents.robots.base.LearningRobot`.
     """
 
@@ -69,8 +75,11 @@ class HybridRobot(LearningRobot):
         cost: CostModel | None = None,
         partner_aware: bool = False,
         share_objects: bool = True,
+        partner_features: bool = False,
     ) -> None:
         super().__init__(q_config, learner, learn, cost, share_objects)
+        self.partner_features = check_bool(partner_features, f"{self.name}.partner_features", RobotError)
+        self.partner_model = LearnedPartner() if self.partner_features else None
         self.meta = MetaController(criterion, **(criterion_params or {}))
         self.planner_config = planner_config
         self.human_model = human_model
@@ -85,6 +94,18 @@ class HybridRobot(LearningRobot):
         self.partnering = Partnering(world, self.planner_config, self.human_model, self.partner_aware)
         self.planner = self.partnering.planner
         self.progress.reset()
+        if self.partner_model is not None:
+            self.partner_model.reset()
+            if self._given_learner is None:  # the habit's state grows by the partner model's verdicts
+                self.learner = QLearner(world.n_facts + 2, self.n_actions, self.q_config)
+
+    def _habit_facts(self, turn: Turn) -> np.ndarray:
+        """The facts (canonical with ``share_objects``), followed by the partner model's verdicts when enabled."""
+        facts = super()._habit_facts(turn)
+        if self.partner_model is None:
+            return facts
+        observe_move(self.partner_model, turn.world, self.partnering.previous, turn)
+        return np.concatenate([facts, partner_features(self.partner_model)]).astype(facts.dtype)
 
     def _plan(self, state: State) -> tuple[PlanProposal, float]:
         result = self.planner.plan(state, to_move=self.agent)

@@ -9,7 +9,7 @@ import pytest
 
 from hg_marl.agents.humans import make_human
 from hg_marl.agents.partner import PartnerPosterior
-from hg_marl.agents.partner_model import LearnedPartner
+from hg_marl.agents.partner_model import LearnedPartner, partner_features
 from hg_marl.agents.robots import make_robot
 from hg_marl.core import Agent, Kind, State, World
 from hg_marl.training.runner import RunConfig, run
@@ -107,3 +107,28 @@ def test_refused_kinds_leave_the_planners_model() -> None:
     assert Kind.WAIT not in model.refused_kinds()
     assert Kind.TAKE not in model.planner_model().allowed_kinds
     assert Kind.THROW in model.planner_model().allowed_kinds
+
+
+def test_partner_features_are_the_take_and_give_verdicts() -> None:
+    world = World("paper2015")
+    mid, give = offered_state(world)
+    wait = world.n_actions(Agent.HUMAN) - 1
+    model = LearnedPartner(forget=1.0)
+    assert partner_features(model).tolist() == [0, 0]
+    for _ in range(3):
+        model.update(world, mid, give, wait)
+    assert partner_features(model).tolist() == [1, 0]  # refuses to take; giving was never possible
+
+
+def test_hybrid_habit_reads_the_partner_models_verdicts() -> None:
+    robot = make_robot("hybrid", partner_features=True)
+    run(robot, make_human("lazy:p_idle=0.3"), RunConfig(duration=300, seed=0))
+    model = robot.partner_model
+    assert model is not None and sum(model.chances.values()) > 0  # it learnt from the partner's moves
+    n = World("paper2015").n_facts
+    assert robot.habit.n_facts == n + 2
+    codes = [bytes(k) for k in robot.habit._codes]
+    assert codes and all(len(c) == n + 2 for c in codes)
+    plain = make_robot("hybrid")
+    run(plain, make_human("lazy:p_idle=0.3"), RunConfig(duration=300, seed=0))
+    assert plain.partner_model is None and plain.habit.n_facts == n
