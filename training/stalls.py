@@ -47,10 +47,11 @@ def runs_of(out: Path) -> list[dict[str, Any]]:
         with gzip.open(result.parent / "log.csv.gz", "rt") as f:
             log = pd.read_csv(f)
         params = ",".join(f"{k}={v}" for k, v in sorted(job.get("robot_params", {}).items()))
+        human = ",".join(f"{k}={v}" for k, v in sorted(job.get("human_params", {}).items()))
         rows.append(
             {
                 "robot": job["robot"] + (f":{params}" if params else ""),
-                "human": job["human"],
+                "human": job["human"] + (f":{human}" if human else ""),
                 "scenario": job["scenario"],
                 "seed": job["seed"],
                 "tasks": int(log["tasks_solved"].max()) if len(log) else 0,
@@ -76,7 +77,7 @@ def report(out: Path) -> str:
     for robot, rs in sorted(by_robot.items()):
         stalls = [r for r in rs if r["gap"] > STALL_SECONDS]
         worst = max(rs, key=lambda r: r["gap"])
-        where = f" ({worst['human']}, {worst['scenario']}, seed {worst['seed']})"
+        where = f" ({worst['human'][:40]}, {worst['scenario']}, seed {worst['seed']})"
         guard = sum(r["guard_moves"] for r in rs) / len(rs)
         lines.append(f"| {robot} | {len(rs)} | {len(stalls)} | {worst['gap']:.0f}{where} | {guard:.1f} |")
     return "\n".join(lines)
