@@ -123,6 +123,11 @@ class Mirror(_Stationary):
     Robot waits or fails: it waits. Robot offers: it takes. Otherwise it does its own
     tidying move (the robot's kind where the tidying rule offers one: a pick for a pick, a
     throw for a throw), so it keeps pace with an active robot and stops with an idle one.
+    It copies the robot's *willingness*, not its helplessness: a robot that waits because
+    it has no other feasible move (everything left is out of its reach) is not idling, and
+    the partner carries on tidying. Without that exception the pair deadlocks whenever the
+    robot runs out of reachable work (both wait forever), and the task would be left
+    unsolvable by the partner, not by the robot.
     Stationary in (state, robot action) (``uses_robot_action``): an imitator.
     """
 
@@ -135,7 +140,9 @@ class Mirror(_Stationary):
             return wait
         kind = world.actions(Agent.ROBOT)[robot_action].kind
         if kind is Kind.WAIT:
-            return wait
+            robot_wait = world.n_actions(Agent.ROBOT) - 1
+            stuck = all(i == robot_wait for i in world.feasible_indices(state, Agent.ROBOT))
+            return helpful(world, state, take=False) if stuck else wait
         if kind is Kind.GIVE:
             index = take_offer(world, state)
             return index if index >= 0 else wait
