@@ -82,6 +82,18 @@ def helpful(world: World, state: State, *, take: bool = True, objects: frozenset
     return index if index >= 0 else wait_index(world)
 
 
+def robot_stuck(world: World, state: State) -> bool:
+    """Whether the robot has no feasible move but ``wait`` (nothing left within its reach).
+
+    A partner whose habit answers something the robot does (``fo_mirror``: its idling;
+    ``fo_shy``: its standing at a handover place) makes an exception when the robot does
+    it for lack of anything else: otherwise both would wait forever and the partner, not
+    the robot, would leave the task unsolvable.
+    """
+    robot_wait = world.n_actions(Agent.ROBOT) - 1
+    return all(i == robot_wait for i in world.feasible_indices(state, Agent.ROBOT))
+
+
 class _Stationary(StationaryHuman):
     """A stationary family-out partner: one deterministic rule, idling with ``p_idle``."""
 
@@ -140,9 +152,7 @@ class Mirror(_Stationary):
             return wait
         kind = world.actions(Agent.ROBOT)[robot_action].kind
         if kind is Kind.WAIT:
-            robot_wait = world.n_actions(Agent.ROBOT) - 1
-            stuck = all(i == robot_wait for i in world.feasible_indices(state, Agent.ROBOT))
-            return helpful(world, state, take=False) if stuck else wait
+            return helpful(world, state, take=False) if robot_stuck(world, state) else wait
         if kind is Kind.GIVE:
             index = take_offer(world, state)
             return index if index >= 0 else wait
@@ -201,13 +211,14 @@ class Shy(_Stationary):
 
     A person uneasy with the robot close by: never takes nor hands over, tidies its own area
     (moving what the robot cannot reach onto a shared spot) only while the robot is at a
-    location where no handover is possible. Stationary (the robot's location is in the state).
+    location where no handover is possible, or while the robot stands there with nothing
+    else it can do (:func:`robot_stuck`). Stationary (the robot's location is in the state).
     """
 
     name = "fo_shy"
 
     def rule(self, world: World, state: State, robot_action: int) -> int:
-        if state.robot_at in world.scenario.handover_locations:
+        if state.robot_at in world.scenario.handover_locations and not robot_stuck(world, state):
             return wait_index(world)
         index = tidy_action(world, state, give=False)
         return index if index >= 0 else wait_index(world)

@@ -57,3 +57,34 @@ def test_no_recipe_population_or_tuning_file_names_a_family_out_partner() -> Non
     for f in files:
         text = f.read_text(errors="ignore")
         assert not any(name in text for name in FAMILY_OUT), f
+
+
+def test_mirror_goes_on_when_the_robot_has_nothing_but_wait() -> None:
+    """On ``asymmetric_advantages`` the planner runs out of reachable work after one task.
+
+    A mirror that answered that forced wait with a wait left both idle for the rest of the
+    run (one task, a 651 s stretch without one in 700 s); the task stays solvable by the
+    partner, so the project's rule asks for no stretch over 300 s without a task.
+    """
+    from hg_marl.training.stalls import STALL_SECONDS, longest_gap
+
+    config = RunConfig(scenario="asymmetric_advantages", duration=700, seed=0)
+    log = run(make_robot("planner"), make_human("fo_mirror"), config).log
+    assert longest_gap(log, 700.0) <= STALL_SECONDS
+    assert int(log["reward"].sum()) > 1
+
+
+def test_shy_goes_on_when_the_robot_is_parked_with_nothing_to_do() -> None:
+    """The belief robot ends up at a handover place with nothing but ``wait`` feasible.
+
+    A shy partner that froze there regardless left both idle (8 tasks, a 901 s stretch
+    without one in 1100 s on ``asymmetric_advantages``, seed 2); the rule asks for no
+    stretch over 300 s while the task is solvable.
+    """
+    from hg_marl.training.stalls import STALL_SECONDS, longest_gap
+
+    robot = make_robot("belief", population=str(ROOT / "populations" / "hard_layouts.toml"))
+    config = RunConfig(scenario="asymmetric_advantages", duration=1100, seed=2)
+    log = run(robot, make_human("fo_shy"), config).log
+    assert longest_gap(log, 1100.0) <= STALL_SECONDS
+    assert int(log["reward"].sum()) > 8
