@@ -23,11 +23,12 @@ answered by one ``searchsorted``. A state outside the table (a reset to a given 
 another scenario's reach, say) is planned live and counted in :attr:`CompiledRobot.fallbacks`.
 
 The stall rule (the project's rule that no robot waits forever on a partner who leaves
-the task solvable). Per table, ``unchanged`` counts the consecutive robot turns at which
-the state equals the state at that table's previous robot turn (the robot's move and the
-human's answer together changed nothing: the robot waited, or offered an object that
-lapsed, while the human did nothing useful). When ``unchanged >= stall_after`` (``K``,
-default :data:`STALL_AFTER` = 4, the live planner's ``PartnerMonitor.stall_after``), the
+the task solvable) is the progress guard every robot obeys, in its array form
+(:class:`~hg_marl.agents.progress.ArrayProgressGuard`). Per table, ``unchanged`` counts
+the consecutive robot turns at which the state equals the state at that table's previous
+robot turn (the robot's move and the human's answer together changed nothing: the robot
+waited, or offered an object that lapsed, while the human did nothing useful). When ``unchanged >= stall_after`` (``K``,
+default :data:`STALL_AFTER` = 12, the guard's ``PROGRESS_AFTER``), the
 robot takes, instead of the planner's action, the ``(m mod n)``-th feasible non-wait
 action in index order, where ``n`` is the number of such actions and ``m`` the stall moves
 this table took since its reset (so a stall that comes back tries the next move, as the
@@ -37,13 +38,13 @@ followed by the next option at once. A table reset zeroes both counters. So a pa
 who only waits sees the robot wait at most ``K`` cycles in a row before it moves: the
 move comes at the ``K + 1``-th cycle of an unchanged state.
 
-Difference from the live planner. The live monitor counts *unmet expectations* (the plan
-expected a non-wait human action the human did not do, or no plan was found), stalls
-after 4 of them and then drops the count to 2; it also blocks human actions refused twice
-(the planner then plans with a restricted model) and draws its stall move uniformly with
-the robot's generator. The compiled robot has no blocked actions (its plans always assume
-the cooperative model), counts unchanged states instead of unmet expectations, and chooses
-its stall move deterministically. Against a partner who follows the plans both act alike;
+Difference from the live planner. The live planner obeys the same guard and, on top of
+it, a monitor of *unmet expectations* (the plan expected a non-wait human action the human
+did not do, or no plan was found), which stalls after 4 of them and then drops the count
+to 2; it also blocks human actions refused twice (the planner then plans with a restricted
+model) and draws that monitor's stall move uniformly with the robot's generator. The
+compiled robot has no blocked actions (its plans always assume the cooperative model) and
+no monitor, only the guard. Against a partner who follows the plans both act alike;
 against one who refuses, the live robot may find a detour sooner.
 
 Cost (``paper2015``: 1,892 robot-turn states, 3.3-3.7 s to build on the shared 2-core
@@ -63,12 +64,12 @@ import numpy as np
 from tqdm import tqdm
 
 from hg_marl.agents.compiled import CompileError, Packer, default_cache, save_table, source_digest
-from hg_marl.agents.partner import PartnerMonitor
+from hg_marl.agents.progress import PROGRESS_AFTER, ArrayProgressGuard
 from hg_marl.core import Agent, State, World
-from hg_marl.envs.batched import BatchedRules, BatchState
+from hg_marl.envs.batched import BatchState
 
-STALL_AFTER = PartnerMonitor().stall_after
-"""Unchanged robot turns in a row after which the compiled robot takes a stall move (the live monitor's 4)."""
+STALL_AFTER = PROGRESS_AFTER
+"""Unchanged robot turns in a row after which the compiled robot takes a stall move (the progress guard's K)."""
 
 MAX_STATES = 50_000
 """The compiler's budget of robot-turn states (one cold plan each, a few ms); beyond it, a clear error.
@@ -79,7 +80,7 @@ plan, most of an hour to plan), so it is refused and its human seat keeps live r
 COMPILABLE = ("planner",)
 """Robot specs that are compiled (the plain planner: its plans are a function of the state)."""
 
-_OWN_SOURCES = ("compiled_robot.py", "robots/planner.py", "robots/base.py", "partner.py")
+_OWN_SOURCES = ("compiled_robot.py", "robots/planner.py", "robots/base.py", "partner.py", "progress.py")
 
 
 def planner_action(world: World, state: State) -> int:
@@ -157,47 +158,39 @@ class CompiledRobot:
             raise CompileError(f"stall_after: expected a positive number of turns, got {stall_after}")
         self.world, self.name, self.stall_after = world, name, int(stall_after)
         self.packer = Packer(world)
-        self.rules = BatchedRules(world)
         self.keys, self.actions = arrays["keys"], arrays["actions"]
         self.wait = int(world.table.wait[Agent.ROBOT])
         self.fallbacks = 0
         """Tables answered by a live planner because their state was not in the table."""
-        self.stall_moves_taken = 0
-        """Stall moves over all tables (the rule fired)."""
-        n = world.n_objects
-        self._where = np.zeros((0, n), dtype=np.int64)
-        self._at = np.zeros(0, dtype=np.int64)
-        self._offer = np.zeros((0, 2), dtype=np.int64)
-        self._known = np.zeros(0, dtype=bool)
-        self.unchanged = np.zeros(0, dtype=np.int64)
+        self.guard = ArrayProgressGuard(world, self.stall_after)
+        """The stall rule: the project's one progress guard, array form (:mod:`hg_marl.agents.progress`)."""
+
+    @property
+    def unchanged(self) -> np.ndarray:
         """Per table, the consecutive robot turns at which the state had not changed."""
-        self.stall_count = np.zeros(0, dtype=np.int64)
+        return self.guard.unchanged
+
+    @property
+    def stall_count(self) -> np.ndarray:
         """Per table, the stall moves taken since its reset."""
-        self.stalled = np.zeros(0, dtype=bool)
+        return self.guard.moves
+
+    @property
+    def stalled(self) -> np.ndarray:
         """Per table, whether its last robot move was a stall move."""
+        return self.guard.fired
+
+    @property
+    def stall_moves_taken(self) -> int:
+        """Stall moves over all tables (the rule fired)."""
+        return self.guard.moves_taken
 
     def __len__(self) -> int:
         return len(self.keys)
 
-    def _grow(self, size: int) -> None:
-        if len(self._at) >= size:
-            return
-        extra = size - len(self._at)
-        self._where = np.concatenate([self._where, np.zeros((extra, self._where.shape[1]), dtype=np.int64)])
-        self._at = np.concatenate([self._at, np.zeros(extra, dtype=np.int64)])
-        self._offer = np.concatenate([self._offer, np.zeros((extra, 2), dtype=np.int64)])
-        self._known = np.concatenate([self._known, np.zeros(extra, dtype=bool)])
-        self.unchanged = np.concatenate([self.unchanged, np.zeros(extra, dtype=np.int64)])
-        self.stall_count = np.concatenate([self.stall_count, np.zeros(extra, dtype=np.int64)])
-        self.stalled = np.concatenate([self.stalled, np.zeros(extra, dtype=bool)])
-
     def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
         """Tables ``rows`` start afresh: no previous state, no stall count (``rng`` unused: a deterministic rule)."""
-        self._grow(int(rows.max(initial=-1)) + 1)
-        self._known[rows] = False
-        self.unchanged[rows] = 0
-        self.stall_count[rows] = 0
-        self.stalled[rows] = False
+        self.guard.reset_rows(rows)
 
     def plan(self, batch: BatchState) -> tuple[np.ndarray, np.ndarray]:
         """(planner action, found) per table, without the stall rule; tables not found are planned live."""
@@ -214,36 +207,8 @@ class CompiledRobot:
 
     def act(self, batch: BatchState, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
         """The planner's action per table, a stall move where the stall rule fires (module docstring)."""
-        rows = np.asarray(batch.rows, dtype=np.int64)
-        self._grow(int(rows.max(initial=-1)) + 1)
         out, _ = self.plan(batch)
-        out = out.copy()
-        same = (
-            self._known[rows]
-            & (self._where[rows] == batch.where).all(axis=1)
-            & (self._at[rows] == batch.robot_at)
-            & (self._offer[rows, 0] == batch.offer_by)
-            & (self._offer[rows, 1] == batch.offer_obj)
-        )
-        self.unchanged[rows] = np.where(same, self.unchanged[rows] + 1, 0)
-        stall = self.unchanged[rows] >= self.stall_after
-        self.stalled[rows] = stall
-        if stall.any():
-            sel = np.flatnonzero(stall)
-            part = BatchState(batch.where[sel], batch.robot_at[sel], batch.offer_by[sel], batch.offer_obj[sel])
-            moves = self.rules.masks(part, Agent.ROBOT)
-            moves[:, self.wait] = False
-            count = moves.sum(axis=1)
-            has = count > 0
-            k = self.stall_count[rows[sel]] % np.maximum(count, 1)
-            pick = (moves & (moves.cumsum(axis=1) == (k + 1)[:, None])).argmax(axis=1)
-            out[sel] = np.where(has, pick, self.wait)
-            self.stall_count[rows[sel]] += has
-            self.stall_moves_taken += int(has.sum())
-        self._where[rows], self._at[rows] = batch.where, batch.robot_at
-        self._offer[rows, 0], self._offer[rows, 1] = batch.offer_by, batch.offer_obj
-        self._known[rows] = True
-        return out
+        return self.guard.apply(batch, out)
 
 
 def robot_cache_key(world: World, spec: str, stall_after: int) -> str:

@@ -64,6 +64,7 @@ from hg_marl.agents.models.python_model import _certain_states as _certain_state
 from hg_marl.agents.models.python_model import _Model as _Model  # re-exported: the belief robot, tests
 from hg_marl.agents.models.solve import solve
 from hg_marl.agents.planner.space import Relabel
+from hg_marl.agents.progress import ProgressGuard
 from hg_marl.core import Agent, Durations, Scenario, State, World
 from hg_marl.core.scenario import layout_count
 from hg_marl.policy import Decision, Turn
@@ -301,11 +302,12 @@ class OracleRobot:
 
     Off its model (a state the model never reaches: the partner is not the human the
     policy was solved against) it does not wait for a known state to come back: it asks
-    the planner (cooperative model) for the robot's next move; when that move is a ``wait``
-    on an unfinished table at the state of its previous off-model decision (nothing
-    changed: the partner does not do what the plan waits for), it tries the feasible
-    non-wait actions in turn, so it never waits forever. ``off_model`` counts these
-    decisions in the current run.
+    the planner (cooperative model) for the robot's next move, under the progress guard
+    every robot obeys (:mod:`hg_marl.agents.progress`): when the state has not changed
+    for ``K`` of its turns, it takes the guard's feasible move instead, so it never
+    repeats a move that changes nothing (a wait, a refused offer) forever. ``off_model``
+    counts the off-model decisions in the current run. On its model the policy is played
+    as solved (it is optimal there; a wait against a partner who idles is part of it).
 
     Args:
         result: a computed :class:`OracleResult`; or None to compute one at the first reset
@@ -324,8 +326,7 @@ class OracleRobot:
         partner is the human the policy was solved against)."""
         self._planner: Any = None
         self._relabel: Relabel | None = None
-        self._stalled: State | None = None
-        self._stalls = 0
+        self.progress = ProgressGuard()
 
     def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
         """Compute the policy if needed (``rng`` unused: the policy is deterministic)."""
@@ -334,13 +335,15 @@ class OracleRobot:
         if self.result is None or self.result.scenario != world.scenario.name:
             self.result = oracle_rate(world, self.human)
         self._wait = world.n_actions(Agent.ROBOT) - 1
-        self.off_model, self._stalled, self._stalls = 0, None, 0
+        self.off_model = 0
+        self.progress.reset()
         self._planner = None
         self._relabel = Relabel(world)
 
     def act(self, turn: Turn) -> int:
         """The optimal action at the turn's state (the planner's move outside the model)."""
         assert self.result is not None
+        self.progress.observe(turn.state)
         action = self.result.action_at(turn.world, turn.state, self._relabel)
         if action is not None:
             seconds = self.result.value_at(turn.world, turn.state, self._relabel)
@@ -352,7 +355,7 @@ class OracleRobot:
         return self._fallback(turn)
 
     def _fallback(self, turn: Turn) -> int:
-        """The planner's move; a feasible non-wait action instead of a wait that changes nothing."""
+        """The planner's move; the progress guard's move once the state has not changed for ``K`` turns."""
         world, state = turn.world, turn.state
         if self._planner is None or self._planner.world is not world:
             from hg_marl.agents.planner import Planner
@@ -362,16 +365,9 @@ class OracleRobot:
         intent = self._planner.intent(state, Agent.ROBOT)
         action = intent.robot_action if intent.success else self._wait
         reason = "off model: the planner's move"
-        if action == self._wait and not world.is_clean(state):
-            if state == self._stalled:
-                options = [i for i in world.feasible_indices(state, Agent.ROBOT) if i != self._wait]
-                if options:
-                    action = options[self._stalls % len(options)]
-                    self._stalls += 1
-                    reason = "off model: the planner waits and nothing changed; a feasible move instead"
-            self._stalled = state
-        else:
-            self._stalled = None  # the stall count runs on: a loop through a stall tries the next move
+        if self.progress.stalled:
+            action = self.progress.move(world, state)
+            reason = "off model: nothing changed for K turns; the progress guard's move"
         self.last_decision = Decision(
             "planner",
             int(action),

@@ -127,10 +127,14 @@ class PartnerPosterior:
         epsilon: float = 0.05,
         prior_cooperative: float = 0.7,
         idle_in_model: bool = False,
+        learned: Any = None,
     ) -> None:
         from hg_marl.agents.humans import make_human
 
         self.types = tuple(types)
+        self.learned = learned
+        """A :class:`~hg_marl.agents.partner_model.LearnedPartner` scored as the last type
+        (its name is in ``types``; its evidence is prequential: predict, then count), or None."""
         if not self.types:
             raise ValueError("partner types: give at least one")
         if prior is None:
@@ -144,6 +148,9 @@ class PartnerPosterior:
         self.decay, self.epsilon, self.idle_in_model = decay, epsilon, idle_in_model
         self.humans: list[Any] = []
         for spec in self.types:
+            if learned is not None and spec == learned.name:
+                self.humans.append(learned)
+                continue
             self.humans.append(make_human(spec))  # the registry's one spec parser types the values
         self.reset()
 
@@ -151,6 +158,8 @@ class PartnerPosterior:
         """Back to the prior (a new run)."""
         self.evidence = [0.0] * len(self.types)
         self.observations = 0
+        if self.learned is not None:
+            self.learned.reset()
 
     def observe(self, world: World, state: State, robot_action: int, human_action: int) -> None:
         """The human did ``human_action`` in ``state`` while the robot did ``robot_action`` (-1: failed)."""
@@ -159,6 +168,8 @@ class PartnerPosterior:
         for human in self.humans:
             dist = dict(human.distribution(world, state, robot_action if human.uses_robot_action else -1))
             logs.append(math.log((1.0 - self.epsilon) * dist.get(human_action, 0.0) + self.epsilon / max(n, 1)))
+        if self.learned is not None:
+            self.learned.update(world, state, robot_action, human_action)  # after its prediction: prequential
         if max(logs) - min(logs) < 1e-9:
             return  # every type would have done this: no evidence, and nothing to forget
         self.evidence = [self.decay * e + x for e, x in zip(self.evidence, logs, strict=True)]

@@ -25,6 +25,8 @@ __all__ = ["HUMANS", "HumanSpec", "Param", "available_humans", "make_human", "pa
 
 _P = "hg_marl.agents.humans."
 _IDLE = "probability of doing nothing (wait) at any turn"
+_FO = _P + "family_out:"
+_FO_P = {"p_idle": _IDLE}
 HUMANS = Registry(
     "human",
     HumanError,
@@ -103,6 +105,33 @@ HUMANS = Registry(
                 "deterministic": "take the most probable action instead of sampling",
                 "fallback": "table kind, unseen observation: 'wait' or 'random'",
             },
+        ),
+        # The family-out set (agents/humans/family_out.py): no recipe trains or tunes on these.
+        Entry("fo_freeze_on_offer", _FO + "FreezeOnOffer", "family-out: freezes while offered, never takes", _FO_P),
+        Entry("fo_mirror", _FO + "Mirror", "family-out: works only while the robot works, echoing its kind", _FO_P),
+        Entry("fo_picky", _FO + "Picky", "family-out: throws, takes, gives only even-index objects", _FO_P),
+        Entry("fo_shy", _FO + "Shy", "family-out: freezes while the robot is at a handover place", _FO_P),
+        Entry("fo_after_waits", _FO + "AfterWaits", "family-out: takes only after two robot waits", _FO_P, False),
+        Entry(
+            "fo_bursts",
+            _FO + "Bursts",
+            "family-out: works, then rests, by the clock",
+            {"work": "seconds of work", "rest": "seconds of rest", "p_idle": _IDLE},
+            stationary=False,
+        ),
+        Entry(
+            "fo_forgetful",
+            _FO + "Forgetful",
+            "family-out: forgets what it picked for a while",
+            {"hold": "seconds an object stays forgotten", "p_idle": _IDLE},
+            stationary=False,
+        ),
+        Entry(
+            "fo_slow_start",
+            _FO + "SlowStart",
+            "family-out: watches first, then helps",
+            {"warmup": "seconds of watching", "p_idle": _IDLE},
+            stationary=False,
         ),
         Entry(
             "replay",

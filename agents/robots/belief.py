@@ -48,6 +48,10 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   belief cannot move), it plays the oracle robot's fallback:
   the planner's move, or a feasible non-wait move when the planner would wait as well;
   once stalled, the planner drives until the partner does something or a task is solved.
+- **The progress guard** every robot obeys (:mod:`hg_marl.agents.progress`): when the
+  state has not changed for ``K`` of its turns (a refused offer repeated while the belief
+  keeps a member who accepts offers often enough to explain each refusal), it takes the
+  guard's feasible move, whatever the belief says (``reason="no_progress"``).
 
 The members' oracles are solved at the first reset in a world and kept for the
 robot's lifetime (a pure cache: the same inputs give the same values).
@@ -63,7 +67,9 @@ import numpy as np
 
 from hg_marl.agents.oracle import OracleResult, OracleRobot, _human_policy, _Model, oracle_rate
 from hg_marl.agents.partner import PartnerPosterior
+from hg_marl.agents.partner_model import LearnedPartner
 from hg_marl.agents.planner.space import Relabel
+from hg_marl.agents.progress import ProgressGuard
 from hg_marl.agents.robots.base import Robot
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.core import Agent, State, World
@@ -94,6 +100,10 @@ class BeliefRobot(Robot):
         hedge: ``"map"`` (most probable member) or ``"qmdp"`` (expected seconds under the mixture).
         unknown: prior probability that the partner is none of the members (0: a closed world).
         probe: expected seconds the robot may give up to learn who its partner is (0: never probes).
+        open_world: the "none of them" hypothesis: ``"uniform"`` (the uniform partner) or
+            ``"learned"`` (a partner model learned online from this partner's answers,
+            :class:`~hg_marl.agents.partner_model.LearnedPartner`; its prequential evidence
+            competes with the members').
     """
 
     name = "belief"
@@ -107,6 +117,7 @@ class BeliefRobot(Robot):
         hedge: str = "map",
         unknown: float = 0.05,
         probe: float = 0.0,
+        open_world: str = "uniform",
     ) -> None:
         from hg_marl.agents.humans.population import load_population
 
@@ -128,14 +139,19 @@ class BeliefRobot(Robot):
             raise RobotError(f"belief.population: a member plays {UNKNOWN!r}, the robot's 'none of them' hypothesis")
         # The open world: "none of the members" is the uniform partner (the registry's
         # `random` human), so it wins only where the members explain the moves worse than chance.
-        types = (*self.member_specs, UNKNOWN) if unknown > 0 else self.member_specs
+        if open_world not in ("uniform", "learned"):
+            raise RobotError(f"belief.open_world: expected uniform or learned, got {open_world!r}")
+        self.open_world = open_world
+        learned = LearnedPartner() if open_world == "learned" and unknown > 0 else None
+        self._unknown_name = learned.name if learned is not None else UNKNOWN
+        types = (*self.member_specs, self._unknown_name) if unknown > 0 else self.member_specs
         prior = [(1.0 - unknown) / len(members)] * len(members) + ([unknown] if unknown > 0 else [])
         self.unknown = unknown
         if not (math.isfinite(probe) and probe >= 0.0):
             raise RobotError(f"belief.probe: expected seconds >= 0, got {probe!r}")
         self.probe = probe
         try:
-            self.posterior = PartnerPosterior(types=types, prior=prior, decay=decay, epsilon=epsilon)
+            self.posterior = PartnerPosterior(types=types, prior=prior, decay=decay, epsilon=epsilon, learned=learned)
         except ValueError as exc:
             raise RobotError(f"belief: {exc}") from None
         self._world: World | None = None
@@ -144,6 +160,7 @@ class BeliefRobot(Robot):
         self._fallback = OracleRobot(result=None)
         self._planner = PlannerRobot()
         self._prev: tuple[State, int] | None = None
+        self.progress = ProgressGuard()
 
     def _reset(self, world: World) -> None:
         """Solve each member's oracle (once per world) and forget the previous run's evidence."""
@@ -164,6 +181,7 @@ class BeliefRobot(Robot):
         self._fallback.reset(world, self.agent, self.rng)
         self._planner.reset(world, self.agent, self.rng.spawn(1)[0])
         self._off_population = False
+        self.progress.reset()
 
     def _observe(self, turn: Turn) -> None:
         """Update the posterior from the human's move since the previous turn."""
@@ -222,6 +240,14 @@ class BeliefRobot(Robot):
         world, state = turn.world, turn.state
         post = self.posterior.posterior()
         weights = [post[spec] for spec in self.member_specs]
+        if self.progress.observe(state):
+            # Nothing changed for K turns (a refused offer repeated, waits answered by waits):
+            # whatever the belief says, the move it keeps choosing does not work with this partner.
+            action = self.progress.move(world, state)
+            partner = self.member_names[int(np.argmax(weights))]
+            self.last_decision = Decision("guard", action, reason="no_progress", partner=partner)
+            self._prev = (state, action)
+            return action
         order = [int(np.argmax(weights))] if self.hedge == "map" else list(range(len(weights)))
         mixed: dict[int, float] = {}
         total = 0.0
@@ -239,16 +265,19 @@ class BeliefRobot(Robot):
         action = min(mixed, key=lambda a: (mixed[a], a)) if mixed else -1
         # The partner explained by no member better than by chance is off the population:
         # a member's best response would be a guess, the planner replans from what it sees.
-        off_population = self.unknown > 0 and post[UNKNOWN] > max(weights)
+        off_population = self.unknown > 0 and post[self._unknown_name] > max(weights)
         if off_population:
             if not self._off_population:
                 self._planner.last_decision = None  # its expectation from an earlier spell is stale
             self._off_population = True
+            if self.posterior.learned is not None:
+                # Plan as the partner behaves: without the kinds of action it refuses.
+                self._planner.partnering.base = self.posterior.learned.planner_model()
             action = self._planner.act(turn)
             record = self._planner.last_decision
             assert record is not None
             reason = "no member explains the partner, the planner drives: " + record.reason
-            self.last_decision = replace(record, reason=reason, partner=UNKNOWN)
+            self.last_decision = replace(record, reason=reason, partner=self._unknown_name)
             self._prev = (state, int(action))
             return int(action)
         self._off_population = False

@@ -11,7 +11,10 @@ cost plus, when it was consulted, the planner's.
 The planner's model of the human is revised from what the human does (see
 :mod:`hg_marl.agents.partner`); when the partner keeps not doing what the plan expects,
 the habit's best *feasible* move other than ``wait`` is taken for that decision instead of
-the planner's (``reason="partner_stalled"``; never an infeasible no-op).
+the planner's (``reason="partner_stalled"``; never an infeasible no-op). Before either
+expert, the progress guard every robot obeys (:mod:`hg_marl.agents.progress`) takes a
+feasible move when the state has not changed for ``K`` of its turns (``reason="no_progress"``);
+the habit learns from that move like from any other.
 With ``partner_aware=True`` the planner plans against the most probable partner type.
 """
 
@@ -19,10 +22,14 @@ from __future__ import annotations
 
 from typing import Any
 
+import numpy as np
+
 from hg_marl.agents.habit import QLearner, QLearnerConfig
 from hg_marl.agents.meta.base import Criterion, HabitView, PlanProposal
 from hg_marl.agents.meta.controller import MetaController
 from hg_marl.agents.meta.cost import CostModel
+from hg_marl.agents.partner_model import LearnedPartner, observe_move, partner_features
+from hg_marl.agents.progress import ProgressGuard
 from hg_marl.agents.robots.base import LearningRobot, habit_stall_move, plan_proposal
 from hg_marl.agents.robots.partnering import Partnering
 from hg_marl.core import State, World
@@ -47,6 +54,9 @@ class HybridRobot(LearningRobot):
         human_model: the human model the planner assumes (None: cooperative).
         partner_aware: plan against the most probable partner type, learnt online
             (:class:`~hg_marl.agents.partner.PartnerPosterior`) instead of ``human_model``.
+        partner_features: the habit also reads the learned partner model's verdicts (does the
+            partner refuse to take, to give: :func:`~hg_marl.agents.partner_model.partner_features`),
+            so what is learnt about this partner splits the habit's states where it matters.
         q_config, learner, learn, cost, share_objects: as for :class:`~hg_marl.agents.robots.base.LearningRobot`.
     """
 
@@ -65,20 +75,37 @@ class HybridRobot(LearningRobot):
         cost: CostModel | None = None,
         partner_aware: bool = False,
         share_objects: bool = True,
+        partner_features: bool = False,
     ) -> None:
         super().__init__(q_config, learner, learn, cost, share_objects)
+        self.partner_features = check_bool(partner_features, f"{self.name}.partner_features", RobotError)
+        self.partner_model = LearnedPartner() if self.partner_features else None
         self.meta = MetaController(criterion, **(criterion_params or {}))
         self.planner_config = planner_config
         self.human_model = human_model
         self.partner_aware = check_bool(partner_aware, f"{self.name}.partner_aware", RobotError)
         self.planner: Any = None
         self.partnering: Any = None
+        self.progress = ProgressGuard()
 
     def _reset(self, world: World) -> None:
         super()._reset(world)
         self.meta.reset(self.rng)
         self.partnering = Partnering(world, self.planner_config, self.human_model, self.partner_aware)
         self.planner = self.partnering.planner
+        self.progress.reset()
+        if self.partner_model is not None:
+            self.partner_model.reset()
+            if self._given_learner is None:  # the habit's state grows by the partner model's verdicts
+                self.learner = QLearner(world.n_facts + 2, self.n_actions, self.q_config)
+
+    def _habit_facts(self, turn: Turn) -> np.ndarray:
+        """The facts (canonical with ``share_objects``), followed by the partner model's verdicts when enabled."""
+        facts = super()._habit_facts(turn)
+        if self.partner_model is None:
+            return facts
+        observe_move(self.partner_model, turn.world, self.partnering.previous, turn)
+        return np.concatenate([facts, partner_features(self.partner_model)]).astype(facts.dtype)
 
     def _plan(self, state: State) -> tuple[PlanProposal, float]:
         result = self.planner.plan(state, to_move=self.agent)
@@ -109,18 +136,22 @@ class HybridRobot(LearningRobot):
             proposal, planning_time[0] = self._plan(turn.state)
             return proposal
 
-        if self.partnering.monitor.stalled:
-            move = habit_stall_move(turn, q, self.rng)
-            self.partnering.monitor.fell_back()
+        guarded = self.progress.observe(turn.state)
+        if guarded or self.partnering.monitor.stalled:
+            if guarded:
+                move = self.progress.move(turn.world, turn.state, self.agent)
+            else:
+                move = habit_stall_move(turn, q, self.rng)
+                self.partnering.monitor.fell_back()
             self.partnering.acted(turn.state, move)
             self._remember(facts, move)
             self._record(
-                "habit",
+                "guard" if guarded else "habit",
                 move,
                 habit_action=habit_action,
                 decision_time=view.cost,
                 weight_amplitude=habit.weight_amplitude,
-                reason="partner_stalled",
+                reason="no_progress" if guarded else "partner_stalled",
                 partner=self.partnering.estimate,
             )
             return move

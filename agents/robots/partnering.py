@@ -94,6 +94,11 @@ class Partnering:
         self._prev = (state, action)
 
     @property
+    def previous(self) -> tuple[State, int] | None:
+        """The robot's state and action at its previous turn (None on a run's first turn)."""
+        return self._prev
+
+    @property
     def estimate(self) -> str:
         """The current belief about the partner, for the decision record."""
         if self.posterior is not None:

@@ -8,7 +8,9 @@ On failure the planner's result proposes ``wait``.
 The model of the human is revised from what the human does (see
 :mod:`hg_marl.agents.partner`): expected actions the human keeps refusing are ruled out,
 and a robot whose partner keeps not doing what is expected takes any feasible move for
-one decision, so no partner who leaves the task solvable can hold it waiting forever.
+one decision, so no partner who leaves the task solvable can hold it waiting forever; and
+the progress guard every robot obeys (:mod:`hg_marl.agents.progress`) takes a feasible
+move when the state has not changed for ``K`` of its turns (``reason="no_progress"``).
 With ``partner_aware=True`` the planner plans against the most probable partner type.
 """
 
@@ -17,6 +19,7 @@ from __future__ import annotations
 from typing import Any
 
 from hg_marl.agents.meta.cost import CostModel
+from hg_marl.agents.progress import ProgressGuard
 from hg_marl.agents.robots.base import Robot, plan_proposal, stall_move
 from hg_marl.agents.robots.partnering import Partnering
 from hg_marl.core import World
@@ -50,15 +53,22 @@ class PlannerRobot(Robot):
         self.partner_aware = check_bool(partner_aware, f"{self.name}.partner_aware", RobotError)
         self.planner: Any = None
         self.partnering: Any = None
+        self.progress = ProgressGuard()
 
     def _reset(self, world: World) -> None:
         self.partnering = Partnering(world, self.planner_config, self.human_model, self.partner_aware)
         self.planner = self.partnering.planner
+        self.progress.reset()
 
     def act(self, turn: Turn) -> int:
         """Plan from the current state and return the plan's first robot action."""
         if self.partnering.observe(turn, self.last_decision):
             self.planner = self.partnering.planner
+        if self.progress.observe(turn.state):
+            action = self.progress.move(turn.world, turn.state, self.agent)
+            self.partnering.acted(turn.state, action)
+            self._record("guard", action, reason="no_progress", partner=self.partnering.estimate)
+            return action
         if self.partnering.monitor.stalled:
             action = stall_move(turn, self.rng)
             self.partnering.monitor.fell_back()

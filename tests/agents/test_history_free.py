@@ -170,7 +170,8 @@ def test_off_its_model_a_wait_that_changes_nothing_is_replaced_by_a_move() -> No
         if robot.result.action_at(world, s) is None and not world.is_clean(s)  # type: ignore[union-attr]
     )
     turn: Any = SimpleNamespace(world=world, state=state)
-    first, second = robot.act(turn), robot.act(turn)
-    assert first == wait  # the planner's move, once
-    assert second != wait and second in world.feasible_indices(state, Agent.ROBOT)
-    assert robot.off_model == 2
+    k = 12  # the progress guard's K (agents/progress.py): K waits that change nothing, then a move
+    moves = [robot.act(turn) for _ in range(k + 1)]
+    assert moves[:k] == [wait] * k  # the planner's move while the guard counts
+    assert moves[k] != wait and moves[k] in world.feasible_indices(state, Agent.ROBOT)
+    assert robot.off_model == k + 1

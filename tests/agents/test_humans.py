@@ -65,6 +65,15 @@ def test_registry_lists_every_human_with_documented_params() -> None:
         "switching",
         "learned",
         "replay",
+        # the family-out partners (docs/adaptation.md): registered, kept out of recipes
+        "fo_freeze_on_offer",
+        "fo_after_waits",
+        "fo_mirror",
+        "fo_bursts",
+        "fo_picky",
+        "fo_forgetful",
+        "fo_shy",
+        "fo_slow_start",
     }
     for spec in humans.values():
         assert spec["doc"]

@@ -18,8 +18,8 @@ from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules, BatchState
 from hg_marl.envs.table_cleaning import raw_env
 
-K = 4
-"""The stall rule's K as the docstring states it (the live planner monitor's stall_after)."""
+K = 12
+"""The stall rule's K as the docstring states it (the progress guard's K, agents/progress.py)."""
 
 SCENARIOS = ["paper2015", "generated:objects=2,seed=4,human_only=0.8"]
 _WORLDS: dict[str, World] = {}

@@ -1,0 +1,134 @@
+"""The partner model learned online: an estimate worked by hand, and evidence switching from the family to it."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from hg_marl.agents.humans import make_human
+from hg_marl.agents.partner import PartnerPosterior
+from hg_marl.agents.partner_model import LearnedPartner, partner_features
+from hg_marl.agents.robots import make_robot
+from hg_marl.core import Agent, Kind, State, World
+from hg_marl.training.runner import RunConfig, run
+
+
+def offered_state(world: World) -> tuple[State, int]:
+    """A mid-cycle state where the robot offers an object, and the robot's give (robot moves only, breadth first)."""
+    frontier = [world.initial_state(np.random.default_rng(0))]
+    seen = set(frontier)
+    for _ in range(6):
+        nxt = []
+        for state in frontier:
+            for a in world.feasible_indices(state, Agent.ROBOT):
+                after = world.step(state, Agent.ROBOT, a).state
+                if world.actions(Agent.ROBOT)[a].kind is Kind.GIVE and after.offer_by == int(Agent.ROBOT):
+                    return after, a
+                if after.offer_by < 0 and after not in seen:
+                    seen.add(after)
+                    nxt.append(after)
+        frontier = nxt
+    raise AssertionError("no offer found")
+
+
+def test_estimate_worked_by_hand_on_a_scripted_history() -> None:
+    world = World("paper2015")
+    mid, give = offered_state(world)
+    acts = world.actions(Agent.HUMAN)
+    feasible = world.feasible_indices(mid, Agent.HUMAN)
+    kinds = {acts[i].kind for i in feasible}
+    assert Kind.TAKE in kinds and Kind.WAIT in kinds
+    wait = world.n_actions(Agent.HUMAN) - 1
+    take = next(i for i in feasible if acts[i].kind is Kind.TAKE)
+    n_take = sum(acts[i].kind is Kind.TAKE for i in feasible)
+    k = len(kinds)
+    model = LearnedPartner(alpha=1.0, forget=0.5)
+    # No data: every feasible kind alike, alpha / (k alpha).
+    assert model.predict(world, mid, give, take) == pytest.approx(1.0 / k / n_take)
+    # History: wait, wait. Counts of wait: 1, then 0.5 * 1 + 1 = 1.5 (forget = 0.5).
+    model.update(world, mid, give, wait)
+    model.update(world, mid, give, wait)
+    assert model.predict(world, mid, give, wait) == pytest.approx((1.5 + 1.0) / (1.5 + k))
+    assert model.predict(world, mid, give, take) == pytest.approx(1.0 / (1.5 + k) / n_take)
+    # Another context (the robot's action failed) has learnt nothing.
+    assert model.predict(world, mid, -1, wait) == pytest.approx(1.0 / k)
+
+
+def test_bad_settings_are_refused() -> None:
+    for kwargs in ({"alpha": 0.0}, {"forget": 0.0}, {"forget": 1.5}, {"alpha": math.nan}):
+        with pytest.raises(ValueError):
+            LearnedPartner(**kwargs)
+
+
+def test_evidence_switches_from_the_family_to_the_learned_model() -> None:
+    """A partner who never takes (freezes while offered): members who take get refuted, the learned model wins."""
+    world = World("paper2015")
+    mid, give = offered_state(world)
+    wait = world.n_actions(Agent.HUMAN) - 1
+    learned = LearnedPartner()
+    post = PartnerPosterior(
+        types=("cooperative", "preference:accept=0.5", "learned"),
+        prior=[0.475, 0.475, 0.05],
+        decay=0.9,
+        learned=learned,
+    )
+    assert post.posterior()["learned"] == pytest.approx(0.05)  # the family is trusted at first
+    history = []
+    for _ in range(12):
+        post.observe(world, mid, give, wait)
+        history.append(post.posterior()["learned"])
+    # Each refusal: the member who accepts half the offers predicts it with about 0.5, the
+    # learned model with (n + 1) / (n + k) after n refusals, which tends to 1: it overtakes.
+    assert post.most_probable() == "learned"
+    assert history[-1] > 0.9 and history[-1] > history[2]
+
+
+def test_belief_robot_with_the_learned_model_runs_and_names_it() -> None:
+    robot = make_robot("belief", population="populations/paper2015.toml", open_world="learned")
+    log = run(robot, make_human("fo_freeze_on_offer"), RunConfig(duration=300, seed=0)).log
+    assert len(log) > 20
+    with pytest.raises(Exception, match="open_world"):
+        make_robot("belief", population="populations/paper2015.toml", open_world="nope")
+
+
+def test_refused_kinds_leave_the_planners_model() -> None:
+    """Three refusals of an offer (forget 1: take feasible 3 times, done 0 times): take is refused."""
+    world = World("paper2015")
+    mid, give = offered_state(world)
+    wait = world.n_actions(Agent.HUMAN) - 1
+    model = LearnedPartner(forget=1.0)
+    for n in range(3):
+        assert Kind.TAKE not in model.refused_kinds()  # fewer than 3 chances: no verdict yet
+        model.update(world, mid, give, wait)
+        assert model.chances[int(Kind.TAKE)] == n + 1 and model.taken[int(Kind.TAKE)] == 0
+    assert Kind.TAKE in model.refused_kinds()
+    assert Kind.WAIT not in model.refused_kinds()
+    assert Kind.TAKE not in model.planner_model().allowed_kinds
+    assert Kind.THROW in model.planner_model().allowed_kinds
+
+
+def test_partner_features_are_the_take_and_give_verdicts() -> None:
+    world = World("paper2015")
+    mid, give = offered_state(world)
+    wait = world.n_actions(Agent.HUMAN) - 1
+    model = LearnedPartner(forget=1.0)
+    assert partner_features(model).tolist() == [0, 0]
+    for _ in range(3):
+        model.update(world, mid, give, wait)
+    assert partner_features(model).tolist() == [1, 0]  # refuses to take; giving was never possible
+
+
+def test_hybrid_habit_reads_the_partner_models_verdicts() -> None:
+    robot = make_robot("hybrid", partner_features=True)
+    run(robot, make_human("lazy:p_idle=0.3"), RunConfig(duration=300, seed=0))
+    model = robot.partner_model
+    assert model is not None and sum(model.chances.values()) > 0  # it learnt from the partner's moves
+    n = World("paper2015").n_facts
+    assert robot.habit.n_facts == n + 2
+    codes = [bytes(k) for k in robot.habit._codes]
+    assert codes and all(len(c) == n + 2 for c in codes)
+    plain = make_robot("hybrid")
+    run(plain, make_human("lazy:p_idle=0.3"), RunConfig(duration=300, seed=0))
+    assert plain.partner_model is None and plain.habit.n_facts == n

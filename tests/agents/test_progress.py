@@ -1,0 +1,152 @@
+"""The progress guard: one rule for every robot, no more than K moves that change nothing in a row.
+
+A partner who refuses every offer and mostly idles is the stall the guard exists for: a
+robot that keeps offering (or waiting for it) changes nothing, turn after turn. Expected
+values come from the rule as the module docstring states it (recomputed here
+from the world's own feasibility, not from the guard's code) and from counting unchanged
+robot-turn states in the run.
+"""
+
+from __future__ import annotations
+
+import itertools
+from typing import Any
+
+import numpy as np
+import pytest
+
+from hg_marl.agents.humans import make_human
+from hg_marl.agents.oracle import OracleResult, OracleRobot
+from hg_marl.agents.progress import PROGRESS_AFTER, ArrayProgressGuard, ProgressGuard
+from hg_marl.agents.robots import make_robot
+from hg_marl.core import Agent, State, World
+from hg_marl.envs.batched import BatchState
+from hg_marl.policy import Turn
+from hg_marl.training.runner import RunConfig, run
+
+K = 12
+"""K as the guard's docstring states it (measured: the paper reproduction's longest unchanged run is 10)."""
+
+
+class Recording:
+    """Delegates to a robot and records the state of each of its turns."""
+
+    def __init__(self, robot: Any) -> None:
+        self.robot = robot
+        self.states: list[State] = []
+
+    def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
+        self.states = []
+        self.robot.reset(world, agent, rng)
+
+    def act(self, turn: Turn) -> int:
+        self.states.append(turn.state)
+        return int(self.robot.act(turn))
+
+    @property
+    def last_decision(self) -> Any:
+        return self.robot.last_decision
+
+
+def longest_unchanged(states: list[State]) -> int:
+    """Longest run of robot turns whose state equals the previous turn's (a move that changed nothing)."""
+    best = run_ = 0
+    for a, b in itertools.pairwise(states):
+        run_ = run_ + 1 if a == b else 0
+        best = max(best, run_)
+    return best
+
+
+def expected_option(world: World, state: State, taken: int) -> int:
+    """The rule's move: the (taken mod n)-th feasible non-wait action in index order, wait if none."""
+    wait = world.n_actions(Agent.ROBOT) - 1
+    options = [i for i in range(world.n_actions(Agent.ROBOT)) if i != wait and world.step(state, Agent.ROBOT, i).ok]
+    return options[taken % len(options)] if options else wait
+
+
+def test_k_is_the_documented_value() -> None:
+    assert PROGRESS_AFTER == K
+    with pytest.raises(ValueError, match="K must be"):
+        ProgressGuard(0)
+
+
+def test_scalar_guard_fires_at_the_k_plus_first_unchanged_turn_and_cycles_options() -> None:
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(0))
+    guard = ProgressGuard(3)
+    fired = [guard.observe(state) for _ in range(4)]
+    assert fired == [False, False, False, True]  # 3 repeats that changed nothing, then the guard
+    first = guard.move(world, state)
+    assert first == expected_option(world, state, 0)
+    assert guard.observe(state)  # the state did not change: the next option at once
+    assert guard.move(world, state) == expected_option(world, state, 1)
+    other = world.step(state, Agent.ROBOT, first).state
+    assert not guard.observe(other) and guard.unchanged == 0
+
+
+def test_array_guard_chooses_as_the_scalar_one() -> None:
+    world = World("paper2015")
+    rng = np.random.default_rng(3)
+    states = [world.initial_state(rng) for _ in range(3)]
+    # table 0 stays put, table 1 changes every other turn, table 2 stays put
+    script = [[states[0], states[1] if t % 2 else states[2], states[2]] for t in range(9)]
+    scalars = [ProgressGuard(2) for _ in range(3)]
+    array = ArrayProgressGuard(world, 2)
+    array.reset_rows(np.arange(3))
+    wait = world.n_actions(Agent.ROBOT) - 1
+    for row in script:
+        batch = BatchState(
+            np.array([s.where for s in row]),
+            np.array([s.robot_at for s in row]),
+            np.array([s.offer_by for s in row]),
+            np.array([s.offer_obj for s in row]),
+            rows=np.arange(3),
+        )
+        out = array.apply(batch, np.full(3, wait))
+        for i, (g, s) in enumerate(zip(scalars, row, strict=True)):
+            expected = g.move(world, s) if g.observe(s) else wait
+            assert out[i] == expected
+
+
+SCENARIO = "forced_coordination"
+"""A hard layout: the robot needs the partner's handovers, so a refusing partner leaves it offering."""
+POPULATION = "populations/hard_layouts.toml"
+REFUSER = "lazy:p_idle=0.9"
+"""Refuses every offer (``lazy`` never takes) and idles 90% of its turns: without the guard the
+belief robot repeats a move that changes nothing 23 times in a row here (900 s, seed 0)."""
+
+
+def _belief() -> Any:
+    return make_robot("belief", population=POPULATION)
+
+
+def _oracle_off_model() -> Any:
+    # An empty policy: every state is off the oracle's model, so the planner's fallback plays.
+    empty = OracleResult(0.0, 0.0, 0, 0, 0, 0, True, policy={}, values={}, scenario=SCENARIO)
+    return OracleRobot(result=empty)
+
+
+ROBOTS: dict[str, Any] = {
+    "planner": lambda: make_robot("planner"),
+    "planner_partner_aware": lambda: make_robot("planner", partner_aware=True),
+    "hybrid": lambda: make_robot("hybrid"),
+    "hybrid_paper": lambda: make_robot("hybrid", criterion="random", share_objects=False),
+    "belief": _belief,
+    "oracle_off_model": _oracle_off_model,
+}
+
+
+@pytest.mark.parametrize("name", sorted(ROBOTS))
+def test_no_robot_repeats_more_than_k_moves_that_change_nothing(name: str) -> None:
+    robot = Recording(ROBOTS[name]())
+    run(robot, make_human(REFUSER), RunConfig(scenario=SCENARIO, duration=900, seed=0))
+    assert len(robot.states) > 50
+    assert longest_unchanged(robot.states) <= K
+
+
+@pytest.mark.slow
+def test_belief_robot_no_longer_stalls_on_roboergosum_refuser() -> None:
+    # The issue's stall: the belief robot offered a tape 573-988 times in a row on roboergosum.
+    robot = Recording(make_robot("belief", population="populations/roboergosum.toml"))
+    run(robot, make_human(REFUSER), RunConfig(scenario="roboergosum", duration=300, seed=0))
+    assert longest_unchanged(robot.states) <= K
