@@ -157,7 +157,10 @@ CASES: dict[str, tuple[Callable[[], str], str]] = {
     ),
     "human-seat-compiled-planner": (
         lambda: _vector(lambda: human_vector_env(16, effort_weight=0.1, max_cycles=40, cache=None), 200),
-        "ea6d6a804f2c7bec",
+        # changed on purpose with the one progress guard (agents/progress.py): the compiled robot's
+        # stall rule became its array form (K = 12 unchanged robot turns; it was 4 turns without
+        # a useful human move); before the guard: "ea6d6a804f2c7bec"
+        "4e2ff78f4ff09f0e",
     ),
     "human-seat-live-planner-continuing": (
         lambda: _vector(
