@@ -1,0 +1,41 @@
+"""The planner's bound with a short move (0.5 s), pinned for the mutation gate.
+
+Worked by hand as in tests/agents/test_planner_hand.py (the one-tape scenario, robot
+alone, the human waits: idle weight 0.05, so each cycle of d seconds costs 1.05 d), with
+``goto = 0.5`` s: pick 2 s -> 2.1, goto(bin) 0.5 s -> 0.525, throw 2 s -> 2.1, the
+completing wait 1 s -> 1.05. The handover is at the bin's side, so at the table only the
+tape's own spot saves the empty-handed move. With nothing to wait for the relaxation is exact, also when
+a saved empty-handed move is worth less than a second.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from hg_marl.agents.planner import Planner
+from hg_marl.core import Agent, State, World
+from tests.agents.test_planner_hand import DURATIONS, ONE_TAPE
+
+
+@pytest.mark.parametrize(
+    ("where", "at", "action", "to_go"),
+    [
+        (2, 0, "throw(tape)", 2.1 + 1.05),
+        (2, 1, "goto(bin)", 0.525 + 3.15),
+        (0, 1, "pick(tape)", 2.1 + 3.675),
+        (0, 0, "goto(tape)", 0.525 + 5.775),
+    ],
+)
+def test_bound_is_the_exact_cost_to_go_with_a_half_second_move(
+    tmp_path: Path, where: int, at: int, action: str, to_go: float
+) -> None:
+    path = tmp_path / "layout.toml"
+    text = ONE_TAPE.replace('handover_locations = ["table"]', 'handover_locations = ["bin_side"]')
+    path.write_text(text + DURATIONS.replace("goto = 3.0", "goto = 0.5"))
+    planner = Planner(World(str(path)))
+    assert planner.world.durations.goto == 0.5
+    names = planner.world.action_names[Agent.ROBOT]
+    edges = {names[edge.action]: edge.h for edge in planner.space.robot_edges(State((where,), at))}
+    assert edges[action] == pytest.approx(to_go)
