@@ -156,7 +156,7 @@ def enumerate_answers(
             failing = next((i for i in range(n_robot) if i not in taken), None)
             for a in [*feasible, *([failing] if failing is not None else [])]:
                 mid, ok, _ = table.successor(state, Agent.ROBOT, a)
-                terminal = ok and a == wait and table.is_clean(state.where)
+                terminal = ok and table.solves(state, Agent.ROBOT, a)
                 answer(mid, a if ok else -1, not terminal)
     finally:
         bar.close()

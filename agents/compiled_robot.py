@@ -103,7 +103,6 @@ def enumerate_plans(world: World, max_states: int = MAX_STATES, progress: bool =
 
     table = world.table
     n_human = world.n_actions(Agent.HUMAN)
-    wait = table.wait[Agent.ROBOT]
     known: set[State] = set()
     queue: deque[State] = deque()
 
@@ -133,7 +132,7 @@ def enumerate_plans(world: World, max_states: int = MAX_STATES, progress: bool =
         state = queue.popleft()
         for a in table.feasible_indices(state, Agent.ROBOT):
             mid, ok, _ = table.successor(state, Agent.ROBOT, a)
-            if ok and a == wait and table.is_clean(state.where):
+            if ok and table.solves(state, Agent.ROBOT, a):
                 continue  # the task is solved: the episode ends or the table is re-drawn (a layout)
             answers(mid)
     plans: dict[State, int] = {}

@@ -197,11 +197,10 @@ class BeliefRobot(Robot):
         """Member ``member``'s expected seconds to the next success after each feasible robot action."""
         result, model = self._results[member], self._models[member]
         table = world.table
-        wait = table.wait[Agent.ROBOT]
         out: dict[int, float] = {}
         for a in world.feasible_indices(state, Agent.ROBOT):
             mid, ok, duration = table.successor(state, Agent.ROBOT, a)
-            if ok and a == wait and table.is_clean(state.where):
+            if ok and table.solves(state, Agent.ROBOT, a):
                 out[a] = 0.0  # the completing wait: the oracle's terminal pair
                 continue
             q = 0.0

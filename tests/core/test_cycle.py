@@ -167,12 +167,7 @@ def test_the_batched_twin_agrees_with_the_scalar_rules(d: st.DataObject) -> None
 KNOWN_COPIES: set[str] = set()
 """Modules that still restate a cycle's length; each should call ``hg_marl.core.cycle``."""
 
-KNOWN_REWARD_COPIES = {
-    "agents/oracle.py",
-    "agents/compiled.py",
-    "agents/compiled_robot.py",
-    "agents/robots/belief.py",
-}
+KNOWN_REWARD_COPIES: set[str] = set()
 """Modules that still restate the completing wait; each should call ``RuleTable.solves``."""
 
 
