@@ -90,9 +90,18 @@ BUGS = (
 PROGRESS_TESTS = ("tests/agents/test_pinned_progress_gate.py", "tests/agents/test_progress.py")
 HISTORY_TESTS = ("tests/env/test_pinned_history_gate.py", "tests/env/test_history.py")
 CYCLE_TESTS = ("tests/core/test_cycle.py", "tests/env/test_cycle_trace.py")
-PARTNER_TESTS = ("tests/agents/test_pinned_partner_model_gate.py", "tests/agents/test_partner_model.py")
+PARTNER_TESTS = (
+    "tests/agents/test_pinned_partner_model_gate.py",
+    "tests/agents/test_partner_model.py",
+    "tests/agents/test_pinned_planted_partner_model.py",
+)
 MODEL_TESTS = ("tests/agents/test_pinned_builder_gate.py", "tests/agents/test_budget.py", "tests/agents/test_models.py")
-BUDGET_TESTS = ("tests/agents/test_pinned_budget_gate.py", "tests/agents/test_budget.py", "tests/agents/test_models.py")
+BUDGET_TESTS = (
+    "tests/agents/test_pinned_budget_gate.py",
+    "tests/agents/test_budget.py",
+    "tests/agents/test_models.py",
+    "tests/agents/test_pinned_planted_budget.py",
+)
 
 FRESH = (
     Bug(
@@ -170,7 +179,7 @@ FRESH = (
         "training/outputs.py",
         "if suffixes and path.suffix.lower() not in suffixes:",
         "if suffixes and path.suffix not in suffixes:",
-        ("tests/fuzz/test_outputs.py",),
+        ("tests/fuzz/test_outputs.py", "tests/fuzz/test_pinned_planted_outputs.py"),
     ),
     Bug(
         "fresh limits: a count equal to its limit refused",
@@ -184,14 +193,22 @@ FRESH = (
         "agents/robots/memory.py",
         "self.h = self.net.initial(1)",
         "self.h = self.net.initial(1) if self.h is None else self.h",
-        ("tests/training/test_ppo_recurrent.py", "tests/agents/test_robots.py"),
+        (
+            "tests/training/test_ppo_recurrent.py",
+            "tests/agents/test_robots.py",
+            "tests/training/test_pinned_planted_memory.py",
+        ),
     ),
     Bug(
         "fresh family-out: bursts period without parentheses",
         "agents/humans/family_out.py",
         "resting = turn.clock % (self.work + self.rest) >= self.work",
         "resting = turn.clock % self.work + self.rest >= self.work",
-        ("tests/agents/test_family_out.py", "tests/agents/test_humans.py"),
+        (
+            "tests/agents/test_family_out.py",
+            "tests/agents/test_humans.py",
+            "tests/agents/test_pinned_planted_family_out.py",
+        ),
     ),
 )
 
