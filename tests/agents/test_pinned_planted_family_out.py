@@ -38,5 +38,5 @@ def test_bursts_phase_by_the_clock(clock: float, resting: bool) -> None:
     working = helpful(world, state)
     assert working != wait_index(world)  # the initial table has work to do
     human = Bursts(work=90.0, rest=60.0)
-    action = human.choose(SimpleNamespace(clock=clock, world=world, state=state))  # type: ignore[arg-type]
+    action = human.choose(SimpleNamespace(clock=clock, world=world, state=state))
     assert action == (wait_index(world) if resting else working)
