@@ -11,11 +11,13 @@ Usage::
 
     python mutation/planted.py                 # the tests of this checkout
     python mutation/planted.py --tests-from REV   # the tests of an older commit (before/after)
+    python mutation/planted.py --only fresh       # only the bugs whose name contains "fresh"
 """
 
 from __future__ import annotations
 
 import argparse
+import re
 import subprocess
 import sys
 import tempfile
@@ -85,10 +87,137 @@ BUGS = (
     ),
 )
 
+PROGRESS_TESTS = ("tests/agents/test_pinned_progress_gate.py", "tests/agents/test_progress.py")
+HISTORY_TESTS = ("tests/env/test_pinned_history_gate.py", "tests/env/test_history.py")
+CYCLE_TESTS = ("tests/core/test_cycle.py", "tests/env/test_cycle_trace.py")
+PARTNER_TESTS = (
+    "tests/agents/test_pinned_partner_model_gate.py",
+    "tests/agents/test_partner_model.py",
+    "tests/agents/test_pinned_planted_partner_model.py",
+)
+MODEL_TESTS = ("tests/agents/test_pinned_builder_gate.py", "tests/agents/test_budget.py", "tests/agents/test_models.py")
+BUDGET_TESTS = (
+    "tests/agents/test_pinned_budget_gate.py",
+    "tests/agents/test_budget.py",
+    "tests/agents/test_models.py",
+    "tests/agents/test_pinned_planted_budget.py",
+)
+
+FRESH = (
+    Bug(
+        "fresh guard: fires one turn late (> K)",
+        "agents/progress.py",
+        "return self.unchanged >= self.after",
+        "return self.unchanged > self.after",
+        PROGRESS_TESTS,
+    ),
+    Bug(
+        "fresh guard: always the first feasible move",
+        "agents/progress.py",
+        "return options[taken % len(options)] if options else wait",
+        "return options[0] if options else wait",
+        PROGRESS_TESTS,
+    ),
+    Bug(
+        "fresh history: a failed pick counts as progress",
+        "hg_marl/envs/history.py",
+        "moved = ok & self.moves[a][act]",
+        "moved = self.moves[a][act]",
+        HISTORY_TESTS,
+    ),
+    Bug(
+        "fresh history: since-progress feature of the observer, not the partner",
+        "hg_marl/envs/history.py",
+        "since[np.arange(self.n), self.since[:, 1 - me]] = 1",
+        "since[np.arange(self.n), self.since[:, me]] = 1",
+        HISTORY_TESTS,
+    ),
+    Bug(
+        "fresh cycle: human idle less the robot's action",
+        "hg_marl/core/cycle.py",
+        "idle[1] += length if human.waited else length - d_human",
+        "idle[1] += length if human.waited else length - d_robot",
+        CYCLE_TESTS,
+    ),
+    Bug(
+        "fresh cycle: a failed action counted as effort",
+        "hg_marl/core/cycle.py",
+        "duration if ok and not waited else 0.0",
+        "duration if not waited else 0.0",
+        CYCLE_TESTS,
+    ),
+    Bug(
+        "fresh partner model: prior added once, not per kind",
+        "agents/partner_model.py",
+        "total = sum(counts.get(k, 0.0) + self.alpha for k in kinds)",
+        "total = sum(counts.get(k, 0.0) for k in kinds) + self.alpha",
+        PARTNER_TESTS,
+    ),
+    Bug(
+        "fresh partner model: chances never forgotten",
+        "agents/partner_model.py",
+        "self.chances[k] = self.forget * self.chances.get(k, 0.0) + 1.0",
+        "self.chances[k] = self.chances.get(k, 0.0) + 1.0",
+        PARTNER_TESTS,
+    ),
+    Bug(
+        "fresh builder: cycle seconds summed, not the longer action",
+        "agents/models/builder.py",
+        'flow["tau"].append(np.maximum(d_robot[pair_of], ans.d_human[entry]))',
+        'flow["tau"].append(d_robot[pair_of] + ans.d_human[entry])',
+        MODEL_TESTS,
+    ),
+    Bug(
+        "fresh budget: a model of exactly max_states refused",
+        "agents/models/budget.py",
+        "states is not None and states > self.states:",
+        "states is not None and states >= self.states:",
+        BUDGET_TESTS,
+    ),
+    Bug(
+        "fresh outputs: suffix check case-sensitive",
+        "training/outputs.py",
+        "if suffixes and path.suffix.lower() not in suffixes:",
+        "if suffixes and path.suffix not in suffixes:",
+        ("tests/fuzz/test_outputs.py", "tests/fuzz/test_pinned_planted_outputs.py"),
+    ),
+    Bug(
+        "fresh limits: a count equal to its limit refused",
+        "training/limits.py",
+        "if count > limit:",
+        "if count >= limit:",
+        ("tests/fuzz/test_bounds.py",),
+    ),
+    Bug(
+        "fresh memory robot: hidden state kept across runs",
+        "agents/robots/memory.py",
+        "self.h = self.net.initial(1)",
+        "self.h = self.net.initial(1) if self.h is None else self.h",
+        (
+            "tests/training/test_ppo_recurrent.py",
+            "tests/agents/test_robots.py",
+            "tests/training/test_pinned_planted_memory.py",
+        ),
+    ),
+    Bug(
+        "fresh family-out: bursts period without parentheses",
+        "agents/humans/family_out.py",
+        "resting = turn.clock % (self.work + self.rest) >= self.work",
+        "resting = turn.clock % self.work + self.rest >= self.work",
+        (
+            "tests/agents/test_family_out.py",
+            "tests/agents/test_humans.py",
+            "tests/agents/test_pinned_planted_family_out.py",
+        ),
+    ),
+)
+
+ALL = BUGS + FRESH
+
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:
     """Plant ``bug`` in a fresh copy; return (caught, failing tests)."""
-    scratch = scratch_copy(work / bug.name.split(":")[0].replace(" ", "_")[:40])
+    scratch = scratch_copy(work / re.sub(r"\W+", "_", bug.name)[:60])
     if tests_rev:
         tests_from(tests_rev, scratch)
     source = scratch / bug.path
@@ -107,16 +236,18 @@ def main(argv: list[str] | None = None) -> int:
     """Plant every bug; exit 1 if any is missed."""
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--tests-from", metavar="REV", help="use the tests of this commit")
+    parser.add_argument("--only", metavar="TEXT", help="plant only the bugs whose name contains TEXT")
     args = parser.parse_args(argv)
+    bugs = [b for b in ALL if args.only is None or args.only in b.name]
     missed = 0
     with tempfile.TemporaryDirectory(prefix="hg-marl-planted-") as tmp:
-        for bug in BUGS:
+        for bug in bugs:
             caught, failed = check(bug, Path(tmp), args.tests_from)
             missed += not caught
             print(f"{'caught' if caught else 'MISSED'}  {bug.name}  ({bug.path})")
             for name in failed:
                 print(f"        {name}")
-    print(f"\n{len(BUGS) - missed}/{len(BUGS)} planted bugs caught")
+    print(f"\n{len(bugs) - missed}/{len(bugs)} planted bugs caught")
     return 1 if missed else 0
 
 
