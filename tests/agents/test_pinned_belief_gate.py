@@ -62,3 +62,16 @@ def test_a_previous_turn_elsewhere_or_not_waiting_starts_afresh(tmp_path: Path) 
         robot._wait_run = 0.5
         assert not robot._unexplained_waits(turn, [1.0])
         assert robot._wait_run == 1.0
+
+
+def test_a_turn_without_a_human_action_is_no_evidence(tmp_path: Path) -> None:
+    """``last_actions[1] == -1`` (the Turn's documented "no action yet") updates nothing, whatever came before."""
+    world = World("paper2015")
+    robot = _robot(tmp_path, world)
+    state = world.initial_state(np.random.default_rng(0))
+    robot._prev = (state, robot._wait)
+    before = list(robot.posterior.posterior())
+    calls: list[int] = []
+    robot.posterior.observe = lambda *args: calls.append(1)  # type: ignore[method-assign]
+    robot._observe(Turn(world, state, Agent.ROBOT, {}, last_actions=(robot._wait, -1)))
+    assert calls == [] and list(robot.posterior.posterior()) == before
