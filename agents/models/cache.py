@@ -17,13 +17,14 @@ from __future__ import annotations
 import hashlib
 import io
 import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from hg_marl.core import World
+from hg_marl.core.atomic import atomic_write
+from hg_marl.core.errors import OutputError
 
 
 def cache_folder(cache: Path | str | bool | None) -> Path | None:
@@ -69,16 +70,6 @@ def save_entry(path: Path, key: str, arrays: dict[str, np.ndarray]) -> None:
     buf = io.BytesIO()
     np.savez(buf, key=np.array(key), **arrays)  # type: ignore[arg-type]
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    except OSError:
-        return
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(buf.getvalue())
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except OSError:
-        Path(tmp).unlink(missing_ok=True)  # nothing half-written is left behind
+        atomic_write(path, lambda tmp: tmp.write_bytes(buf.getvalue()))
+    except (OSError, OutputError):
+        return  # a cache is an optimisation: nothing half-written is left behind, nothing is raised
