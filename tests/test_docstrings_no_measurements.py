@@ -6,7 +6,8 @@ benchmark output and the docs' pages (``docs/benchmarks.md``, ``docs/batched.md`
 docstring (module, class, function and attribute strings) of ``hg_marl/``, ``agents/``
 and ``training/`` with ``ast`` for the forms such figures take. Simulated seconds are not
 machine measurements, so a bare ``s`` is not flagged; limits are written in binary units
-(``MiB``, ``GiB``), measurements in decimal ones (``MB``, ``GB``).
+(``MiB``, ``GiB``), measurements in decimal ones (``MB``, ``GB``). There is no allowed
+exception: a figure a docstring needs is written as the constant it comes from.
 """
 
 from __future__ import annotations
@@ -36,9 +37,6 @@ MEASUREMENT = re.compile(
 )
 """The forms a machine's measurement takes in prose."""
 
-ALLOWED: dict[str, str] = {}
-"""``path: phrase`` of the docstrings allowed to keep a match, with why (none so far)."""
-
 
 def docstrings(path: Path) -> Iterator[tuple[int, str]]:
     """Every bare string statement in a body (module, class, function and attribute docstrings)."""
@@ -62,8 +60,6 @@ def findings(path: Path, root: Path = ROOT) -> list[str]:
     out = []
     for line, text in docstrings(path):
         for match in MEASUREMENT.finditer(text):
-            if ALLOWED.get(rel) and ALLOWED[rel] in match.group(0):
-                continue
             at = line + text[: match.start()].count("\n")
             out.append(f"{rel}:{at}: {match.group(0)!r}")
     return out
