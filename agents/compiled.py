@@ -15,21 +15,18 @@ cannot happen for a table compiled for the same scenario and durations, but a ca
 may hand any state) falls back to the live human, counted in ``fallbacks``.
 
 Built once per (scenario, durations, human spec) and cached on disk, keyed by the
-content of all that plus the source of every module that can change an answer (the
-core rules, the humans, the planner, this file); the entry stores its key and is
-refused if it does not match. Nothing is written outside a folder the user named:
+content of all that plus the code of every module that can change an answer (those this
+module and the humans import, found by :mod:`hg_marl.agents.content`); the entry stores
+its key and is refused if it does not match. Nothing is written outside a folder the user named:
 ``cache=FOLDER`` keeps the tables there (``hg-marl train --algo ppo_batched`` uses
 ``OUT/partners``), ``cache=True`` uses ``$HG_MARL_CACHE/partners`` when that variable is
-set and no disk cache otherwise, ``cache=None`` never caches on disk.
-
-Sizes (``paper2015``: 444-1,892 robot-turn states, a few thousand keys, under 2 s to
-build for every bundled human; ``roboergosum``: as the oracle's model, see
-``agents/oracle.py``, built once and then loaded in well under a second).
+set and no disk cache otherwise, ``cache=None`` never caches on disk: a large scenario's
+table is as large as the oracle's model, so it is built once and then loaded (sizes and
+build times: ``docs/batched.md``, compiled partners).
 """
 
 from __future__ import annotations
 
-import hashlib
 import io
 import os
 import sys
@@ -41,8 +38,9 @@ from typing import Any
 import numpy as np
 from tqdm import tqdm
 
+from hg_marl.agents import content
 from hg_marl.agents.humans.base import HumanError
-from hg_marl.agents.humans.registry import make_human
+from hg_marl.agents.humans.registry import HUMANS, make_human
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules, BatchState
 
@@ -51,14 +49,6 @@ MAX_KEYS = 5_000_000
 
 _KEY_LIMIT = 2**62
 OUTCOME_FIELDS = ("where", "robot_at", "offer_by", "offer_obj", "ok", "duration", "facts", "mask")
-_SOURCES = (
-    "hg_marl/core",
-    "agents/humans",
-    "agents/planner",
-    "agents/models",
-    "agents/compiled.py",
-    "agents/oracle.py",
-)
 
 
 class CompileError(HumanError):
@@ -286,50 +276,26 @@ class CompiledHuman:
         return len(self.keys)
 
 
-def source_digest(root: Path | None = None) -> str:
-    """sha256 of every source file that can change a compiled answer."""
-    root = root or Path(__file__).resolve().parent.parent
-    h = hashlib.sha256()
-    for rel in _SOURCES:
-        base = root / rel
-        if not base.exists():  # installed layout: hg_marl/agents, hg_marl/core
-            base = Path(__file__).resolve().parent.parent / rel.replace("agents/", "")
-        files = sorted(base.rglob("*.py")) if base.is_dir() else [base]
-        for f in files:
-            if f.exists():
-                h.update(f.name.encode())
-                h.update(f.read_bytes())
-    return h.hexdigest()
+def code_roots() -> tuple[str, ...]:
+    """Where a compiled table's code digest starts: this module and every human's module."""
+    return (__name__, *content.registry_targets(HUMANS))
 
 
 def cache_key(world: World, spec: str, closure: Sequence[str] = ()) -> str:
-    """Content key of a compiled table: scenario, durations, human spec, the files it names, and code.
+    """Content key of a compiled table (:func:`hg_marl.agents.content.content_key`).
 
-    A ``path=`` parameter (a learned policy's folder or file) is keyed by the content of
-    every file under it, so retraining into the same folder compiles again. ``closure``
-    (the specs whose answers also lead on) widens the table, so it is part of the key.
+    Its fields: the scenario and durations, the human's spec and the ``closure`` (the specs
+    whose answers also lead on widen the table); the content module adds every file they
+    name (a learned policy's header and weights, so retraining into the same folder
+    compiles again) and the code reachable from :func:`code_roots`.
     """
-    from hg_marl.agents.humans.registry import parse_human
-
-    h = hashlib.sha256()
-    for part in (
-        repr(world.scenario),
-        repr(world.durations),
-        spec,
-        source_digest(),
-        *(f"closure {c}" for c in closure),
-    ):
-        h.update(part.encode())
-        h.update(b"\0")
-    for named_spec in (spec, *closure):
-        _, params = parse_human(named_spec)
-        if "path" in params:
-            named = Path(params["path"])
-            for f in sorted(named.rglob("*")) if named.is_dir() else [named]:
-                if f.is_file():
-                    h.update(f.name.encode())
-                    h.update(f.read_bytes())
-    return h.hexdigest()
+    fields = {
+        "scenario": repr(world.scenario),
+        "durations": repr(world.durations),
+        "spec": spec,
+        "closure": list(closure),
+    }
+    return content.content_key("compiled human", fields, code_roots())
 
 
 def default_cache() -> Path | None:

@@ -47,15 +47,15 @@ compiled robot has no blocked actions (its plans always assume the cooperative m
 no monitor, only the guard. Against a partner who follows the plans both act alike;
 against one who refuses, the live robot may find a detour sooner.
 
-Cost (``paper2015``: 1,892 robot-turn states, 3.3-3.7 s to build on the shared 2-core
-machine, then about 100x the live robots' steps/s; ``benchmarks/batched_throughput.py
---human-seat``; ``roboergosum`` is over :data:`MAX_STATES`). Cached on disk like the compiled
-humans, only in a folder the user names (``cache=FOLDER``, or ``$HG_MARL_CACHE``).
+Cost: one cold plan per robot-turn state, paid once, after which a batch is one lookup
+instead of a planner per table (its build time and speed-up, measured by
+``benchmarks/batched_throughput.py --human-seat``: ``docs/batched.md``; ``roboergosum`` is
+over :data:`MAX_STATES`). Cached on disk like the compiled humans, only in a folder the
+user names (``cache=FOLDER``, or ``$HG_MARL_CACHE``).
 """
 
 from __future__ import annotations
 
-import hashlib
 import sys
 from collections import deque
 from pathlib import Path
@@ -63,7 +63,8 @@ from pathlib import Path
 import numpy as np
 from tqdm import tqdm
 
-from hg_marl.agents.compiled import CompileError, Packer, default_cache, save_table, source_digest
+from hg_marl.agents import content
+from hg_marl.agents.compiled import CompileError, Packer, default_cache, save_table
 from hg_marl.agents.progress import PROGRESS_AFTER, ArrayProgressGuard
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchState
@@ -72,15 +73,13 @@ STALL_AFTER = PROGRESS_AFTER
 """Unchanged robot turns in a row after which the compiled robot takes a stall move (the progress guard's K)."""
 
 MAX_STATES = 50_000
-"""The compiler's budget of robot-turn states (one cold plan each, a few ms); beyond it, a clear error.
+"""The compiler's budget of robot-turn states (one cold plan each); beyond it, a clear error.
 
-``roboergosum`` has 530,036 robot-turn states (about 270 s to enumerate and, at 3-7 ms a
-plan, most of an hour to plan), so it is refused and its human seat keeps live robots."""
+``roboergosum`` has 530,036 robot-turn states, too many cold plans to wait for (the
+times: ``docs/batched.md``), so it is refused and its human seat keeps live robots."""
 
 COMPILABLE = ("planner",)
 """Robot specs that are compiled (the plain planner: its plans are a function of the state)."""
-
-_OWN_SOURCES = ("compiled_robot.py", "robots/planner.py", "robots/base.py", "partner.py", "progress.py")
 
 
 def planner_action(world: World, state: State) -> int:
@@ -211,18 +210,11 @@ class CompiledRobot:
 
 
 def robot_cache_key(world: World, spec: str, stall_after: int) -> str:
-    """Content key of a compiled robot: scenario, durations, spec, the rule's ``K`` and the code."""
-    here = Path(__file__).resolve().parent
-    h = hashlib.sha256()
-    for part in (repr(world.scenario), repr(world.durations), spec, str(stall_after), source_digest()):
-        h.update(part.encode())
-        h.update(b"\0")
-    for rel in _OWN_SOURCES:
-        f = here / rel
-        if f.exists():
-            h.update(rel.encode())
-            h.update(f.read_bytes())
-    return h.hexdigest()
+    """Content key of a compiled robot (:func:`hg_marl.agents.content.content_key`): scenario,
+    durations, spec, the rule's ``K`` and the code reachable from this module (the table is built by
+    :func:`planner_action`, so the live robot's own module is not code it runs)."""
+    fields = {"scenario": repr(world.scenario), "durations": repr(world.durations), "spec": spec, "K": stall_after}
+    return content.content_key("compiled robot", fields, (__name__,))
 
 
 def compile_robot(

@@ -47,14 +47,14 @@ from scipy.sparse.linalg import spsolve
 from tqdm import tqdm
 
 from hg_marl.agents.models import AnswerTable, Model, StatePacker, build_model
+from hg_marl.agents.models.answers import stationary_human
+from hg_marl.agents.models.python_model import certain_states
 from hg_marl.agents.oracle import (
     DEFAULT_MEMORY,
     DEFAULT_SECONDS,
     HOUR,
     Budget,
     OracleTooLarge,
-    _certain_states,
-    _human_policy,
     layout_distribution,
 )
 from hg_marl.core import Agent, Scenario, State, World
@@ -230,7 +230,7 @@ class JointModel:
         t_pair, t_next, t_prob, t_tau = self.arrays(i)
         n, n_pairs = self.n, self.n_pairs
         cost = np.bincount(t_pair, weights=t_prob * t_tau, minlength=n_pairs)
-        alive, ok = _certain_states(n, self.pair_state, self.terminal, t_pair, t_next)
+        alive, ok = certain_states(n, self.pair_state, self.terminal, t_pair, t_next)
         values = np.zeros(n)
 
         def q_of(v: np.ndarray) -> np.ndarray:
@@ -369,7 +369,7 @@ def headroom(
     for label, spec in true:
         specs.setdefault(label, spec)
     labels = list(specs)
-    humans = [_human_policy(specs[label], world) for label in labels]
+    humans = [stationary_human(specs[label], world) for label in labels]
     budget = Budget(
         max_seconds,
         max_memory,

@@ -21,7 +21,7 @@ average-reward problem is the stochastic shortest path to the next success, solv
 value iteration ``V(s) = min_a E[tau + V(s')]`` with ``V = 0`` after the completing
 ``wait``. States from which the robot cannot make success certain (e.g. an adversarial
 human hid an object) get ``V = inf``; if the re-drawn table can lead there, the rate is
-0. The Python enumeration it replaced (``_Model``) is kept as the tests' reference.
+0. The Python enumeration it replaced (``PythonModel``) is kept as the tests' reference.
 
 Symmetry. Objects accepted by the same bins are interchangeable. When the human is
 ``equivariant`` (relabelling them in the state relabels its answer: the planner-driven
@@ -52,21 +52,18 @@ from typing import Any
 
 import numpy as np
 
-from hg_marl.agents.humans.base import HumanError
-from hg_marl.agents.humans.registry import make_human
-from hg_marl.agents.models.answers import AnswerTable
+from hg_marl.agents.models.answers import AnswerTable, stationary_human
 from hg_marl.agents.models.budget import DEFAULT_MEMORY, DEFAULT_SECONDS, DEFAULT_STATES, Budget, OverBudget
 from hg_marl.agents.models.builder import build_model
 from hg_marl.agents.models.cache import cache_folder, entry_path, load_entry, result_key, save_entry
 from hg_marl.agents.models.layouts import canonical_layout_count, canonical_layouts, layout_distribution
 from hg_marl.agents.models.packing import PackedMap, StatePacker
-from hg_marl.agents.models.python_model import _certain_states as _certain_states  # re-exported: headroom
-from hg_marl.agents.models.python_model import _Model as _Model  # re-exported: the belief robot, tests
 from hg_marl.agents.models.solve import solve
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.agents.progress import ProgressGuard
 from hg_marl.core import Agent, Durations, Scenario, State, World
 from hg_marl.core.scenario import layout_count
+from hg_marl.core.spec import AgentSpec
 from hg_marl.policy import Decision, Turn
 
 logger = logging.getLogger(__name__)
@@ -128,18 +125,6 @@ class OracleResult:
         return self.values.get(state, math.inf)
 
 
-def _human_policy(human: Any, world: World) -> Any:
-    if isinstance(human, str):
-        human = make_human(human)
-    if not callable(getattr(human, "distribution", None)):
-        raise HumanError(
-            f"the oracle needs a stationary human with distribution(world, state); {getattr(human, 'name', human)!r} "
-            "has none (switching and replay humans are not stationary: run the oracle per phase)"
-        )
-    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
-    return human
-
-
 def _from_entry(world: World, human: Any, stored: dict[str, np.ndarray], seconds: float) -> OracleResult:
     """An :class:`OracleResult` from a cache entry (see :func:`oracle_rate`)."""
     expected, n, n_transitions, n_layouts, iterations, converged, reduced = stored["scalars"].tolist()
@@ -181,8 +166,8 @@ def oracle_rate(
 
     Args:
         scenario: scenario name / TOML path / Scenario, or a World (then ``durations`` is ignored).
-        human: a stationary human: registry name (``"lazy:p_idle=0.5"``) or an instance
-            with ``distribution(world, state)``.
+        human: a stationary human: registry name (``"lazy:p_idle=0.5"``), a parsed
+            :class:`~hg_marl.core.spec.AgentSpec`, or an instance with ``distribution(world, state)``.
         durations: override the scenario's durations.
         failed_actions: also consider deliberately infeasible actions (a 0.2 s no-op);
             True is the exact model of the environment's action space.
@@ -211,17 +196,17 @@ def oracle_rate(
         world = scenario if isinstance(scenario, World) else World(scenario, durations)
         budget.subject = f"the oracle for {world.scenario.name!r}"
         budget.hint = "use the best robot as reference"
-        policy_human = _human_policy(human, world)
+        policy_human = stationary_human(human, world)
         options = {
             "failed_actions": failed_actions,
             "symmetry": symmetry,
             "tolerance": tolerance,
             "max_iterations": max_iterations,
         }
-        folder = cache_folder(cache) if isinstance(human, str) else None
+        folder = cache_folder(cache) if isinstance(human, str | AgentSpec) else None
         path = key = None
         if folder is not None:
-            key = result_key(world, human, options)
+            key = result_key(world, str(human), options)
             path = entry_path(folder, world, key)
             stored = load_entry(path, key)
             if stored is not None:

@@ -2,7 +2,7 @@
 
 One home for the limits on the two ways a network's size reaches SB3: ``--hp`` /
 ``--hyperparams`` (training) and a model header's ``policy_kwargs`` (loading). A layer
-of 200,000 units asks torch for 160 GB before any error could be raised, so sizes are
+of 200,000 units asks torch for 200,000 squared float32 weights before any error could be raised, so sizes are
 bounded here: at most :data:`MAX_LAYERS` hidden layers of at most :data:`MAX_UNITS`
 units, and at most :data:`MAX_PARAMETERS` weights between hidden layers (an estimate
 that leaves out the input and output layers, whose sizes come from the scenario and
@@ -28,7 +28,7 @@ MAX_UNITS = 4096
 MAX_LAYERS = 16
 """Most hidden layers accepted (per network, ``pi`` and ``vf`` each)."""
 MAX_PARAMETERS = 16_000_000
-"""Most weights between consecutive hidden layers (64 MB of float32; Adam keeps two more copies)."""
+"""Most weights between consecutive hidden layers (4 bytes each as float32; Adam keeps two more copies)."""
 
 MAX_LSTM_UNITS = 1024
 """Widest LSTM accepted (RecurrentPPO's ``lstm_hidden_size``: 4 x 1024 x 1024 weights per layer)."""

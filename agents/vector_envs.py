@@ -10,12 +10,27 @@ partners.
 
 from __future__ import annotations
 
+import logging
 from collections.abc import Sequence
 from typing import Any
 
 from hg_marl.agents.array_partners import LiveRobots, compiled_humans, compiled_robots
 from hg_marl.core import Agent, Durations, Scenario, World
 from hg_marl.policy import Actor
+
+logger = logging.getLogger(__name__)
+
+
+def seat_robot(partner: Any) -> str:
+    """Which robot the human's batched seat plays, in words (the compiled planner or live robots)."""
+    from hg_marl.agents.compiled_robot import CompiledRobot
+
+    if isinstance(partner, CompiledRobot):
+        return (
+            f"the compiled {partner.name} robot (its plans and the progress guard only; "
+            "runs and studies play the live robot: compiled=False to train against it)"
+        )
+    return f"live robots ({partner.name}), one per table, as runs and studies play them"
 
 
 def robot_vector_env(
@@ -75,13 +90,24 @@ def human_vector_env(
     arrays with an array stall rule (``agents/compiled_robot.py``), so no Python runs per
     table; ``compiled=False`` keeps one live robot per table. Any other robot, or a robot
     instance, is live either way. ``cache``/``progress`` as for :func:`robot_vector_env`.
+
+    Which robot a human trained here meets: by default the *compiled* planner, not the
+    live ``planner`` robot that ``hg-marl run``, studies and ``train sb3 --seat human``
+    play. The two propose the same plans, but the compiled one has only the progress
+    guard where the live one also monitors unmet expectations and blocks refused human
+    actions (``agents/compiled_robot.py`` says where they differ), so a human trained
+    against it may meet a slightly different robot when evaluated. ``compiled=False``
+    trains against the live robot itself (slower: one planner per table). The env says
+    which in one log line (``logging`` INFO, :func:`seat_robot`).
     """
     from hg_marl.envs.batched import BatchedTable, check_batch
 
     world = World(scenario, durations)
     n = check_batch(world, num_envs)
+    partner = compiled_robots(world, robot, n, cache, progress) if compiled else LiveRobots(world, robot, n)
+    logger.info("human seat: %d tables against %s", n, seat_robot(partner))
     return BatchedTable(
-        compiled_robots(world, robot, n, cache, progress) if compiled else LiveRobots(world, robot, n),
+        partner,
         n,
         world,
         Agent.HUMAN,

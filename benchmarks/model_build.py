@@ -27,8 +27,10 @@ from typing import Any
 
 from hg_marl.agents.humans.population import load_population
 from hg_marl.agents.models import AnswerTable, Budget, StatePacker, build_model
+from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.layouts import layout_distribution
-from hg_marl.agents.oracle import OverBudget, _human_policy, _Model, oracle_rate
+from hg_marl.agents.models.python_model import PythonModel
+from hg_marl.agents.oracle import OverBudget, oracle_rate
 from hg_marl.core import Agent, State, World
 
 POPULATION = "populations/roboergosum.toml"
@@ -51,8 +53,8 @@ class Tabulated:
 
 
 def python_build(world: World, human: Any) -> int:
-    """The Python enumeration (``agents/oracle.py`` ``_Model``) of the full model; its state count."""
-    model = _Model(world, human, True, 10**7)
+    """The Python enumeration (``agents/oracle.py`` ``PythonModel``) of the full model; its state count."""
+    model = PythonModel(world, human, True, 10**7)
     layouts = layout_distribution(world)
     wait, wait_index = world.durations.wait, world.n_actions(Agent.ROBOT) - 1
     regen = [nxt for table, _ in layouts for nxt, _, _ in model.replies(table, wait, wait_index)]
@@ -65,7 +67,7 @@ def builder_rates(member: str) -> None:
     world = World("roboergosum")
     layouts = layout_distribution(world)
     print(f"roboergosum against {member} ({spec}), full model, one core:")
-    tab = Tabulated(_human_policy(spec, world))
+    tab = Tabulated(stationary_human(spec, world))
     old = new = 0.0
     for run in ("cold", "warm"):
         start, cpu = time.perf_counter(), time.process_time()
@@ -73,7 +75,7 @@ def builder_rates(member: str) -> None:
         old = time.process_time() - cpu
         report("python enumeration", run, n, time.perf_counter() - start, old)
     for live in (True, False):
-        answers = AnswerTable(world, _human_policy(spec, world), StatePacker(world), arrays=not live)
+        answers = AnswerTable(world, stationary_human(spec, world), StatePacker(world), arrays=not live)
         for run in ("cold", "warm"):
             start, cpu = time.perf_counter(), time.process_time()
             model = build_model(world, answers, layouts)

@@ -22,7 +22,6 @@ a cluster that cannot be joined or has no CPU is one :class:`ConfigError` line t
 from __future__ import annotations
 
 import ctypes
-import functools
 import multiprocessing
 import os
 import re
@@ -33,9 +32,10 @@ from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor
 from concurrent.futures import wait as wait_futures
 from typing import Any, Protocol
 
+from hg_marl.agents.content import canonical, named_files, scenario_content
 from hg_marl.core.errors import ConfigError
-from hg_marl.training.provenance import named_files
-from hg_marl.training.store import Job, canonical, scenario_content
+from hg_marl.core.spec import AgentSpec
+from hg_marl.training.store import Job
 
 PR_SET_PDEATHSIG = 1
 """Linux ``prctl`` option: the signal a process gets when its parent dies."""
@@ -43,8 +43,8 @@ PR_SET_PDEATHSIG = 1
 MAX_WORKERS_PER_CPU = 4
 MAX_WORKERS = 256
 """``--workers`` is at most ``min(MAX_WORKERS, MAX_WORKERS_PER_CPU x cpu count)``: every worker
-is a Python process holding numpy and the game (~100 MB), and past a few per core they
-only compete for the same cores."""
+is a Python process holding numpy and the game (its memory: ``docs/inputs.md``), and past
+a few per core they only compete for the same cores."""
 
 _ADDRESS = re.compile(r"^(ray://)?(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9.-]+):(\d{1,5})$")
 
@@ -88,10 +88,10 @@ def execute(job: Job) -> Any:
 
     if job.robot == "oracle":  # the optimal policy against this very human (stationary humans only)
         from hg_marl.agents.oracle import OracleRobot
-        from hg_marl.core.spec import format_spec
 
-        human_spec = format_spec(job.human, job.human_params)
-        inputs = canonical({"scenario": scenario_content(job.scenario), "files": named_files({"h": human_spec})})
+        human_spec = AgentSpec(job.human, dict(job.human_params))  # carried as parsed, never formatted and re-read
+        fields = {"name": human_spec.name, "params": dict(human_spec.params)}
+        inputs = canonical({"scenario": scenario_content(job.scenario), "files": named_files({"h": fields})})
         robot: Any = OracleRobot(_oracle_policy(job.scenario, human_spec, inputs), human=human_spec)
     else:
         robot = make_robot(job.robot, **job.robot_params)
@@ -102,16 +102,26 @@ def execute(job: Job) -> Any:
     return run(robot, human, config)
 
 
-@functools.lru_cache(maxsize=16)
-def _oracle_policy(scenario: str, human: str, inputs: str) -> Any:
+_POLICIES: dict[tuple[str, str, str], Any] = {}
+POLICIES_KEPT = 16
+"""Oracle solutions a worker process keeps (the oldest is dropped first)."""
+
+
+def _oracle_policy(scenario: str, human: AgentSpec, inputs: str) -> Any:
     """The oracle's solution, solved once per worker process (every seed of a cell shares it).
 
-    ``inputs`` (the content of the scenario and of every file the human's spec names) is
-    part of the cache key, so a policy file replaced while the process lives is solved again.
+    Kept by the scenario, the human's canonical text and ``inputs`` (the content of the
+    scenario and of every file the human's spec names), so a policy file replaced while
+    the process lives is solved again.
     """
     from hg_marl.agents.oracle import oracle_rate
 
-    return oracle_rate(scenario, human)
+    key = (scenario, str(human), inputs)
+    if key not in _POLICIES:
+        if len(_POLICIES) >= POLICIES_KEPT:
+            del _POLICIES[next(iter(_POLICIES))]
+        _POLICIES[key] = oracle_rate(scenario, human)
+    return _POLICIES[key]
 
 
 class Backend(Protocol):

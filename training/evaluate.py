@@ -22,8 +22,9 @@ from typing import Any
 
 import pandas as pd
 
+from hg_marl.agents.content import scenario_content
 from hg_marl.training.backends import Backend, LocalBackend
-from hg_marl.training.store import Job, Store, StoredRun, scenario_content
+from hg_marl.training.store import Job, Store, StoredRun
 from hg_marl.training.study import ORACLE, Actor, Study
 
 log = logging.getLogger(__name__)

@@ -45,8 +45,7 @@ criteria read the habit's per-state action distribution as a measure of what it 
 there (Dromnelle et al. 2022 and Keramati et al. 2011 both use tabular model-free
 experts). The paper's linear habit generalises across states, so with beta = 50 its
 distribution is sharp even in states it has never learnt, and these criteria hand it
-control far too early (measured: 4-7 tasks instead of 35 with ``entropy`` or
-``entropy_and_cost`` and no visit threshold)."""
+control far too early (the settings compared: ``docs/results.md``)."""
 
 
 def conditions(further: bool = True) -> dict[str, tuple[str, dict[str, Any]]]:

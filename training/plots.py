@@ -276,8 +276,8 @@ def regret_bars_figure(results: dict[str, Any]) -> Any:
     """Tasks lost to the oracle after the last change, mean and 95% CI, one panel per switch.
 
     Each panel's scale fits the robots the text compares: a bar whose top exceeds
-    :data:`CLIP` times the panel's median bar top (the habit alone loses ~27 tasks, the
-    others 0-3) is cut at the top of the axis, hatched, and its value written on it, so
+    :data:`CLIP` times the panel's median bar top (the habit alone loses many times what
+    the others lose: ``docs/results.md``) is cut at the top of the axis, hatched, and its value written on it, so
     the others' differences are not slivers. Colours are the robots' own
     (:mod:`hg_marl.training.colours`).
     """

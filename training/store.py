@@ -8,12 +8,12 @@ holding everything that determines its result, as a content-addressed build cach
   parameters, the scenario's *content* (the TOML bytes of a built-in or a file, or the
   ``generated:...`` spec, never just a name), the simulated duration, the seed, the
   decision-cost model and the runner's protocol switches;
-- the content of every file those settings name (:func:`~hg_marl.training.provenance.named_files`):
+- the content of every file those settings name (:func:`~hg_marl.agents.content.named_files`):
   any text, also inside a nested ``name:k=v`` spec, that names an existing file, folder
   or model stem is keyed by its text and by the bytes the loaders read (a model header
   *and* the weights it names; a trace; a scenario), so a replaced ``learned:path=``,
   ``replay:path=`` or ``sb3:path=`` file gives a new key;
-- the code (:func:`~hg_marl.training.provenance.code_fingerprint`): the project modules a
+- the code (:func:`~hg_marl.agents.content.code_digest`): the project modules a
   run can execute, found by a static walk of the import graph from the backends, the
   runner and every registry target (function-level imports included), hashed without
   docstrings and comments; plus the third-party distributions' versions, the Python
@@ -72,15 +72,15 @@ import os
 import shutil
 import time
 from collections.abc import Callable, Iterator, Mapping
-from dataclasses import asdict, dataclass, field, is_dataclass
-from importlib import resources
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
 import pandas as pd
 
+from hg_marl.agents import content
+from hg_marl.agents.content import canonical, registry_targets, scenario_content
 from hg_marl.training.io import atomic_write, write_json
-from hg_marl.training.provenance import code_fingerprint, file_digest, named_files
 
 log = logging.getLogger(__name__)
 
@@ -91,61 +91,30 @@ SCHEMA = 2
 """Version of the entry layout; part of every key (2: entries carry their own hash)."""
 
 
-def scenario_content(scenario: str) -> str:
-    """SHA-256 of what a scenario spec denotes: built-in or file TOML bytes, or the generator spec.
-
-    Raises:
-        ScenarioError: an unknown name or a missing file.
-    """
-    from hg_marl.core.scenario import BUILTIN, ScenarioError
-
-    text = str(scenario)
-    if text in BUILTIN:
-        data = resources.files("hg_marl.core.scenarios").joinpath(f"{text}.toml").read_bytes()
-    elif text == "generated" or text.startswith("generated:"):
-        data = text.encode()
-    else:
-        path = Path(text)
-        if not path.is_file():
-            raise ScenarioError(f"unknown scenario {text!r}: not a built-in name and not an existing file")
-        return file_digest(path)
-    return hashlib.sha256(data).hexdigest()
-
-
-def canonical(value: Any) -> str:
-    """Canonical JSON (sorted keys, no spaces): equal inputs, equal text."""
-    return json.dumps(value, sort_keys=True, separators=(",", ":"), default=_plain, allow_nan=False)
-
-
-def _plain(value: Any) -> Any:
-    if is_dataclass(value) and not isinstance(value, type):
-        return asdict(value)
-    if isinstance(value, tuple | set | frozenset):
-        return sorted(value) if isinstance(value, set | frozenset) else list(value)
-    if isinstance(value, Path):
-        return str(value)
-    raise TypeError(f"not a JSON value: {value!r}")
-
-
 def _plain_tree(value: Any) -> Any:
     """``value`` as the JSON it is keyed by."""
     return json.loads(canonical(value))
 
 
+ROOTS = ("hg_marl.training.backends", "hg_marl.training.runner")
+"""The modules that play a run; the code digest also starts from every registry target."""
+
+
+def code_roots() -> tuple[str, ...]:
+    """Where the store's code digest starts: :data:`ROOTS` and every human, robot and criterion module."""
+    from hg_marl.agents.humans.registry import HUMANS
+    from hg_marl.agents.meta.registry import CRITERIA
+    from hg_marl.agents.robots.registry import ROBOTS
+
+    return (*ROOTS, *registry_targets(HUMANS, ROBOTS, CRITERIA))
+
+
 def key_document(kind: str, fields: Mapping[str, Any]) -> dict[str, Any]:
-    """Everything a result of ``kind`` made from ``fields`` depends on: the fields, the content of
-    every file they name (:func:`~hg_marl.training.provenance.named_files`), the entry schema,
-    the package version and the code fingerprint."""
+    """Everything a result of ``kind`` made from ``fields`` depends on
+    (:func:`hg_marl.agents.content.key_document`), the entry schema and the package version."""
     import hg_marl
 
-    return {
-        "kind": kind,
-        "schema": SCHEMA,
-        "version": hg_marl.__version__,
-        "code": code_fingerprint(),
-        "files": named_files(fields),
-        **fields,
-    }
+    return {**content.key_document(kind, fields, code_roots()), "schema": SCHEMA, "version": hg_marl.__version__}
 
 
 def content_key(kind: str, fields: Mapping[str, Any]) -> str:

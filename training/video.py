@@ -27,7 +27,7 @@ log = logging.getLogger(__name__)
 
 FORMATS = (".gif", ".mp4")
 MAX_FRAMES = 3000
-"""Frames kept in memory at most (about 0.7 GB at paper2015's size); later ones are dropped."""
+"""Frames kept in memory at most (their memory: ``docs/inputs.md``); later ones are dropped."""
 
 
 def check_video_path(path: Path) -> Path:

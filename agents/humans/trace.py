@@ -164,9 +164,9 @@ def _check_end(record: dict[str, Any], episode: Episode, at: str) -> None:
 
 
 MAX_TRACE_BYTES = 64 << 20
-"""A trace file may be at most 64 MiB. Read, a trace takes about 7.5 times its size in
-memory (a Python list per step's facts and mask), so this keeps a read under 0.5 GB; a
-person's move is about 300 bytes, so the cap is some 200,000 moves."""
+"""A trace file may be at most 64 MiB. Read, a trace takes several times its size in
+memory (a Python list per step's facts and mask), so the cap bounds what a read holds
+while leaving room for far more moves than a person plays (the figures: ``docs/inputs.md``)."""
 
 MAX_DECISION_CHARGE = 60.0
 """Most simulated seconds a robot decision may add to a cycle (its wall time, charged)."""

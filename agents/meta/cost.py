@@ -4,15 +4,15 @@ The paper's experiments last a fixed *simulated* duration, so a runner may charg
 robot decision to the clock. Measured wall time depends on the machine and its load, so
 results would not reproduce; the default is a model:
 
-- habit: a constant ``habit`` seconds (one matvec, a softmax and a draw, far below a
-  millisecond in Python: ``benchmarks/decision_latency.py`` measures it, the figures are
-  in docs/benchmarks.md; charged at 1 ms, the order an implementation in the robot's
+- habit: a constant ``habit`` seconds (one matvec, a softmax and a draw, cheaper in
+  Python than the charge: ``benchmarks/decision_latency.py`` measures it, the figures
+  are in docs/benchmarks.md; the charge is the order an implementation in the robot's
   supervision loop would cost, whatever the machine running the simulation);
 - planner: ``planner_base + planner_per_node * nodes`` seconds. The base stands for a
   HATP call's fixed overhead (state serialisation, domain set-up, plan extraction),
-  the per-node term for its search. With 50 ms + 0.5 ms/node a plan of a few hundred
-  nodes costs ~0.1-0.3 s: negligible next to 1-3 s actions for ``paper2015``, as the
-  paper reports, and growing with the domain as HATP does. A plan served from the
+  the per-node term for its search. With the defaults a plan of a few hundred nodes
+  costs a fraction of one action's duration on ``paper2015``, negligible as the paper
+  reports, and growing with the domain as HATP does. A plan served from the
   planner's cache reports 0 nodes and is charged the base only (replaying a stored plan
   is what HATP's supervisor does between replans).
 """

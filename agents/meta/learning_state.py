@@ -9,13 +9,13 @@ proposed action in this state (``HabitView.sd``, the same estimate VPI uses) is 
 Why per state. An earlier version filtered the *global* relative change of the weight
 amplitude, ``|A_t - A_{t-1}| / A_t``. As a tabular habit meets new states the amplitude
 grows roughly linearly, so that ratio decays like ``1 / t`` whatever the habit knows:
-it crossed the threshold after 13-15 simulated minutes in every run, and the habit then
-took over everywhere, including states it had never seen (failures, 20-40 tasks/h
-instead of ~110). In the adaptation runs this happened at the same moment for every
-switch (before the switch, the runs are identical), which is why the criterion seemed to
-"anticipate" the human's switch by about two minutes. Variation measured where the
-decision is taken has no such drift, and it rises again when the human changes (TD
-errors grow), which returns control to the planner by itself.
+it crossed the threshold at the same simulated time in every run, and the habit then
+took over everywhere, including states it had never seen (``docs/results.md`` has the
+runs). In the adaptation runs this happened at the same moment for every switch (before
+the switch, the runs are identical), which is why the criterion seemed to "anticipate"
+the human's switch. Variation taken where the decision is taken has no such drift, and
+it rises again when the human changes (TD errors grow), which returns control to the
+planner by itself.
 """
 
 from __future__ import annotations

@@ -16,10 +16,13 @@ from typing import Any
 
 import numpy as np
 
+from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.models.partners import batch_answers
 from hg_marl.core import Agent, State, World
+from hg_marl.core.errors import HumanError
+from hg_marl.core.spec import AgentSpec
 from hg_marl.envs.batched import BatchedRules
 
 CHECK_EVERY = 4
@@ -128,3 +131,24 @@ class AnswerTable:
         gather = np.repeat(first[order] - starts[:-1], sizes_sorted) + np.arange(starts[-1])
         self.keys, self.starts = all_keys[order], starts
         self.entries = {k: np.concatenate([self.entries[k], new[k]])[gather] for k in FIELDS}
+
+
+def stationary_human(human: Any, world: World) -> Any:
+    """``human`` ready to answer as a model's partner: built (from a spec's text or an
+    :class:`~hg_marl.core.spec.AgentSpec`; an instance is used as it is), checked stationary
+    (it has ``distribution(world, state, seen)``) and reset.
+
+    Raises:
+        HumanError: a human without a distribution (switching and replay are not stationary).
+    """
+    if isinstance(human, AgentSpec):
+        human = make_human(human.name, **human.params)
+    elif isinstance(human, str):
+        human = make_human(human)
+    if not callable(getattr(human, "distribution", None)):
+        raise HumanError(
+            f"the oracle needs a stationary human with distribution(world, state); {getattr(human, 'name', human)!r} "
+            "has none (switching and replay humans are not stationary: run the oracle per phase)"
+        )
+    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    return human

@@ -1,11 +1,10 @@
 """Exact results cached on disk by content, as the compiled partners are (``agents/compiled.py``).
 
 An oracle's result (its rate, sizes, and its policy and values as packed keys and arrays)
-is stored as one ``.npz`` under a folder the user named, keyed by the sha256 of
-everything that made it: the scenario and durations (their ``repr``), the human's spec
-and the content of any file it names (``path=``), the oracle's options, and the source of
-every module that can change an answer (``compiled.source_digest``: the core rules, the
-humans, the planner, this package, the oracle). The entry stores its key and is refused
+is stored as one ``.npz`` under a folder the user named, keyed by everything that made it
+(:mod:`hg_marl.agents.content`): the scenario and durations (their ``repr``), the human's
+spec and the content of any file it names (``path=``), the oracle's options, and the code
+of every module the oracle and the humans import. The entry stores its key and is refused
 if the key differs; a corrupt entry is rebuilt. Writes are atomic (a temporary file in
 the same folder, then a rename). ``cache=True`` uses ``$HG_MARL_CACHE/oracle`` when that
 variable is set and no disk cache otherwise; a human given as an instance has no content
@@ -14,7 +13,6 @@ key and is never cached.
 
 from __future__ import annotations
 
-import hashlib
 import io
 import os
 from pathlib import Path
@@ -38,13 +36,13 @@ def cache_folder(cache: Path | str | bool | None) -> Path | None:
 
 
 def result_key(world: World, spec: str, options: dict[str, Any]) -> str:
-    """The content key of one result: the compiled partners' key of (world, spec) plus the options."""
-    from hg_marl.agents.compiled import cache_key
+    """The content key of one result (:func:`hg_marl.agents.content.content_key`): the scenario, the
+    durations, the human's spec (and the files it names), the options, and the code the oracle runs."""
+    from hg_marl.agents import content
+    from hg_marl.agents.humans.registry import HUMANS
 
-    h = hashlib.sha256(cache_key(world, spec).encode())
-    for name in sorted(options):
-        h.update(f"\0{name}={options[name]!r}".encode())
-    return h.hexdigest()
+    fields = {"scenario": repr(world.scenario), "durations": repr(world.durations), "spec": spec, "options": options}
+    return content.content_key("oracle", fields, ("hg_marl.agents.oracle", *content.registry_targets(HUMANS)))
 
 
 def entry_path(folder: Path, world: World, key: str) -> Path:

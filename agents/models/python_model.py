@@ -3,7 +3,7 @@
 ``oracle_rate`` builds its model with :func:`~hg_marl.agents.models.build_model`. This
 enumeration (a dict of states, a list per transition field) is the simpler
 implementation the tests compare the array builder with (same states, transitions and
-rates), and :meth:`_Model.replies` is the belief robot's one-step backup through a
+rates), and :meth:`PythonModel.replies` is the belief robot's one-step backup through a
 member's answers.
 """
 
@@ -21,7 +21,7 @@ from hg_marl.core import Agent, State, World
 from hg_marl.core.cycle import cycle_length
 
 
-class _Model:
+class PythonModel:
     """The explored semi-MDP, one Python state at a time: the reference the array builder is tested against.
 
     ``oracle_rate`` builds its model with :func:`~hg_marl.agents.models.build_model`; this
@@ -158,7 +158,7 @@ class _Model:
             k += 1
 
 
-def _certain_states(
+def certain_states(
     n: int, pair_state: np.ndarray, terminal: np.ndarray, t_pair: np.ndarray, t_next: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """States from which some policy completes with probability 1, and the pairs it may use."""

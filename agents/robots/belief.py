@@ -18,30 +18,27 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   next success under the posterior mixture, assuming the partner's identity is revealed
   after this step (QMDP): a robot that is unsure hedges between the members' best
   responses, one that knows commits to its member's. MAP is the default because it
-  measured better on the bundled hard layouts (BR-Prox IQM on held-out members, 3
-  seeds: 0.98 / 0.96 against QMDP's 0.90 / 0.95 on ``forced_coordination`` /
-  ``asymmetric_advantages``): the belief settles within a few telling actions, and
-  QMDP's mixture, which assumes the uncertainty resolves after one step, keeps paying
-  for members the partner has already ruled out in the states where they disagree. ``Q_m`` is the
+  did better on the bundled hard layouts (``docs/hard-layouts.md``): the belief settles
+  within a few telling actions, and QMDP's mixture, which assumes the uncertainty
+  resolves after one step, keeps paying for members the partner has already ruled out
+  in the states where they disagree. ``Q_m`` is the
   oracle's one-step backup of ``V_m`` through member ``m``'s replies
-  (``_Model.replies``, the oracle's own transition rule).
+  (``PythonModel.replies``, the oracle's own transition rule).
 - **An open world.** Beside the members the posterior holds "none of them": the uniform
   partner (the registry's ``random`` human), prior ``unknown`` (5%). A partner the
   members explain worse than chance (one who keeps to its own side where every member
   would clear the middle) makes it the most probable hypothesis; the robot then hands
   the decisions to a plain ``planner`` robot of its own, which replans from what it
   sees and rules out the moves the partner refuses, until a member explains the partner
-  again. Measured on the hard layouts' ``h_own_side`` (asymmetric_advantages, 3 seeds x
-  1800 s): 32.7 tasks against the planner's 33.3, where the closed world made 25.0.
+  again, so such a partner gets about what the plain planner gets rather than a closed
+  world's wrong best response (``docs/hard-layouts.md``).
 - **Probing** (``probe=S``, default off). While no member holds 90% of the belief, the
   robot may take, instead of its best action, the action whose reply tells the members
   apart most (mutual information between member and reply, :meth:`information`) if it
-  costs at most ``S`` expected seconds more and tells at least 0.05 nats more. Measured,
-  it does not pay here: on the hard layouts' held-out members (3 seeds x 1800 s)
-  ``probe=5`` changes no member's tasks by more than 0.4 and ``probe=20`` loses 1-5 tasks
-  on four of ten; against a partner switching at 20-180 s it loses 0.8-1.6 tasks (CIs
-  reaching 0). The replies to the moves the robot makes anyway tell the members apart
-  within a few actions, so a move bought for information is a move lost.
+  costs at most ``S`` expected seconds more and tells at least 0.05 nats more. It does
+  not pay on the bundled layouts (``docs/hard-layouts.md``): the replies to the moves
+  the robot makes anyway tell the members apart within a few actions, so a move bought
+  for information is a move lost.
 - **Off every member's model** (a state no member's dynamics reach), and when it would
   wait again at an unchanged unfinished table after a run of shared waits that the
   belief makes unlikely (< 5%: the partner waits where its members would act, so the
@@ -65,7 +62,9 @@ from dataclasses import replace
 
 import numpy as np
 
-from hg_marl.agents.oracle import OracleResult, OracleRobot, _human_policy, _Model, oracle_rate
+from hg_marl.agents.models.answers import stationary_human
+from hg_marl.agents.models.python_model import PythonModel
+from hg_marl.agents.oracle import OracleResult, OracleRobot, oracle_rate
 from hg_marl.agents.partner import PartnerPosterior
 from hg_marl.agents.partner_model import LearnedPartner
 from hg_marl.agents.planner.space import Relabel
@@ -156,7 +155,7 @@ class BeliefRobot(Robot):
             raise RobotError(f"belief: {exc}") from None
         self._world: World | None = None
         self._results: list[OracleResult] = []
-        self._models: list[_Model] = []
+        self._models: list[PythonModel] = []
         self._fallback = OracleRobot(result=None)
         self._planner = PlannerRobot()
         self._prev: tuple[State, int] | None = None
@@ -168,8 +167,8 @@ class BeliefRobot(Robot):
             raise RobotError("belief plays the robot seat only")
         if self._world is None or self._world.scenario != world.scenario:
             self._results = [oracle_rate(world, spec) for spec in self.member_specs]
-            humans = [_human_policy(spec, world) for spec in self.member_specs]
-            self._models = [_Model(world, h, True, 1) for h in humans]
+            humans = [stationary_human(spec, world) for spec in self.member_specs]
+            self._models = [PythonModel(world, h, True, 1) for h in humans]
             self._world = world
         self._relabel = Relabel(world)
         self._wait = world.n_actions(Agent.ROBOT) - 1

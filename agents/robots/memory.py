@@ -45,7 +45,7 @@ class MemoryRobot(Robot):
     Args:
         path: the model header (``model.json``), its weights, its stem, or its folder.
         deterministic: take the most probable feasible action (False: sample).
-        cost: decision cost model (default: the habit's 1 ms constant).
+        cost: decision cost model (default: the habit's constant, ``CostModel.habit``).
         net: an in-memory policy instead of ``path`` (with ``history``): anything with
             ``initial(n)`` and ``step(obs, h) -> (logits, h)`` on numpy arrays.
         history: the history length of ``net``.

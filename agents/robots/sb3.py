@@ -18,9 +18,9 @@ the policy's distribution (or a draw with the robot's generator). A model traine
 history observation on the batched table (``training/baselines/recurrent_ppo_sb3.py``)
 is refused: the robot does not rebuild that observation.
 
-Decision time. A forward pass of a small MLP costs well under a millisecond; the robot
+Decision time. A forward pass of a small MLP is about as cheap as the habit's; the robot
 charges the same deterministic constant as the habitual expert
-(:class:`~hg_marl.agents.meta.cost.CostModel` ``habit``, 1 ms) unless given a ``cost``
+(:class:`~hg_marl.agents.meta.cost.CostModel` ``habit``) unless given a ``cost``
 in ``"wall"`` mode, so SB3 robots and the paper's habit are charged alike.
 ``planning_time`` records the measured wall time of the forward pass.
 
@@ -71,7 +71,7 @@ class SB3Robot(Robot):
         path: the model header (``model.json``), its weights, its stem, or its folder.
         deterministic: take the policy's most probable action (False: sample with the
             robot's generator).
-        cost: decision cost model (default: the habit's 1 ms constant).
+        cost: decision cost model (default: the habit's constant, ``CostModel.habit``).
         model: an in-memory model instead of ``path`` (evaluation during training);
             then ``observation`` must be given.
         observation: the observation mode, when ``model`` is given.

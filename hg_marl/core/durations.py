@@ -13,7 +13,7 @@ MAX_DURATION = 86_400.0
 """Longest action duration accepted (one simulated day)."""
 
 MIN_DURATION = 0.01
-"""Shortest action duration accepted (10 ms of simulated time). A cycle lasts at least
+"""Shortest action duration accepted (simulated seconds). A cycle lasts at least
 the shortest duration, so a run of ``--duration D`` takes at most ``D / MIN_DURATION``
 cycles; durations of 1e-300 s (finite, positive) would make any run endless."""
 

@@ -67,6 +67,7 @@ __all__ = [
     "layout_count",
     "load_scenario",
     "parse_scenario",
+    "resolve_scenario",
     "solvability_problems",
 ]
 
@@ -77,6 +78,27 @@ DEFAULT_SCENARIO = "paper2015"
 def available_scenarios() -> tuple[str, ...]:
     """Names accepted by :func:`load_scenario` besides file paths."""
     return (*BUILTIN, "generated")
+
+
+def resolve_scenario(text: str) -> tuple[str, str]:
+    """What a scenario spec names: ``("builtin", name)``, ``("generated", spec)`` or ``("file", path)``.
+
+    The one place a name is told from a path, so the loader and a result's content key
+    (``hg_marl.agents.content.scenario_content``) resolve a spec alike.
+
+    Raises:
+        ScenarioError: neither a built-in name, ``generated[:...]``, nor an existing ``.toml`` file.
+    """
+    if text in BUILTIN:
+        return "builtin", text
+    if text == "generated" or text.startswith("generated:"):
+        return "generated", text
+    if Path(text).suffix != ".toml" or not Path(text).is_file():
+        raise ScenarioError(
+            f"unknown scenario {text!r}: expected one of {', '.join(available_scenarios())} "
+            "or the path of an existing .toml file"
+        )
+    return "file", text
 
 
 def load_scenario(spec: str | Path | Scenario, *, strict: bool = False) -> Scenario:
@@ -94,10 +116,11 @@ def load_scenario(spec: str | Path | Scenario, *, strict: bool = False) -> Scena
     if isinstance(spec, Scenario):
         return spec
     text = str(spec)
-    if text in BUILTIN:
+    kind, _ = resolve_scenario(text)
+    if kind == "builtin":
         raw = resources.files("hg_marl.core.scenarios").joinpath(f"{text}.toml").read_text(encoding="utf-8")
         return parse_scenario(tomllib.loads(raw), source=text, text=raw, strict=strict)
-    if text == "generated" or text.startswith("generated:"):
+    if kind == "generated":
         try:
             parsed = parse_spec(text, "generated scenario")
         except SpecError as exc:
@@ -110,11 +133,6 @@ def load_scenario(spec: str | Path | Scenario, *, strict: bool = False) -> Scena
         )
         return generate_scenario(**params)
     path = Path(text)
-    if path.suffix != ".toml" or not path.is_file():
-        raise ScenarioError(
-            f"unknown scenario {text!r}: expected one of {', '.join(available_scenarios())} "
-            "or the path of an existing .toml file"
-        )
     if path.stat().st_size > MAX_FILE_BYTES:
         raise ScenarioError(f"scenario file {path}: larger than {MAX_FILE_BYTES} bytes")
     try:

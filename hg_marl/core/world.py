@@ -22,17 +22,17 @@ from hg_marl.core.types import AGENT_NAMES, Action, Agent, Event, Kind, Outcome,
 
 CACHE_BYTES = 64 << 20
 """Memory each of a world's four memo tables (transitions, facts, two masks) may hold
-before it is cleared: about 256 MB in all, whatever the scenario's size. A cap counted in
-entries alone let a 12-object layout's tables grow to some 1.9 GB."""
+before it is cleared, whatever the scenario's size: a cap counted in entries alone lets a
+large layout's tables outgrow the machine (the figures: ``docs/benchmarks.md``, memo tables)."""
 
 
 def cache_entries(n_objects: int, n_facts: int, n_actions: int) -> int:
-    """How many entries fit :data:`CACHE_BYTES`, from an entry's measured size.
+    """How many entries fit :data:`CACHE_BYTES`, from an upper estimate of an entry's size.
 
-    An entry costs about 256 bytes of dict slot, key and array header, plus its payload
-    (the fact or mask bytes, or an outcome's next state, some 16 bytes per object);
-    measured with ``tracemalloc`` on a 12-object generated layout (about 340 bytes per entry
-    on average across the four tables, below this estimate's 750).
+    An entry is a dict slot, a key and an array header (the constant term) plus its payload
+    (the fact or mask bytes, or an outcome's next state, 16 bytes per object). The estimate
+    is above the size ``tracemalloc`` finds (``docs/benchmarks.md``, memo tables), so the
+    tables stay under the cap.
     """
     return max(1_000, CACHE_BYTES // (256 + n_facts + n_actions + 16 * n_objects))
 

@@ -1,6 +1,6 @@
 """The oracle as it was before the array builder: one Python state at a time (the tests' reference).
 
-The model is enumerated by ``agents/oracle.py``'s ``_Model`` (the Python enumeration kept
+The model is enumerated by ``agents/oracle.py``'s ``PythonModel`` (the Python enumeration kept
 as the reference) and solved by the same value iteration written with ``np.bincount``
 over flat transition lists. The array builder and the sparse solver must agree with it:
 same states, same transitions, rates to 1e-9.
@@ -14,8 +14,10 @@ from typing import Any
 
 import numpy as np
 
+from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.layouts import canonical_layouts, layout_distribution
-from hg_marl.agents.oracle import HOUR, _certain_states, _human_policy, _Model
+from hg_marl.agents.models.python_model import PythonModel, certain_states
+from hg_marl.agents.oracle import HOUR
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.core import Agent, State, World
 
@@ -39,14 +41,14 @@ def reference_oracle(
     world: World, human: Any, *, failed_actions: bool = True, symmetry: bool | None = None, max_states: int = 400_000
 ) -> Reference:
     """The pre-array oracle on ``world`` against ``human`` (a spec or a stationary instance)."""
-    policy_human = _human_policy(human, world)
+    policy_human = stationary_human(human, world)
     relabel: Relabel | None = Relabel(world)
     if symmetry is None:
         symmetry = bool(getattr(policy_human, "equivariant", False))
     if not (symmetry and relabel is not None and relabel.active):
         relabel = None
     layouts = layout_distribution(world) if relabel is None else canonical_layouts(world)
-    model = _Model(world, policy_human, failed_actions, max_states, False, relabel)
+    model = PythonModel(world, policy_human, failed_actions, max_states, False, relabel)
     wait = world.durations.wait
     wait_index = world.n_actions(Agent.ROBOT) - 1
     regen: list[tuple[State, float, float]] = []
@@ -60,7 +62,7 @@ def reference_oracle(
     t_prob, t_tau = np.array(model.t_prob), np.array(model.t_tau)
     n_pairs = len(terminal)
     cost = np.bincount(t_pair, weights=t_prob * t_tau, minlength=n_pairs)
-    alive, ok = _certain_states(n, pair_state, terminal, t_pair, t_next)
+    alive, ok = certain_states(n, pair_state, terminal, t_pair, t_next)
     starts = np.array(model.pair_start, dtype=np.int64)
     values = np.zeros(n)
     if alive.any():

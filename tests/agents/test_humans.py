@@ -17,7 +17,8 @@ from hg_marl.agents.humans import (
     save_learned_policy,
 )
 from hg_marl.agents.humans.switching import SwitchingHuman
-from hg_marl.agents.oracle import _Model, layout_distribution
+from hg_marl.agents.models.python_model import PythonModel
+from hg_marl.agents.oracle import layout_distribution
 from hg_marl.agents.robots import make_robot
 from hg_marl.agents.views import RobotView
 from hg_marl.core import Action, Agent, Kind, State, World
@@ -38,7 +39,7 @@ def kinds(world: World, dist: list[tuple[int, float]]) -> set[Kind]:
 
 def many_states(world: World) -> list[State]:
     """Every robot-turn and mid-cycle state a random robot and random human can reach."""
-    model = _Model(world, make_human("random"), failed_actions=False, max_states=50_000)
+    model = PythonModel(world, make_human("random"), failed_actions=False, max_states=50_000)
     model.build([s for s, _ in layout_distribution(world)])
     mids = [
         world.apply(s, Agent.ROBOT, world.actions(Agent.ROBOT)[a]).state

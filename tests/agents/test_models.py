@@ -16,8 +16,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from hg_marl.agents.models import AnswerTable, Budget, StatePacker, build_model, solve
+from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.layouts import canonical_layouts, layout_distribution
-from hg_marl.agents.oracle import _human_policy, oracle_rate
+from hg_marl.agents.oracle import oracle_rate
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.core import State, World
 from hg_marl.envs.batched import BatchState
@@ -28,7 +29,7 @@ HUMANS = ("cooperative", "lazy", "random", "no_handover", "noisy", "adversarial"
 
 
 def array_model(world: World, human: Any, symmetry: bool | None = None) -> tuple[Any, bool]:
-    live = _human_policy(human, world)
+    live = stationary_human(human, world)
     canonical = bool(getattr(live, "equivariant", False)) if symmetry is None else symmetry
     canonical = canonical and Relabel(world).active
     layouts = canonical_layouts(world) if canonical else layout_distribution(world)
@@ -167,9 +168,9 @@ def test_the_headroom_joint_model_on_arrays_is_the_python_joint_model(scenario: 
 
     world = World(scenario)
     specs = ["cooperative", "lazy", "no_handover", "random", "preference:handover=-1,shared=1"]
-    reference = JointModel(world, [_human_policy(h, world) for h in specs])
+    reference = JointModel(world, [stationary_human(h, world) for h in specs])
     packer = StatePacker(world)
-    tables = [AnswerTable(world, _human_policy(h, world), packer) for h in specs]
+    tables = [AnswerTable(world, stationary_human(h, world), packer) for h in specs]
     arrays = JointModel.from_model(world, build_model(world, tables, layouts_of(world)))
     assert arrays.n == reference.n and arrays.n_pairs == reference.n_pairs
     for i in range(len(specs)):
@@ -243,7 +244,7 @@ def test_array_answers_are_the_live_humans_answers(scenario: str) -> None:
     b = BatchState.of(states)
     members = [m.spec for m in load_population("populations/roboergosum.toml").members()]
     for spec in [*PREFERENCES, *members]:
-        live = _human_policy(spec, world)
+        live = stationary_human(spec, world)
         batch = batch_answers(world, live)
         assert batch is not None, spec
         sizes, actions, probs = batch(b)
@@ -259,5 +260,5 @@ def test_a_softmax_preference_is_answered_live() -> None:
     from hg_marl.agents.models.partners import batch_answers
 
     world = World("paper2015")
-    assert batch_answers(world, _human_policy("preference:temperature=0.5", world)) is None
-    assert batch_answers(world, _human_policy("random:feasible_only=false", world)) is None
+    assert batch_answers(world, stationary_human("preference:temperature=0.5", world)) is None
+    assert batch_answers(world, stationary_human("random:feasible_only=false", world)) is None

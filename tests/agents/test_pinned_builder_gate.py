@@ -12,8 +12,8 @@ import itertools
 from typing import Any
 
 from hg_marl.agents.models import AnswerTable, Budget, StatePacker, build_model
+from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.layouts import layout_distribution
-from hg_marl.agents.oracle import _human_policy
 from hg_marl.core import World
 
 
@@ -34,7 +34,7 @@ class SpyBudget(Budget):
 def test_exploration_batches_double_from_64_states() -> None:
     world = World("paper2015")
     budget = SpyBudget()
-    table = AnswerTable(world, _human_policy("cooperative", world), StatePacker(world), budget)
+    table = AnswerTable(world, stationary_human("cooperative", world), StatePacker(world), budget)
     build_model(world, [table], layout_distribution(world), budget=budget)
     readings = budget.explored[1:]  # the first one comes before the loop
     assert readings[0][0] == 0 and len(readings) >= 4

@@ -534,15 +534,15 @@ def test_plain_sb3_algorithms_train_on_the_batched_vec_env(algo: str) -> None:
 
 def test_a_spec_naming_a_file_is_keyed_by_the_files_content(tmp_path) -> None:  # type: ignore[no-untyped-def]
     from hg_marl.agents.compiled import cache_key
+    from hg_marl.agents.humans.learned import save_learned_policy
 
-    policy = tmp_path / "policy"
-    policy.mkdir()
-    (policy / "policy.json").write_text("{}")
     world = world_of("paper2015")
+    weights = np.zeros((world.n_actions(Agent.HUMAN), world.n_facts))
+    policy = save_learned_policy(tmp_path / "policy", world, weights=weights)
     spec = f"learned:path={policy}"
     first = cache_key(world, spec)
     assert cache_key(world, spec) == first
-    (policy / "policy.json").write_text('{"retrained": true}')
+    save_learned_policy(policy, world, weights=weights + 1.0)  # retrained into the same folder
     assert cache_key(world, spec) != first
 
 

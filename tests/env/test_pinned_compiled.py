@@ -2,14 +2,13 @@
 
 A compiled table is reused only when everything that made it is unchanged: the scenario,
 the durations, the partner's spec (and the files a ``path=`` names), a switching
-closure, the stall rule's ``K`` for the robot, and the source of every module that can
-change an answer. The code part is checked on a copy of those sources (the modules'
-``__file__`` pointed at it), so one file at a time can be edited.
+closure, the stall rule's ``K`` for the robot, and the code of every module that can
+change an answer. The code part is checked on a copy of the sources
+(``tests/source_copy.py``), so one file at a time can be edited.
 """
 
 from __future__ import annotations
 
-import shutil
 from dataclasses import replace
 from pathlib import Path
 
@@ -17,20 +16,23 @@ import numpy as np
 import pytest
 
 from hg_marl.agents import compiled, compiled_robot
-from hg_marl.agents.compiled import Packer, cache_key, compile_human, source_digest
+from hg_marl.agents.compiled import Packer, cache_key, compile_human
 from hg_marl.agents.compiled_robot import CompiledRobot, compile_robot, robot_cache_key
+from hg_marl.agents.humans.learned import save_learned_policy
 from hg_marl.core import Agent, World
 from hg_marl.envs.batched import BatchState
+from tests.source_copy import copy_sources, edit_code, edit_docs, write
 
-REPO = Path(__file__).resolve().parents[2]
 COVERED = [
     "hg_marl/core/world.py",
-    "agents/humans/lazy.py",
     "agents/planner/costs.py",
     "agents/compiled.py",
     "agents/oracle.py",
+    "agents/content.py",
 ]
-"""One file of each source the human tables are keyed by."""
+"""One file of each source both tables are keyed by (the import walk reaches them from both)."""
+HUMAN_OWN = ["agents/humans/lazy.py", "agents/humans/cooperative.py"]
+"""Sources of the human tables alone: the robot's table (the planner's proposals) never runs a human."""
 ROBOT_OWN = ["agents/compiled_robot.py", "agents/robots/planner.py", "agents/robots/base.py", "agents/partner.py"]
 """The robot table's own sources (beside the human tables' ones)."""
 
@@ -42,27 +44,16 @@ def world() -> World:
 
 @pytest.fixture()
 def sources(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    """A copy of the keyed sources; both modules read their code from it."""
-    root = tmp_path / "src"
-    for rel in ("hg_marl/core", "agents/humans", "agents/planner"):
-        shutil.copytree(REPO / rel, root / rel, ignore=shutil.ignore_patterns("__pycache__"))
-    for rel in ("agents/compiled.py", "agents/oracle.py", *ROBOT_OWN):
-        (root / rel).parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(REPO / rel, root / rel)
+    """A copy of the sources; the content keys read the code from it."""
+    root = copy_sources(tmp_path / "src", monkeypatch)
     (root / "agents/unrelated.py").write_text("x = 1\n")
-    monkeypatch.setattr(compiled, "__file__", str(root / "agents/compiled.py"))
-    monkeypatch.setattr(compiled_robot, "__file__", str(root / "agents/compiled_robot.py"))
     return root
-
-
-def _touch(path: Path) -> None:
-    path.write_text(path.read_text() + "\n# edited\n")
 
 
 @pytest.mark.parametrize("rel", COVERED)
 def test_an_edited_source_changes_both_keys(sources: Path, world: World, rel: str) -> None:
     human, robot = cache_key(world, "lazy"), robot_cache_key(world, "planner", 4)
-    _touch(sources / rel)
+    edit_code(sources / rel)
     assert cache_key(world, "lazy") != human
     assert robot_cache_key(world, "planner", 4) != robot
 
@@ -70,25 +61,35 @@ def test_an_edited_source_changes_both_keys(sources: Path, world: World, rel: st
 @pytest.mark.parametrize("rel", ROBOT_OWN[1:])
 def test_the_robots_own_sources_change_its_key_only(sources: Path, world: World, rel: str) -> None:
     human, robot = cache_key(world, "lazy"), robot_cache_key(world, "planner", 4)
-    _touch(sources / rel)
+    edit_code(sources / rel)
     assert robot_cache_key(world, "planner", 4) != robot
     assert cache_key(world, "lazy") == human  # a planner robot's source cannot change a human's answers
 
 
+@pytest.mark.parametrize("rel", HUMAN_OWN)
+def test_the_humans_sources_change_their_key_only(sources: Path, world: World, rel: str) -> None:
+    human, robot = cache_key(world, "lazy"), robot_cache_key(world, "planner", 4)
+    edit_code(sources / rel)
+    assert cache_key(world, "lazy") != human
+    assert robot_cache_key(world, "planner", 4) == robot
+
+
 def test_a_file_outside_the_sources_changes_no_key(sources: Path, world: World) -> None:
     human, robot = cache_key(world, "lazy"), robot_cache_key(world, "planner", 4)
-    _touch(sources / "agents/unrelated.py")
+    edit_code(sources / "agents/unrelated.py")
     assert (cache_key(world, "lazy"), robot_cache_key(world, "planner", 4)) == (human, robot)
 
 
-def test_a_new_or_renamed_file_in_a_keyed_folder_changes_the_digest(sources: Path) -> None:
-    before = source_digest(sources)
-    (sources / "hg_marl/core/extra.py").write_text("")
-    added = source_digest(sources)
-    assert added != before
-    (sources / "hg_marl/core/extra.py").rename(sources / "hg_marl/core/other.py")
-    assert source_digest(sources) not in (before, added)
-    assert source_digest() == source_digest(sources)  # the default root is the modules' own
+def test_a_comment_changes_no_key_and_a_new_import_brings_its_module_in(sources: Path, world: World) -> None:
+    human, robot = cache_key(world, "lazy"), robot_cache_key(world, "planner", 4)
+    edit_docs(sources / "agents/compiled.py")
+    assert (cache_key(world, "lazy"), robot_cache_key(world, "planner", 4)) == (human, robot)
+    lazy = sources / "agents/humans/lazy.py"
+    write(lazy, lazy.read_text() + "\nfrom hg_marl.agents import unrelated  # noqa\n")
+    imported = cache_key(world, "lazy")
+    assert imported != human
+    edit_code(sources / "agents/unrelated.py")  # now reached from a keyed module
+    assert cache_key(world, "lazy") != imported
 
 
 def test_keys_cover_scenario_durations_spec_and_closure(world: World) -> None:
@@ -117,21 +118,24 @@ def test_robot_keys_cover_scenario_durations_spec_and_the_stall_rule(world: Worl
     assert len({base, *others}) == 5 and robot_cache_key(world, "planner", 4) == base
 
 
-def test_every_file_a_path_names_is_keyed(world: World, tmp_path: Path) -> None:
-    folder = tmp_path / "policy"
-    (folder / "sub").mkdir(parents=True)
-    (folder / "a.json").write_text("{}")
-    (folder / "sub" / "b.npz").write_bytes(b"1")
+def test_the_files_a_path_names_are_keyed(world: World, tmp_path: Path) -> None:
+    """What the loader reads (the header and the weights it names) is keyed; another file is not."""
+    weights = np.zeros((world.n_actions(Agent.HUMAN), world.n_facts))
+    folder = save_learned_policy(tmp_path / "policy", world, weights=weights)
     spec = f"learned:path={folder}"
     first = cache_key(world, spec)
-    (folder / "sub" / "b.npz").write_bytes(b"2")  # a file below the folder's top
+    (folder / "notes.txt").write_text("read by nobody")
+    assert cache_key(world, spec) == first
+    npz = folder / "policy.npz"
+    npz.write_bytes(npz.read_bytes() + b"\0")  # the weights file the header names
     second = cache_key(world, spec)
-    (folder / "c.json").write_text("{}")  # a new file
+    header = folder / "policy.json"
+    header.write_text(header.read_text() + " ")
     third = cache_key(world, spec)
     assert len({first, second, third}) == 3
     # a closure member naming a file is keyed by its content too
     closure_key = cache_key(world, "lazy", (spec,))
-    (folder / "a.json").write_text('{"x": 1}')
+    npz.write_bytes(npz.read_bytes() + b"\0")
     assert cache_key(world, "lazy", (spec,)) != closure_key
 
 

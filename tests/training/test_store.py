@@ -16,8 +16,8 @@ from pathlib import Path
 import pytest
 
 import hg_marl
+from hg_marl.agents import content
 from hg_marl.agents.meta.cost import CostModel
-from hg_marl.training import store as store_module
 from hg_marl.training.store import Job, Store, StoredRun
 from hg_marl.training.sweep import run_jobs
 
@@ -68,7 +68,7 @@ def test_key_changes_with_version_and_code(monkeypatch: pytest.MonkeyPatch) -> N
     monkeypatch.setattr(hg_marl, "__version__", "9.9.9")
     assert BASE.key() != before
     monkeypatch.undo()
-    monkeypatch.setattr(store_module, "code_fingerprint", lambda: "0" * 64)
+    monkeypatch.setattr(content, "code_digest", lambda roots: "0" * 64)
     assert BASE.key() != before
 
 

@@ -2,7 +2,7 @@
 
 - files a spec names (a learned human's folder, a replay trace, an SB3 model's header
   and weights, a file named inside a nested spec) are keyed by content;
-- the code fingerprint covers the modules a run imports (found by a static import walk);
+- the code digest covers the modules a run imports (found by a static import walk);
 - a tampered, non-finite or incomplete entry is reported in one warning line and re-run;
 - worker counts and Ray addresses are checked before anything starts.
 """
@@ -17,14 +17,15 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from hg_marl.agents import content
 from hg_marl.agents.humans.learned import save_learned_policy
 from hg_marl.core import Agent, World
 from hg_marl.core.errors import ConfigError
-from hg_marl.training import provenance
 from hg_marl.training.backends import make_backend, max_workers
-from hg_marl.training.store import Job, Store, content_key, seal
+from hg_marl.training.store import Job, Store, code_roots, content_key, seal
 from hg_marl.training.sweep import run_jobs
 from tests.cli_helpers import error_lines, run_main
+from tests.source_copy import copy_sources, write
 
 SHORT = 60.0
 PAPER = World("paper2015")
@@ -111,10 +112,10 @@ def test_a_cached_oracle_of_a_learned_human_is_keyed_by_its_policy(tmp_path: Pat
 # -- code ---------------------------------------------------------------------------------------
 
 
-def test_the_fingerprint_covers_what_plays_a_run_and_not_the_reporting() -> None:
+def test_the_code_digest_covers_what_plays_a_run_and_not_the_reporting() -> None:
     from hg_marl.agents.humans.registry import HUMANS
 
-    modules, outside = provenance.code_modules()
+    modules, outside = content.code_modules(code_roots())
     for name in (
         "hg_marl.training.backends",  # builds the actors (it was outside the old hand list)
         "hg_marl.training.runner",
@@ -131,28 +132,22 @@ def test_the_fingerprint_covers_what_plays_a_run_and_not_the_reporting() -> None
 def test_a_changed_module_changes_every_key_but_a_docstring_does_not(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    modules, outside = provenance.code_modules()
-    copy = tmp_path / "backends.py"
-    source = modules["hg_marl.training.backends"].read_text()
-    copy.write_text(source)
     base = Job(robot="planner", seed=0, duration=SHORT)
+    real = base.key()
+    sources = copy_sources(tmp_path / "src", monkeypatch)
+    backends = sources / "training/backends.py"
+    source = backends.read_text()
 
     def key_with(text: str) -> str:
-        copy.write_text(text)
-        monkeypatch.setattr(
-            provenance, "code_modules", lambda: ({**modules, "hg_marl.training.backends": copy}, outside)
-        )
-        provenance.code_fingerprint.cache_clear()
+        write(backends, text)
         return base.key()
 
-    try:
-        same = key_with(source)
-        assert key_with(source.replace('"""Where runs execute', '"""Where the runs execute', 1)) == same
-        assert key_with(source + "\n# a comment\n") == same
-        assert key_with(source.replace("max_retries=2", "max_retries=3")) != same
-    finally:
-        monkeypatch.undo()
-        provenance.code_fingerprint.cache_clear()
+    same = key_with(source)
+    assert same == real  # the copy is the checkout's code
+    assert key_with(source.replace('"""Where runs execute', '"""Where the runs execute', 1)) == same
+    assert key_with(source + "\n# a comment\n") == same
+    assert key_with(source.replace("max_retries=2", "max_retries=3")) != same
+    monkeypatch.undo()
     assert base.key() == same  # back to the real sources
 
 

@@ -26,13 +26,14 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from hg_marl.agents.content import scenario_content
 from hg_marl.training.baselines.callbacks import RateCurve
 from hg_marl.training.baselines.comparison import BASELINE_ROBOTS, CompareConfig, aggregates, summarise
 from hg_marl.training.baselines.envs import EnvSpec
 from hg_marl.training.baselines.evaluation import actor_rate, runner_rate
 from hg_marl.training.baselines.train import TrainConfig, train
 from hg_marl.training.io import write_json
-from hg_marl.training.store import content_key, scenario_content
+from hg_marl.training.store import content_key
 from hg_marl.training.sweep import store_of
 
 log = logging.getLogger(__name__)

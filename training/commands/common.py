@@ -75,7 +75,7 @@ def check_out_dir(path: Path, option: str) -> Path:
 
 
 MAX_WORKERS = max(64, 4 * (os.cpu_count() or 1))
-"""Most worker processes accepted (each costs a Python process, some 100 MB)."""
+"""Most worker processes accepted (each costs a Python process: ``docs/inputs.md``)."""
 
 
 def check_workers(value: int, option: str = "--workers") -> int:

@@ -30,7 +30,13 @@ Seat = Annotated[str, typer.Option(help="robot (against humans) or human (agains
 Human = Annotated[
     str, typer.Option(help="Robot seat: human(s) to train against; a comma list is a population drawn per episode.")
 ]
-Robot = Annotated[str, typer.Option(help="Human seat: the fixed robot(s) (comma list).")]
+Robot = Annotated[
+    str,
+    typer.Option(
+        help="Human seat: the fixed robot(s) (comma list), live, one per env: the robots runs and studies play "
+        "(the batched human seat, HumanTableCleaning-v0's vector entry point, compiles the planner instead)."
+    ),
+]
 EffortWeight = Annotated[float, typer.Option(help="Human seat: reward minus this x seconds of work.")]
 ScenarioOpt = Annotated[str, typer.Option(help="paper2015, roboergosum, generated:..., or a .toml.")]
 Steps = Annotated[int | None, typer.Option(help="Total environment steps (default: the YAML's).")]
@@ -274,6 +280,10 @@ def train_sb3(
             verbose=verbose,
         )
     )
+    if seat == "human":
+        typer.echo(
+            f"human seat: training against live {partners} robot(s), one per env (the robots runs and studies play)"
+        )
     result = checked(lambda: train(config))
     if result.interrupted:
         typer.echo(f"interrupted at {result.num_timesteps} steps; checkpoint {result.path}")
