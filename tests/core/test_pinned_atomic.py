@@ -106,3 +106,36 @@ def test_no_room_for_the_temporary_file_is_one_line(tmp_path: Path, monkeypatch)
     with pytest.raises(OutputError, match=rf"^cannot write {target}: {os.strerror(errno.ENOSPC)}$"):
         atomic_write(target, lambda tmp: tmp.write_text("x"))
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("failure", [OSError(errno.ENOSPC, "No space left on device"), KeyboardInterrupt()])
+def test_a_writer_that_removed_its_temporary_file_keeps_its_own_error(tmp_path: Path, failure: BaseException) -> None:
+    """A writer (a library that cleans up after itself) may delete the file before failing:
+    the caller still sees that failure (one ``OutputError`` line, or the interrupt), not a
+    ``FileNotFoundError`` from the clean-up."""
+
+    def fail(tmp: Path) -> None:
+        tmp.write_text("half")
+        tmp.unlink()
+        raise failure
+
+    expected = OutputError if isinstance(failure, OSError) else KeyboardInterrupt
+    with pytest.raises(expected):
+        atomic_write(tmp_path / "out.bin", fail)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_folder_that_cannot_be_opened_for_its_sync_still_gets_the_file(tmp_path: Path, monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    """Where a folder cannot be opened (some systems and file systems refuse it), syncing
+    its entry is skipped: the file is in place all the same."""
+    real_open = os.open
+
+    def no_folders(path: object, flags: int, *args: object) -> int:
+        if Path(str(path)).is_dir():
+            raise PermissionError(errno.EACCES, "folders cannot be opened here", str(path))
+        return real_open(path, flags, *args)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(os, "open", no_folders)
+    target = tmp_path / "out.txt"
+    assert atomic_write(target, lambda tmp: tmp.write_text("whole")) == target
+    assert target.read_text() == "whole" and [p.name for p in tmp_path.iterdir()] == ["out.txt"]

@@ -10,9 +10,12 @@ from __future__ import annotations
 
 import gzip
 import json
+import runpy
+import warnings
 from pathlib import Path
 
 import pandas as pd
+import pytest
 
 from hg_marl.training.stalls import STALL_SECONDS, longest_gap, report, runs_of
 
@@ -122,3 +125,19 @@ def test_the_longest_stretch_is_the_worst_run_and_short_ones_are_not_stalls(tmp_
     planner = [ln for ln in report(out).splitlines() if ln.startswith("| planner |")]
     # runs 2, stalls 1 (the 600 s one), worst 600 s (seed 1), guard moves (3 + 1) / 2
     assert planner == ["| planner | 2 | 1 | 600 (picky:k=2, paper, seed 1) | 2.0 |"]
+
+
+def test_the_module_run_as_a_script_prints_the_report_or_its_usage(tmp_path: Path, monkeypatch, capsys) -> None:  # type: ignore[no-untyped-def]
+    out = _study(tmp_path / "study")
+    monkeypatch.setattr("sys.argv", ["stalls", str(out)])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # the module is already imported by this file
+        runpy.run_module("hg_marl.training.stalls", run_name="__main__")
+    assert capsys.readouterr().out == report(out) + "\n"
+    for argv in (["stalls", str(tmp_path)], ["stalls"], ["stalls", str(out), "extra"]):
+        monkeypatch.setattr("sys.argv", argv)
+        with warnings.catch_warnings(), pytest.raises(SystemExit) as info:
+            warnings.simplefilter("ignore", RuntimeWarning)
+            runpy.run_module("hg_marl.training.stalls", run_name="__main__")
+        assert info.value.code == 2
+        assert capsys.readouterr().out.startswith("usage: python -m hg_marl.training.stalls STUDY_OUT_FOLDER")
