@@ -1,0 +1,56 @@
+"""Scenario files and generated scenarios at their boundaries, values stated by hand.
+
+A generated scenario needs at least one object, as many spots as objects, one robot
+location and one bin; each count at zero is refused on its own (one line naming the
+counts), and the smallest accepted one is one of each.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from hg_marl.core.errors import ScenarioError
+from hg_marl.core.scenario import load_scenario
+
+NEED = "generated scenario: need objects >= 1, spots >= objects, locations >= 1, bins >= 1; got "
+
+
+@pytest.mark.parametrize(
+    ("spec", "got"),
+    [
+        ("generated:objects=0", "objects=0, spots=2, locations=2, bins=1"),
+        ("generated:objects=3,spots=2", "objects=3, spots=2, locations=2, bins=1"),
+        ("generated:locations=0", "objects=4, spots=6, locations=0, bins=1"),
+        ("generated:bins=0", "objects=4, spots=6, locations=2, bins=0"),
+    ],
+)
+def test_each_count_below_its_minimum_is_refused_alone(spec: str, got: str) -> None:
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(spec)
+    assert str(info.value) == NEED + got
+
+
+def test_one_of_each_is_the_smallest_generated_scenario() -> None:
+    sc = load_scenario("generated:objects=1,spots=1,locations=1,bins=1")
+    assert (len(sc.objects), len(sc.spots), len(sc.robot_locations), len(sc.bins)) == (1, 1, 1, 1)
+    assert sc.name == "generated:objects=1,spots=1,locations=1,bins=1,human_only=0.3,seed=0"
+
+
+def test_a_robot_spot_is_shared_with_the_human_about_three_times_in_ten() -> None:
+    """With ``human_only=0`` every spot is the robot's, and each is also the human's with
+    probability 0.3 (the generator's rule); over 110 seeded spots the share is within a
+    few standard deviations of 0.3 (sd 0.044), far from all or none, and each bin is the
+    human's with the same probability (20 bins: sd 0.1)."""
+    shared, bins = [], []
+    for seed in range(5):
+        sc = load_scenario(f"generated:objects=20,human_only=0,locations=3,bins=4,seed={seed}")
+        assert all(s.reach.robot_from for s in sc.spots)
+        shared += [s.reach.human for s in sc.spots]
+        bins += [b.reach.human for b in sc.bins]
+    assert len(shared) == 110 and 0.15 < sum(shared) / 110 < 0.45
+    assert len(bins) == 20 and 0.05 < sum(bins) / 20 < 0.75
+
+
+def test_human_only_spots_are_the_humans_alone() -> None:
+    sc = load_scenario("generated:objects=6,human_only=1,seed=2")
+    assert all(s.reach.human and not s.reach.robot_from for s in sc.spots)
