@@ -34,6 +34,13 @@ def test_one_of_each_is_the_smallest_generated_scenario() -> None:
     sc = load_scenario("generated:objects=1,spots=1,locations=1,bins=1")
     assert (len(sc.objects), len(sc.spots), len(sc.robot_locations), len(sc.bins)) == (1, 1, 1, 1)
     assert sc.name == "generated:objects=1,spots=1,locations=1,bins=1,human_only=0.3,seed=0"
+    assert sc.object_colours == ("",) and sc.bins[0].colour == ""  # one bin takes every object: no colours
+
+
+def test_several_bins_share_the_objects_by_colour() -> None:
+    sc = load_scenario("generated:objects=5,bins=2")
+    assert [b.colour for b in sc.bins] == ["c0", "c1"]
+    assert sc.object_colours == ("c0", "c1", "c0", "c1", "c0")
 
 
 def test_a_robot_spot_is_shared_with_the_human_about_three_times_in_ten() -> None:
