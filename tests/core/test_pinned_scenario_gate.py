@@ -61,3 +61,17 @@ def test_a_robot_spot_is_shared_with_the_human_about_three_times_in_ten() -> Non
 def test_human_only_spots_are_the_humans_alone() -> None:
     sc = load_scenario("generated:objects=6,human_only=1,seed=2")
     assert all(s.reach.human and not s.reach.robot_from for s in sc.spots)
+
+
+def test_the_actions_estimate_is_objects_times_spots_plus_five_and_the_rest(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    """3 objects, 5 spots, 2 bins, 2 locations: 3 x (5 + 5) + 2 + 2 + 2 = 36 actions by the
+    documented estimate; a limit of 36 passes it, 35 refuses it naming both numbers."""
+    spec = "generated:objects=3,spots=5,locations=2,bins=2"
+    monkeypatch.setenv("HG_MARL_MAX_ACTIONS", "36")
+    assert len(load_scenario(spec).objects) == 3
+    monkeypatch.setenv("HG_MARL_MAX_ACTIONS", "35")
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(spec)
+    assert str(info.value) == (
+        "scenario generated: 36 actions is over the limit 35 (set HG_MARL_MAX_ACTIONS to raise it)"
+    )
