@@ -7,6 +7,8 @@ counts), and the smallest accepted one is one of each.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from hg_marl.core.errors import ScenarioError
@@ -75,3 +77,30 @@ def test_the_actions_estimate_is_objects_times_spots_plus_five_and_the_rest(monk
     assert str(info.value) == (
         "scenario generated: 36 actions is over the limit 35 (set HG_MARL_MAX_ACTIONS to raise it)"
     )
+
+
+def _paper() -> str:
+    from importlib import resources
+
+    return resources.files("hg_marl.core.scenarios").joinpath("paper2015.toml").read_text()
+
+
+def test_a_missing_key_in_an_array_table_names_that_tables_header_line(tmp_path: Path) -> None:
+    # paper2015.toml: the second [[spots]] header is line 30 (counted in the file); without its
+    # name key the error points at that header
+    text = _paper()
+    assert text.splitlines()[29] == "[[spots]]" and text.splitlines()[30] == 'name = "mat_centre"'
+    path = tmp_path / "s.toml"
+    path.write_text(text.replace('name = "mat_centre"\n', "", 1))
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(path)
+    assert str(info.value) == f"scenario {path}:30: field 'spots[1].name': missing"
+
+
+def test_several_unsolvable_layouts_are_counted_after_the_first(tmp_path: Path) -> None:
+    # no agent reaches the bin: each of paper2015's 3 objects is a problem, the first named, 2 more
+    path = tmp_path / "s.toml"
+    path.write_text(_paper().replace('robot_reach = ["bin_side"]', "robot_reach = []", 1))
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(path, strict=True)
+    assert str(info.value) == f"scenario {path}: no agent reaches a bin for object 'tape1' (and 2 more)"
