@@ -104,3 +104,13 @@ def test_several_unsolvable_layouts_are_counted_after_the_first(tmp_path: Path) 
     with pytest.raises(ScenarioError) as info:
         load_scenario(path, strict=True)
     assert str(info.value) == f"scenario {path}: no agent reaches a bin for object 'tape1' (and 2 more)"
+
+
+def test_a_single_unsolvable_layout_is_named_alone(tmp_path: Path) -> None:
+    path = tmp_path / "s.toml"
+    path.write_text(
+        _paper().replace('name = "mat_left"\nrobot_reach = ["table_left"]', 'name = "mat_left"\nrobot_reach = []')
+    )
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(path, strict=True)
+    assert str(info.value) == f"scenario {path}: no agent reaches spot 'mat_left', where the layout may put an object"
