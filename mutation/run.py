@@ -225,7 +225,7 @@ def _check_layout(scratch: Path, module: Module) -> None:
             dotted = installed.replace("/", ".") + dotted[len(folder) :]
     # import_module, not ``import a.b as m``: a package may re-export a function under its
     # module's name (agents/models/__init__.py: ``from .solve import solve``)
-    code = f"import importlib, pathlib; m = importlib.import_module({dotted!r}); print(pathlib.Path(m.__file__).resolve())"
+    code = f"import importlib, pathlib; print(pathlib.Path(importlib.import_module({dotted!r}).__file__).resolve())"
     proc = subprocess.run([sys.executable, "-c", code], cwd=scratch, env=_env(scratch), capture_output=True, text=True)
     where = Path(proc.stdout.strip() or "?")
     if proc.returncode != 0 or not where.is_relative_to(scratch.resolve()):
