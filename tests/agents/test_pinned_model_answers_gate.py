@@ -15,7 +15,7 @@ import pytest
 
 from hg_marl.agents.humans import make_human
 from hg_marl.agents.models.answers import AnswerTable
-from hg_marl.agents.models.layouts import canonical_layouts, layout_distribution
+from hg_marl.agents.models.layouts import canonical_layout_count, canonical_layouts, layout_distribution
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.core import Agent, World
@@ -54,3 +54,18 @@ def test_canonical_layouts_are_the_full_deal_summed_by_symmetry(scenario: str) -
     for state, p in expected.items():
         assert got[state] == pytest.approx(p, rel=1e-12)
     assert sum(got.values()) == pytest.approx(1.0, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("scenario", "deals"),
+    [
+        # one class of 3 objects, one group drawing 3 of 5 spots: C(5, 3) = 10 spot sets
+        ("generated:objects=3,spots=5,bins=1,seed=2", 10),
+        # paper2015: one class of 3 tapes; 2 onto 3 spots (C(3, 2) = 3), then 1 onto 2 spots (2): 6
+        ("paper2015", 6),
+    ],
+)
+def test_the_canonical_deal_count_by_hand(scenario: str, deals: int) -> None:
+    world = World(scenario)
+    assert canonical_layout_count(world) == deals
+    assert len(canonical_layouts(world)) == deals  # one class: each deal is its own table
