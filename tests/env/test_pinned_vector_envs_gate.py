@@ -6,6 +6,8 @@ ends the episode); the table must report truncation at the 500th step and not be
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -36,3 +38,20 @@ def test_the_default_episode_is_truncated_at_500_cycles(seat: Agent) -> None:
         _, _, terminated, truncated, _ = env.step(wait)
         assert not terminated[0]
         assert bool(truncated[0]) is (step == 500), step
+
+
+@pytest.mark.parametrize("seat", [Agent.ROBOT, Agent.HUMAN])
+@pytest.mark.parametrize("cache", [None, False])
+def test_the_compiled_partner_is_cached_under_hg_marl_cache_by_default(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, cache: bool | None, seat: Agent
+) -> None:
+    """``cache=True`` (the default of both seats) writes the compiled partner (a human, or
+    the planner robot) under ``$HG_MARL_CACHE/partners``; ``cache=False`` writes nothing."""
+    monkeypatch.setenv("HG_MARL_CACHE", str(tmp_path))
+    kwargs = {} if cache is None else {"cache": cache}
+    if seat is Agent.ROBOT:
+        robot_vector_env(num_envs=1, human="lazy:p_idle=0.5", **kwargs)
+    else:
+        human_vector_env(num_envs=1, scenario="generated:objects=2,seed=1", **kwargs)
+    written = [p.relative_to(tmp_path).parts[0] for p in tmp_path.rglob("*") if p.is_file()]
+    assert written == (["partners"] if cache is None else []), written
