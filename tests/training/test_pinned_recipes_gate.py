@@ -43,3 +43,7 @@ def test_the_eps_table_grows_to_the_highest_row_reset() -> None:
     partner.reset_rows(np.array([4, 1]), rng)
     assert len(partner.eps) == 5
     assert set(partner.eps[[1, 4]].tolist()) <= {0.0, 0.3, 0.6}
+    partner.reset_rows(np.array([6]), rng)  # grown again: by two rows, to the highest row reset
+    assert len(partner.eps) == 7
+    partner.reset_rows(np.array([3]), rng)  # a row it has: no growth
+    assert len(partner.eps) == 7
