@@ -55,3 +55,8 @@ def test_the_compiled_partner_is_cached_under_hg_marl_cache_by_default(
         human_vector_env(num_envs=1, scenario="generated:objects=2,seed=1", **kwargs)
     written = [p.relative_to(tmp_path).parts[0] for p in tmp_path.rglob("*") if p.is_file()]
     assert written == (["partners"] if cache is None else []), written
+
+
+def test_one_table_by_default() -> None:
+    assert robot_vector_env(human="lazy").num_envs == 1
+    assert human_vector_env(robot=Waiter()).num_envs == 1

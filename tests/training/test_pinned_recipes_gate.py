@@ -47,3 +47,23 @@ def test_the_eps_table_grows_to_the_highest_row_reset() -> None:
     assert len(partner.eps) == 7
     partner.reset_rows(np.array([3]), rng)  # a row it has: no growth
     assert len(partner.eps) == 7
+
+
+def test_every_training_member_is_in_the_partner_and_one_is_itself() -> None:
+    world = World("paper2015")
+    both = recipe_partner(world, ("cooperative", "lazy"), "members", cache=None)
+    assert [m.name for m in both.members] == ["cooperative", "lazy"]
+    one = recipe_partner(world, ("lazy",), "members", cache=None)
+    assert one.name == "lazy" and not hasattr(one, "members")
+
+
+class _Bare:
+    """An inner partner without a fallback count."""
+
+    name = "bare"
+
+
+def test_a_partner_without_fallbacks_counts_none() -> None:
+    world = World("paper2015")
+    assert NoisyPartner(world, _Bare(), (0.3,)).fallbacks == 0
+    assert CoveragePartner(world, _Bare()).fallbacks == 0
