@@ -114,3 +114,22 @@ def test_a_single_unsolvable_layout_is_named_alone(tmp_path: Path) -> None:
     with pytest.raises(ScenarioError) as info:
         load_scenario(path, strict=True)
     assert str(info.value) == f"scenario {path}: no agent reaches spot 'mat_left', where the layout may put an object"
+
+
+@pytest.mark.parametrize(
+    ("name", "limit", "spec"),
+    [
+        ("objects", 40, "generated:objects={n},spots=41"),
+        ("spots", 120, "generated:objects=1,spots={n}"),
+        ("bins", 16, "generated:objects=1,bins={n}"),
+        ("locations", 32, "generated:objects=1,locations={n}"),
+    ],
+)
+def test_each_documented_size_limit_is_accepted_and_one_more_refused(name: str, limit: int, spec: str) -> None:
+    # docs/inputs.md: 40 objects, 120 spots, 16 bins, 32 robot locations
+    assert load_scenario(spec.format(n=limit)) is not None
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(spec.format(n=limit + 1))
+    assert f"{limit + 1} {name} is over the limit {limit} (set HG_MARL_MAX_{name.upper()} to raise it)" in str(
+        info.value
+    )
