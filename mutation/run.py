@@ -223,7 +223,9 @@ def _check_layout(scratch: Path, module: Module) -> None:
     for folder, installed in PACKAGE_DIRS.items():
         if dotted.startswith(folder + "."):
             dotted = installed.replace("/", ".") + dotted[len(folder) :]
-    code = f"import {dotted} as m, pathlib; print(pathlib.Path(m.__file__).resolve())"
+    # import_module, not ``import a.b as m``: a package may re-export a function under its
+    # module's name (agents/models/__init__.py: ``from .solve import solve``)
+    code = f"import importlib, pathlib; print(pathlib.Path(importlib.import_module({dotted!r}).__file__).resolve())"
     proc = subprocess.run([sys.executable, "-c", code], cwd=scratch, env=_env(scratch), capture_output=True, text=True)
     where = Path(proc.stdout.strip() or "?")
     if proc.returncode != 0 or not where.is_relative_to(scratch.resolve()):
@@ -433,7 +435,12 @@ def main(argv: list[str] | None = None) -> int:
                 )
                 for m in selected
             ]
-            outcomes = [f.result() for f in futures]
+            outcomes = []
+            for m, f in zip(selected, futures, strict=True):
+                try:
+                    outcomes.append(f.result())
+                except Exception as exc:  # one module's failure is reported, not the end of the stage
+                    outcomes.append(Outcome(m.key, m.path, error=f"{type(exc).__name__}: {exc}"))
     finally:
         if args.keep:
             print(f"scratch copies kept in {work}")

@@ -80,3 +80,12 @@ def test_annotation_mutants_are_left_out_of_the_sample_but_code_mutants_are_not(
     # an entry that names the mutated text cannot judge a line before the mutant exists
     by_text = mutation.Equivalent("store", "why", removed="x = 1", added="x = 2")
     assert by_text.matches("store", "any", "x = 1", "x = 2") and not by_text.judges_line("store", "any", "x = 1")
+
+
+def test_a_module_its_package_shadows_is_found_in_the_scratch_copy(mutation, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    """``agents/models/__init__.py`` re-exports the function ``solve`` under the name of
+    its module: the layout check must still find the module file in the scratch copy."""
+    modules, _ = mutation.load_modules()
+    scratch = mutation.scratch_copy(tmp_path / "copy")
+    mutation._check_layout(scratch, modules["model_solve"])  # raises when the copy is not imported
+    mutation._check_layout(scratch, modules["world"])

@@ -1,0 +1,71 @@
+"""The answer table asks the live human once per key (work counted, not timed), and the
+canonical layouts are the full deal summed over interchangeable objects.
+
+The first reference is a count: ``live_calls`` after asking for keys already answered
+does not grow, and a mix of known and new keys asks only the new ones. The second is a
+plain enumeration: every deal ``World.initial_state`` can make (``layout_distribution``)
+mapped through ``Relabel.canonical`` and summed, on scenarios whose layout groups draw
+fewer objects than they have spots (where ``(m - c)!`` is not 1).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from hg_marl.agents.humans import make_human
+from hg_marl.agents.models.answers import AnswerTable
+from hg_marl.agents.models.layouts import canonical_layout_count, canonical_layouts, layout_distribution
+from hg_marl.agents.models.packing import StatePacker
+from hg_marl.agents.planner.space import Relabel
+from hg_marl.core import Agent, World
+from hg_marl.envs.batched import BatchState
+
+
+def test_known_keys_are_not_asked_again() -> None:
+    world = World("paper2015")
+    human = make_human("cooperative")
+    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    packer = StatePacker(world)
+    table = AnswerTable(world, human, packer, arrays=False)
+    states = [s for s, _ in layout_distribution(world)][:12]
+    keys = np.unique(packer.pack(BatchState.of(states), np.full(len(states), -1)))
+    table.ensure(keys[:8])
+    assert table.live_calls == 8 and len(table.keys) == 8
+    table.ensure(keys[:8])
+    assert table.live_calls == 8 and len(table.keys) == 8
+    table.ensure(keys)  # 8 known, 4 new
+    assert table.live_calls == 12 and table.keys.tolist() == keys.tolist()
+
+
+@pytest.mark.parametrize(
+    "scenario", ["generated:objects=3,spots=5,bins=1,seed=2", "generated:objects=4,spots=6,bins=2,seed=1"]
+)
+def test_canonical_layouts_are_the_full_deal_summed_by_symmetry(scenario: str) -> None:
+    world = World(scenario)
+    relabel = Relabel(world)
+    assert relabel.active
+    expected: dict[object, float] = {}
+    for state, p in layout_distribution(world):
+        key = relabel.canonical(state)[0]
+        expected[key] = expected.get(key, 0.0) + p
+    got = dict(canonical_layouts(world))
+    assert got.keys() == expected.keys()
+    for state, p in expected.items():
+        assert got[state] == pytest.approx(p, rel=1e-12)
+    assert sum(got.values()) == pytest.approx(1.0, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("scenario", "deals"),
+    [
+        # one class of 3 objects, one group drawing 3 of 5 spots: C(5, 3) = 10 spot sets
+        ("generated:objects=3,spots=5,bins=1,seed=2", 10),
+        # paper2015: one class of 3 tapes; 2 onto 3 spots (C(3, 2) = 3), then 1 onto 2 spots (2): 6
+        ("paper2015", 6),
+    ],
+)
+def test_the_canonical_deal_count_by_hand(scenario: str, deals: int) -> None:
+    world = World(scenario)
+    assert canonical_layout_count(world) == deals
+    assert len(canonical_layouts(world)) == deals  # one class: each deal is its own table

@@ -1,0 +1,39 @@
+"""A malformed spec is the registry's own error, naming the kind and what is wrong.
+
+The spec parser raises ``SpecError``; a registry re-raises it as its area's error type
+(``ConfigError`` here), so a command catches one type per area. Messages are the parser's
+words, stated here by hand.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from hg_marl.core.errors import ConfigError, SpecError
+from hg_marl.core.registry import Registry
+
+
+class Toy:
+    name = "toy"
+
+    def __init__(self, speed: float = 1.5) -> None:
+        self.speed = speed
+
+
+TOYS = Registry("toy", ConfigError, [Toy])
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("toy:speed", "toy 'toy:speed': expected key=value, got 'speed'"),
+        (":speed=1", "toy ':speed=1': missing the name before ':'"),
+        ("toy:speed=1,speed=2", "toy 'toy:speed=1,speed=2': parameter 'speed' given twice"),
+    ],
+)
+def test_a_malformed_spec_is_the_registrys_error(text: str, message: str) -> None:
+    assert not issubclass(ConfigError, SpecError)
+    with pytest.raises(ConfigError) as info:
+        TOYS.make(text)
+    assert str(info.value) == message
+    assert TOYS.make("toy:speed=2").speed == 2.0
