@@ -53,12 +53,13 @@ def main() -> None:
             cpu, wall = time.process_time(), time.perf_counter()
             result = train_recurrent(config)
             cpu, wall = time.process_time() - cpu, time.perf_counter() - wall
-            print(
-                f"num_envs={n:<6} {result.env_steps_per_second:>9,.0f} env steps/s | "
-                f"{result.learner_steps_per_second:>7,.0f} learner steps/s | {result.steps_per_second:>7,.0f} overall | "
-                f"{result.num_timesteps / cpu:>7,.0f} steps per CPU s ({result.num_timesteps} steps, {wall:.0f} s wall, "
-                f"{cpu:.0f} s CPU)"
+            speeds = (
+                f"{result.env_steps_per_second:>9,.0f} env steps/s | {result.learner_steps_per_second:>7,.0f} "
+                f"learner steps/s | {result.steps_per_second:>7,.0f} overall"
             )
+            per_cpu = f"{result.num_timesteps / cpu:>7,.0f} steps per CPU s"
+            size = f"({result.num_timesteps} steps, {wall:.0f} s wall, {cpu:.0f} s CPU)"
+            print(f"num_envs={n:<6} {speeds} | {per_cpu} {size}")
 
 
 if __name__ == "__main__":

@@ -9,9 +9,9 @@ import pytest
 
 pytest.importorskip("torch")
 
-from hg_marl.core import Agent, World  # noqa: E402
-from hg_marl.core.batch import BatchedRules  # noqa: E402
-from hg_marl.training.baselines.recipes import recipe_partner  # noqa: E402
+from hg_marl.core import Agent, World
+from hg_marl.core.batch import BatchedRules
+from hg_marl.training.baselines.recipes import recipe_partner
 
 
 def test_fcp_init_adds_the_first_checkpoint_a_uniformly_random_partner(tmp_path: Path) -> None:
@@ -57,7 +57,8 @@ def test_hsp_partners_are_drawn_apart_from_every_bundled_population(population: 
     assert all(spec.startswith("preference:") for spec in drawn)
     # the bundled populations were drawn from the generator's seed 0: had the recipe drawn
     # from it too, their held-out members would be among its training partners
-    members = {str(m.spec) for m in load_population(Path(__file__).parents[2] / "populations" / f"{population}.toml").members()}
+    path = Path(__file__).parents[2] / "populations" / f"{population}.toml"
+    members = {str(m.spec) for m in load_population(path).members()}
     assert not members & set(drawn)
 
 
