@@ -49,7 +49,6 @@ from typing import Any
 import numpy as np
 
 from hg_marl.core.errors import ConfigError
-from hg_marl.core.scenario import Scenario
 from hg_marl.core.spec import format_spec
 from hg_marl.training.backends import Backend, LocalBackend
 from hg_marl.training.io import atomic_write
@@ -76,7 +75,7 @@ RANDOM_SUBSETS = 200
 """Random subsets drawn for the spread a random choice would give."""
 
 
-def sample_candidates(scenario: str | Scenario, n: int, seed: int) -> list[dict[str, Any]]:
+def sample_candidates(scenario: str, n: int, seed: int) -> list[dict[str, Any]]:
     """``n`` preference-human parameter sets drawn from ``seed`` (values rounded to 0.01)."""
     from hg_marl.core.scenario import load_scenario
 

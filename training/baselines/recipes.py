@@ -150,7 +150,8 @@ def hsp_partners(world: World) -> tuple[str, ...]:
     from hg_marl.core.spec import format_spec
     from hg_marl.training.population_gen import sample_candidates
 
-    return tuple(format_spec("preference", c) for c in sample_candidates(world.scenario, HSP_PARTNERS, HSP_SEED))
+    scenario: Any = world.scenario  # the sampler's load_scenario takes the loaded scenario as it is
+    return tuple(format_spec("preference", c) for c in sample_candidates(scenario, HSP_PARTNERS, HSP_SEED))
 
 
 def recipe_partner(world: World, humans: tuple[str, ...], recipe: str, cache: Any, progress: bool = False) -> Any:
