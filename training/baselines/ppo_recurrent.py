@@ -55,7 +55,7 @@ class RecurrentConfig:
     humans: tuple[str, ...] = ("cooperative",)
     scenario: str = "paper2015"
     recipe: str = "members"
-    """Population recipe (``training/baselines/recipes.py``): members, fcp, e3t or coverage."""
+    """Population recipe (``training/baselines/recipes.py``): members, fcp, fcp_init, hsp, e3t or coverage."""
     memory: str = "gru"
     history: int = 4
     """Cycles of interaction history in the observation (0: facts only)."""

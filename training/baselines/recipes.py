@@ -11,6 +11,17 @@ episode), so a policy with memory has to read who it is playing with.
   member acting uniformly at random among its feasible actions with probability
   ``eps`` in :data:`FCP_LEVELS` (the final, a middle and an early checkpoint), drawn
   per table at reset.
+- ``fcp_init``: ``fcp`` with the first checkpoint as well. FCP's pool holds each partner
+  at the start of its training (a random policy), half way and at the end; ``fcp`` stops
+  at ``eps`` = 0.6, this one adds ``eps`` = 1.0 (:data:`FCP_INIT_LEVELS`): a partner that
+  acts uniformly at random among its feasible actions, so it leaves most of the work
+  undone and the robot also learns to do the partner's share itself.
+- ``hsp``: Hidden-utility Self-Play (Yu et al. 2023) trains with partners that optimise
+  randomly drawn event rewards, so the pool holds habits no one wrote down. Here: the
+  members plus :data:`HSP_PARTNERS` preference humans with weights drawn from
+  :data:`HSP_SEED` by the population generator's sampler
+  (``training/population_gen.sample_candidates``, the same ranges every bundled
+  population was selected from), each table drawing one of the union uniformly at reset.
 - ``e3t``: E3T (Yan et al. 2023) plays against a mixture of a partner policy and a
   uniformly random one; here each member mixed with a random feasible action at a fixed
   ``eps`` = :data:`E3T_EPS`.
@@ -34,10 +45,14 @@ from hg_marl.core import Agent, World
 from hg_marl.core.errors import ConfigError
 from hg_marl.envs.batched import BatchedRules, BatchState
 
-RECIPES = ("members", "fcp", "e3t", "coverage")
+RECIPES = ("members", "fcp", "fcp_init", "hsp", "e3t", "coverage")
 FCP_LEVELS = (0.0, 0.3, 0.6)
+FCP_INIT_LEVELS = (*FCP_LEVELS, 1.0)
 E3T_EPS = 0.3
 COVERAGE_CYCLES = 24
+HSP_PARTNERS = 8
+HSP_SEED = 1
+"""Not 0: the bundled populations were drawn from seed 0, which would put their held-out members among the partners."""
 
 
 def check_recipe(recipe: str) -> str:
@@ -130,14 +145,27 @@ class CoveragePartner:
         return np.asarray(self.inner.act(batch, seen, rng), dtype=np.int64)
 
 
+def hsp_partners(world: World) -> tuple[str, ...]:
+    """The ``hsp`` recipe's drawn partners: :data:`HSP_PARTNERS` preference specs from :data:`HSP_SEED`."""
+    from hg_marl.core.spec import format_spec
+    from hg_marl.training.population_gen import sample_candidates
+
+    scenario: Any = world.scenario  # the sampler's load_scenario takes the loaded scenario as it is
+    return tuple(format_spec("preference", c) for c in sample_candidates(scenario, HSP_PARTNERS, HSP_SEED))
+
+
 def recipe_partner(world: World, humans: tuple[str, ...], recipe: str, cache: Any, progress: bool = False) -> Any:
     """The ``ArrayPartner`` of ``recipe`` over ``humans`` (see the module docstring)."""
     from hg_marl.agents.views import compiled_humans
 
     check_recipe(recipe)
+    if recipe == "hsp":
+        humans = (*humans, *hsp_partners(world))
     members = compiled_humans(world, list(humans) if len(humans) > 1 else humans[0], cache, progress)
     if recipe == "fcp":
         return NoisyPartner(world, members, FCP_LEVELS)
+    if recipe == "fcp_init":
+        return NoisyPartner(world, members, FCP_INIT_LEVELS)
     if recipe == "e3t":
         return NoisyPartner(world, members, (E3T_EPS,))
     if recipe == "coverage":

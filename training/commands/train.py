@@ -60,7 +60,9 @@ BcKind = Annotated[str, typer.Option(help="bc: table or linear_softmax.")]
 Population = Annotated[
     Path | None, typer.Option(help="ppo_batched: a population file; trains against its train members.")
 ]
-Recipe = Annotated[str, typer.Option(help="ppo_recurrent: population recipe: members, fcp, e3t or coverage.")]
+Recipe = Annotated[
+    str, typer.Option(help="ppo_recurrent: population recipe: members, fcp, fcp_init, hsp, e3t or coverage.")
+]
 Tensorboard = Annotated[bool, typer.Option(help="Write TensorBoard logs to OUT/tb.")]
 Progress = Annotated[bool, typer.Option(help="Show a progress bar.")]
 Verbose = Annotated[int, typer.Option(help="SB3 verbosity.")]
