@@ -5,9 +5,10 @@ once. :class:`AnswerTable` keeps them as a compiled partner does (``agents/compi
 sorted packed keys, segment starts, actions and probabilities, looked up with one
 ``searchsorted``, and per entry the answer's outcome (the next robot-turn state's key,
 as is and in canonical labelling, and the answer's duration), stepped once with the
-batched rules when the entry is made. Keys the table lacks are answered by the live
-stationary human, one Python call per distinct key, with a budget reading every
-:data:`CHECK_EVERY` answers: a planner-driven human may spend a search on one answer.
+batched rules when the entry is made. Keys the table lacks are answered on arrays where
+the human's rule allows (``partners.py``), by the live human once per canonical key where
+it is equivariant (``equivariant.py``), else by the live human once per key; a budget is
+read every :data:`CHECK_EVERY` live answers: a planner-driven human may spend a search on one.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.models.budget import Budget
+from hg_marl.agents.models.equivariant import canonical_answers
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.models.partners import batch_answers
 from hg_marl.core import Agent, State, World
@@ -59,6 +61,8 @@ class AnswerTable:
         }
         self.batch = batch_answers(world, human) if arrays else None
         """The human's answers on arrays (``agents/models/partners.py``), None to ask it live."""
+        self.canonical = canonical_answers(world, human, packer) if arrays and self.batch is None else None
+        """An equivariant human asked once per canonical key (``agents/models/equivariant.py``)."""
         self.live_calls = 0
         """Distributions asked of the live human (the rest came from the table)."""
         self.phase = "answers"
@@ -84,6 +88,12 @@ class AnswerTable:
             size, actions, probs_arr = self.batch(states)
             self._store(missing, size, actions, probs_arr)
             return
+        if self.canonical is not None:
+            before = self.canonical.live_calls
+            size, actions, probs_arr = self.canonical(states, seen, self._check)
+            self.live_calls += self.canonical.live_calls - before
+            self._store(missing, size, actions, probs_arr)
+            return
         wheres, ats = states.where.tolist(), states.robot_at.tolist()
         bys, objs, seens = states.offer_by.tolist(), states.offer_obj.tolist(), seen.tolist()
         acts: list[int] = []
@@ -101,6 +111,10 @@ class AnswerTable:
                     sizes[i] += 1
         self.live_calls += len(missing)
         self._store(missing, np.array(sizes, dtype=np.int64), np.array(acts, dtype=np.int64), np.array(probs))
+
+    def _check(self, i: int, total: int) -> None:
+        if self.budget is not None and i % CHECK_EVERY == 0:
+            self.budget.check(self.phase, i, total, "partner answers of this step", memory=i % 4096 == 0)
 
     def _store(self, missing: np.ndarray, size: np.ndarray, actions: np.ndarray, probs: np.ndarray) -> None:
         """Step the answers of ``missing`` once and merge them into the table."""

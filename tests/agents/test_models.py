@@ -261,3 +261,38 @@ def test_a_softmax_preference_is_answered_live() -> None:
     world = World("paper2015")
     assert batch_answers(world, _human_policy("preference:temperature=0.5", world)) is None
     assert batch_answers(world, _human_policy("random:feasible_only=false", world)) is None
+
+
+EQUIVARIANT = ("cooperative", "cooperative:p_idle=0.2", "noisy", "noisy:temperature=0")
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "roboergosum"])
+def test_canonical_answers_are_the_live_humans_answers(scenario: str) -> None:
+    """Asked once per canonical key and mapped back, the answers are the live human's at every state and seen."""
+    from hg_marl.agents.models.equivariant import canonical_answers
+
+    world = World(scenario)
+    states = mid_states(world, 1500 if scenario == "roboergosum" else 3000)
+    b = BatchState.of(states)
+    rng = np.random.default_rng(2)
+    seen = rng.integers(-1, world.n_actions(0), size=len(states))
+    for spec in EQUIVARIANT:
+        table = canonical_answers(world, _human_policy(spec, world), StatePacker(world))
+        assert table is not None, spec
+        sizes, actions, probs = table(b, seen, lambda i, n: None)
+        assert table.live_calls < len(states)  # relabelled states and alike actions share one live answer
+        fresh = _human_policy(spec, world)  # a separate instance: no answer shared through a memo
+        at = 0
+        for i, s in enumerate(states):
+            expected = [(h, p) for h, p in fresh.distribution(world, s, int(seen[i])) if p > 0.0]
+            got = list(zip(actions[at : at + sizes[i]].tolist(), probs[at : at + sizes[i]].tolist(), strict=True))
+            assert got == expected, (spec, s, int(seen[i]))
+            at += sizes[i]
+
+
+def test_a_partner_that_is_not_equivariant_is_not_asked_by_canonical_key() -> None:
+    from hg_marl.agents.models.equivariant import canonical_answers
+
+    world = World("roboergosum")
+    for spec in ("lazy", "no_handover", "adversarial"):
+        assert canonical_answers(world, _human_policy(spec, world), StatePacker(world)) is None
