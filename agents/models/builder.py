@@ -309,12 +309,12 @@ def build_model(
     def starts(counts: list[np.ndarray]) -> np.ndarray:
         return np.concatenate([[0], np.cumsum(cat(counts, np.int64))]).astype(np.int64)
 
-    dynamics = [
+    dynamics = [  # each list is dropped once concatenated: the peak is one field's two copies, not all
         Dynamics(
-            t_start=starts(flow["tcount"]),
-            t_next=cat(flow["next"], np.int64),
-            t_prob=cat(flow["prob"], np.float64),
-            t_tau=cat(flow["tau"], np.float64),
+            t_start=starts(flow.pop("tcount")),
+            t_next=cat(flow.pop("next"), np.int64),
+            t_prob=cat(flow.pop("prob"), np.float64),
+            t_tau=cat(flow.pop("tau"), np.float64),
             regen_next=index.id_of(keys),
             regen_prob=prob,
             regen_tau=tau,

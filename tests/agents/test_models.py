@@ -296,3 +296,61 @@ def test_a_partner_that_is_not_equivariant_is_not_asked_by_canonical_key() -> No
     world = World("roboergosum")
     for spec in ("lazy", "no_handover", "adversarial"):
         assert canonical_answers(world, _human_policy(spec, world), StatePacker(world)) is None
+
+
+def full_chain_rate(model: Any, choice: np.ndarray, i: int) -> float:
+    """A policy's rate on the whole joint model (the evaluation before it was restricted to the states reached)."""
+    import math
+
+    from scipy import sparse
+    from scipy.sparse.linalg import spsolve
+
+    t_pair, t_next, t_prob, t_tau = model.arrays(i)
+    n = model.n
+    chosen = np.zeros(model.n_pairs, dtype=bool)
+    chosen[choice] = True
+    done = model.terminal[choice]
+    keep = chosen[t_pair]
+    rows, cols, probs, taus = model.pair_state[t_pair[keep]], t_next[keep], t_prob[keep], t_tau[keep]
+    graph = sparse.csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(n, n))
+
+    def backward(seeds: np.ndarray) -> np.ndarray:
+        found = seeds.copy()
+        while True:  # grow by one step at a time until nothing changes
+            grown = found | ((graph @ found.astype(float)) > 0)
+            if (grown == found).all():
+                return found
+            found = grown
+
+    certain = ~backward(~backward(done))
+    idx = np.flatnonzero(certain)
+    pos = np.full(n, -1)
+    pos[idx] = np.arange(len(idx))
+    values = np.full(n, math.inf)
+    inner = certain[rows] & certain[cols] & ~done[rows]
+    p = sparse.csr_matrix((probs[inner], (pos[rows[inner]], pos[cols[inner]])), shape=(len(idx), len(idx)))
+    src = certain[rows] & ~done[rows]
+    c = np.bincount(pos[rows[src]], weights=(probs * taus)[src], minlength=len(idx))
+    values[idx] = spsolve((sparse.identity(len(idx), format="csr") - p).tocsc(), c)
+    chain = model.chain(i)
+    expected = math.fsum(p * (t + values[s]) for s, p, t in zip(chain.regen_next, chain.regen_prob, chain.regen_tau))
+    return 0.0 if math.isinf(expected) else 3600.0 / expected
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "forced_coordination"])
+def test_a_policy_rate_on_the_states_it_reaches_is_its_rate_on_the_whole_model(scenario: str) -> None:
+    from hg_marl.agents.headroom import JointModel
+    from hg_marl.agents.models.layouts import layout_distribution as layouts_of
+
+    world = World(scenario)
+    specs = ["cooperative", "lazy:p_idle=0.5", "adversarial", "random", "preference:handover=-1,shared=1"]
+    packer = StatePacker(world)
+    tables = [AnswerTable(world, _human_policy(h, world), packer) for h in specs]
+    model = JointModel.from_model(world, build_model(world, tables, layouts_of(world)))
+    rates = []
+    for i in range(len(specs)):
+        choice = model.optimal_policy(i)
+        for j in range(len(specs)):
+            rates.append(model.rate(choice, j))
+            assert rates[-1] == pytest.approx(full_chain_rate(model, choice, j), rel=1e-9, abs=1e-9), (i, j)
+    assert 0.0 in rates and min(r for r in rates if r > 0) < max(rates)  # the adversarial column: some never finish
