@@ -106,7 +106,7 @@ class JointModel:
         self.pair_action: list[int] = []
         self.pair_terminal: list[bool] = []
         self.dynamics = [_Dynamics() for _ in self.humans]
-        self.chains: list[Chain] = []
+        self.model: Model | None = None
         """Set by :meth:`from_model`; the Python enumeration keeps lists in ``dynamics``."""
         self.budget.refuse_count("layouts", layout_count(world.scenario), "initial layouts")
         layouts = layout_distribution(world, self.budget)
@@ -200,16 +200,14 @@ class JointModel:
         self.pair_state = model.pair_state()
         self.terminal = model.pair_terminal
         self.actions = model.pair_action
-        self.chains = [
-            Chain(d.t_start, d.t_next, d.t_prob, d.t_tau, d.regen_next, d.regen_prob, d.regen_tau)
-            for d in model.dynamics
-        ]
+        self.model = model
         return self
 
     def chain(self, i: int) -> Chain:
         """Human ``i``'s transitions as CSR rows per pair (:class:`~hg_marl.agents.models.chains.Chain`)."""
-        if self.chains:
-            return self.chains[i]
+        if self.model is not None:
+            d = self.model.chain(i)
+            return Chain(d.t_start, d.t_next, d.t_prob, d.t_tau, d.regen_next, d.regen_prob, d.regen_tau)
         d = self.dynamics[i]  # the Python enumeration appends transitions in pair order
         regen = np.array(d.regen, dtype=float).reshape(-1, 3)
         t_pair = np.array(d.t_pair, dtype=np.int64)
@@ -268,7 +266,14 @@ class JointModel:
 
     def rate(self, choice: np.ndarray, i: int) -> float:
         """Exact tasks per hour of the policy ``choice`` (a pair per state) against human ``i``."""
-        return policy_rate(self.chain(i), self.n, self.pair_state, self.terminal, choice)
+        if self.model is not None:  # only the chosen pairs' transitions are read
+            chain = Chain(*([np.zeros(0)] * 4), *self.model.regen(i))
+            return policy_rate(chain, self.terminal[choice], self.model.gather(i, choice))
+        chain = self.chain(i)
+        lo, size = chain.t_start[choice], np.diff(chain.t_start)[choice]
+        at = np.repeat(lo - np.concatenate([[0], np.cumsum(size)[:-1]]), size) + np.arange(size.sum())
+        starts = np.concatenate([[0], np.cumsum(size)])
+        return policy_rate(chain, self.terminal[choice], (starts, chain.t_next[at], chain.t_prob[at], chain.t_tau[at]))
 
 
 @dataclass(frozen=True)
@@ -354,11 +359,16 @@ def headroom(
         packer = StatePacker(world)
         tables = [AnswerTable(world, h, packer, budget) for h in humans]
         built = build_model(
-            world, tables, layouts, failed_actions=failed_actions, budget=budget, progress=progress, label="headroom"
+            world,
+            tables,
+            layouts,
+            failed_actions=failed_actions,
+            budget=budget,
+            progress=progress,
+            label="headroom",
+            keep=False,  # 21 partners' transitions would not fit: each is read from its answer table
         )
-        del tables  # the partners' answer tables: the model holds what it needs
         model = JointModel.from_model(world, built, budget)
-        del built
         col = [labels.index(label) for label, _ in true]
         policies = {}
         for label in tqdm(list(rows), desc="headroom: policies", disable=not progress, file=sys.stderr):

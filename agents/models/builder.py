@@ -74,6 +74,32 @@ class Model:
     n_layouts: int
     partner: int = 0
     """The partner the ``t_*`` and ``regen_*`` shortcuts and the solver read."""
+    lazy: _Lazy | None = None
+    """``build_model(keep=False)``: the transitions are read from the answer tables."""
+
+    def chain(self, partner: int) -> Dynamics:
+        """Partner ``partner``'s transitions (built from its answer table when not kept)."""
+        if self.lazy is None:
+            return self.dynamics[partner]
+        t_start, t_next, t_prob, t_tau = self.gather(partner, np.arange(self.n_pairs))
+        regen_next, regen_prob, regen_tau = self.lazy.regen[partner]
+        return Dynamics(t_start, t_next, t_prob, t_tau, regen_next, regen_prob, regen_tau)
+
+    def regen(self, partner: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Partner ``partner``'s re-draw: next states, probabilities, seconds."""
+        if self.lazy is not None:
+            return self.lazy.regen[partner]
+        d = self.dynamics[partner]
+        return d.regen_next, d.regen_prob, d.regen_tau
+
+    def gather(self, partner: int, pairs: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """The transitions of ``pairs`` only: (starts, next state, probability, seconds), CSR over ``pairs``."""
+        if self.lazy is None:
+            d = self.dynamics[partner]
+            lo, size = d.t_start[pairs], d.t_start[pairs + 1] - d.t_start[pairs]
+            at = _ranges(lo, size)
+            return _starts(size), d.t_next[at], d.t_prob[at], d.t_tau[at]
+        return self.lazy.gather(partner, pairs, self.pair_terminal)
 
     def of(self, partner: int) -> Model:
         """The same model read for another partner (arrays shared)."""
@@ -133,6 +159,53 @@ class Model:
         """The states as :class:`State` tuples, by id (for tests and small models)."""
         b, _ = self.packer.unpack(self.keys)
         return [b.state(i) for i in range(len(b))]
+
+
+def _ranges(lo: np.ndarray, size: np.ndarray) -> np.ndarray:
+    """The positions ``lo[i]:lo[i] + size[i]`` of every ``i``, concatenated."""
+    return np.repeat(lo - np.concatenate([[0], np.cumsum(size)[:-1]]).astype(np.int64), size) + np.arange(size.sum())
+
+
+def _starts(size: np.ndarray) -> np.ndarray:
+    return np.concatenate([[0], np.cumsum(size)]).astype(np.int64)
+
+
+class _Lazy:
+    """A model's transitions left in the partners' answer tables: per pair its mid-cycle keys and robot seconds."""
+
+    def __init__(
+        self,
+        tables: list[AnswerTable],
+        index: _Index,
+        canonical: bool,
+        mid_seen: np.ndarray,
+        mid_plain: np.ndarray,
+        d_robot: np.ndarray,
+        regen: list[tuple[np.ndarray, np.ndarray, np.ndarray]],
+    ) -> None:
+        self.tables, self.index, self.canonical = tables, index, canonical
+        self.mid_seen, self.mid_plain, self.d_robot, self.regen = mid_seen, mid_plain, d_robot, regen
+        self._ids: dict[int, np.ndarray] = {}
+
+    def gather(
+        self, partner: int, pairs: np.ndarray, terminal: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """As the builder's kept transitions: a pair's transitions are its key's entries, in order."""
+        table = self.tables[partner]
+        ids = self._ids.get(partner)
+        if ids is None:  # every entry's next state is known: each answer was some pair's transition
+            ids = self._ids[partner] = self.index.id_of(table.entries["canonical" if self.canonical else "next"])
+        live = ~terminal[pairs]
+        keys = (self.mid_seen if table.uses_robot_action else self.mid_plain)[pairs[live]]
+        start, count = table.lookup(keys)
+        size = np.zeros(len(pairs), dtype=np.int64)
+        size[live] = count
+        lo = np.zeros(len(pairs), dtype=np.int64)
+        lo[live] = start
+        at = _ranges(lo, size)
+        pair_of = np.repeat(pairs, size)
+        tau = np.maximum(self.d_robot[pair_of], table.entries["d_human"][at])
+        return _starts(size), ids[at], table.entries["probs"][at], tau
 
 
 def _rows(b: BatchState, rows: np.ndarray) -> BatchState:
@@ -217,6 +290,7 @@ def build_model(
     budget: Budget | None = None,
     progress: bool = False,
     label: str = "model",
+    keep: bool = True,
 ) -> Model:
     """The model reachable from ``layouts`` (already canonical when ``canonical``) against ``answers``.
 
@@ -225,7 +299,10 @@ def build_model(
     ``canonical``: keep one state per relabelling class (equivariant partners, as the
     oracle's symmetry reduction). The budget is read per batch of states (phase
     ``"explore"``) and between the partners' live answers; its states budget counts the
-    states known.
+    states known. ``keep=False``: the transitions are not kept per partner but read from
+    the partners' answer tables when asked (:meth:`Model.chain`, :meth:`Model.gather`):
+    a pair's transitions are its mid-cycle key's answers, and the keys are fewer than
+    the pairs (the headroom's joint model of 21 partners fits in its memory budget).
     """
     tables = [answers] if isinstance(answers, AnswerTable) else list(answers)
     budget = budget or Budget(None, None, None)
@@ -241,7 +318,9 @@ def build_model(
     budget.check("explore", 0, unit=f"states explored ({index.n:,} known)", states=index.n)
     for t in tables:
         t.phase = "explore: partner answers"
-    parts: dict[str, list[np.ndarray]] = {k: [] for k in ("size", "action", "terminal")}
+    parts: dict[str, list[np.ndarray]] = {
+        k: [] for k in ("size", "action", "terminal", "mid_seen", "mid_plain", "d_robot")
+    }
     flows: list[dict[str, list[np.ndarray]]] = [{k: [] for k in ("tcount", "next", "prob", "tau")} for _ in tables]
     bar = tqdm(
         desc=f"{label}: states", unit=" states", disable=not progress, file=sys.stderr, dynamic_ncols=True, leave=False
@@ -270,10 +349,20 @@ def build_model(
             live = np.flatnonzero(~terminal)
             live_b = _rows(pb, live)
             outcomes = []
+            found: list[np.ndarray] = []
+            mids = (packer.pack(live_b, np.where(ok[live], pa[live], -1)), packer.pack(live_b))
+            if not keep:
+                for name, mid in zip(("mid_seen", "mid_plain"), mids, strict=True):
+                    keyed = np.full(len(pa), -1, dtype=np.int64)
+                    keyed[live] = mid
+                    parts[name].append(keyed)
+                parts["d_robot"].append(d_robot)
             for t in tables:
-                seen = np.where(ok[live], pa[live], -1) if t.uses_robot_action else np.full(len(live), -1, np.int64)
-                u, inv = np.unique(packer.pack(live_b, seen), return_inverse=True)
+                u, inv = np.unique(mids[0 if t.uses_robot_action else 1], return_inverse=True)
                 ans = _Answered(t, u, canonical)
+                if not keep:
+                    found.append(ans.next)
+                    continue
                 tcount = np.zeros(len(pa), dtype=np.int64)
                 tcount[live] = ans.size[inv]
                 pair_of = np.repeat(np.arange(len(pa)), tcount)
@@ -282,6 +371,14 @@ def build_model(
                 entry = np.repeat(block - np.concatenate([[0], np.cumsum(tcount)[:-1]]), tcount)
                 entry += np.arange(len(pair_of))
                 outcomes.append((tcount, pair_of, ans, entry))
+            if not keep:  # the same states: every answer of a distinct key is some pair's transition
+                index.add(np.unique(np.concatenate(found)))
+                parts["size"].append(np.bincount(ps, minlength=hi - lo))
+                parts["action"].append(pa)
+                parts["terminal"].append(terminal)
+                bar.update(hi - lo)
+                lo = hi
+                continue
             uniq, inv = np.unique(np.concatenate([o[2].next[o[3]] for o in outcomes]), return_inverse=True)
             index.add(uniq)  # sorted: new states get ids in key order
             ids = index.id_of(uniq)[inv]
@@ -309,6 +406,26 @@ def build_model(
     def starts(counts: list[np.ndarray]) -> np.ndarray:
         return np.concatenate([[0], np.cumsum(cat(counts, np.int64))]).astype(np.int64)
 
+    if not keep:
+        regen_ids = [(index.id_of(k), p, tau) for k, p, tau in regen]
+        return Model(
+            packer=packer,
+            keys=index.keys(),
+            pair_start=starts(parts["size"]),
+            pair_action=cat(parts["action"], np.int64),
+            pair_terminal=cat(parts["terminal"], bool),
+            dynamics=[],
+            n_layouts=len(layouts),
+            lazy=_Lazy(
+                tables,
+                index,
+                canonical,
+                cat(parts["mid_seen"], np.int64),
+                cat(parts["mid_plain"], np.int64),
+                cat(parts["d_robot"], np.float64),
+                regen_ids,
+            ),
+        )
     dynamics = [  # each list is dropped once concatenated: the peak is one field's two copies, not all
         Dynamics(
             t_start=starts(flow.pop("tcount")),

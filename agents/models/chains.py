@@ -101,18 +101,19 @@ def backward(graph: sparse.csr_matrix, seeds: np.ndarray) -> np.ndarray:
     return forward(graph.T.tocsr(), np.flatnonzero(seeds))
 
 
-def policy_rate(chain: Chain, n: int, pair_state: np.ndarray, terminal: np.ndarray, choice: np.ndarray) -> float:
-    """Exact tasks per hour of the policy ``choice`` (a pair per state) against ``chain``'s partner.
+def policy_rate(chain: Chain, done: np.ndarray, policy: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]) -> float:
+    """Exact tasks per hour of a policy against ``chain``'s partner (only its re-draw is read from ``chain``).
 
-    The chain of the policy is restricted to the states it reaches from the re-drawn
-    tables; there, the states that may reach one that cannot complete get infinite
-    seconds (graph search), and the others' expected seconds to the next success solve
-    ``(I - P) V = c`` (``spsolve``).
+    ``policy``: the transitions of the policy's pair at each state, CSR over the states
+    (starts, next state, probability, seconds); ``done``: the states whose pair completes
+    the task. The chain of the policy is restricted to the states it reaches from the
+    re-drawn tables; there, the states that may reach one that cannot complete get
+    infinite seconds (graph search), and the others' expected seconds to the next
+    success solve ``(I - P) V = c`` (``spsolve``).
     """
-    size = chain.t_start[choice + 1] - chain.t_start[choice]
-    rows = np.repeat(np.arange(n), size)  # the state of each of the policy's transitions
-    at = np.repeat(chain.t_start[choice] - np.concatenate([[0], np.cumsum(size)[:-1]]), size) + np.arange(size.sum())
-    cols, probs, taus = chain.t_next[at], chain.t_prob[at], chain.t_tau[at]
+    t_start, cols, probs, taus = policy
+    n = len(done)
+    rows = np.repeat(np.arange(n), np.diff(t_start))  # the state of each of the policy's transitions
     graph = sparse.csr_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)), shape=(n, n))
     seen = forward(graph, chain.regen_next)
     sub = np.flatnonzero(seen)
@@ -121,7 +122,7 @@ def policy_rate(chain: Chain, n: int, pair_state: np.ndarray, terminal: np.ndarr
     keep = seen[rows]
     rows, cols, probs, taus = pos[rows[keep]], pos[cols[keep]], probs[keep], taus[keep]
     m = len(sub)
-    done = terminal[choice[sub]]  # states whose chosen pair completes the task
+    done = done[sub]
     small = sparse.csr_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)), shape=(m, m))
     reach = backward(small, done)
     certain = ~backward(small, ~reach)

@@ -354,3 +354,27 @@ def test_a_policy_rate_on_the_states_it_reaches_is_its_rate_on_the_whole_model(s
             rates.append(model.rate(choice, j))
             assert rates[-1] == pytest.approx(full_chain_rate(model, choice, j), rel=1e-9, abs=1e-9), (i, j)
     assert 0.0 in rates and min(r for r in rates if r > 0) < max(rates)  # the adversarial column: some never finish
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "forced_coordination"])
+def test_transitions_read_from_the_answer_tables_are_the_kept_ones(scenario: str) -> None:
+    """``build_model(keep=False)`` gives every partner the same transitions as the kept model, pair by pair."""
+    from hg_marl.agents.models.layouts import layout_distribution as layouts_of
+
+    world = World(scenario)
+    specs = ["cooperative", "lazy:p_idle=0.5", "random", "preference:handover=-1,shared=1"]
+    models = []
+    for keep in (True, False):
+        packer = StatePacker(world)
+        tables = [AnswerTable(world, _human_policy(h, world), packer) for h in specs]
+        models.append(build_model(world, tables, layouts_of(world), keep=keep))
+    kept, lazy = models
+    assert np.array_equal(kept.keys, lazy.keys) and np.array_equal(kept.pair_action, lazy.pair_action)
+    rng = np.random.default_rng(0)
+    for i in range(len(specs)):
+        a, b = kept.chain(i), lazy.chain(i)
+        for field in ("t_start", "t_next", "t_prob", "t_tau", "regen_next", "regen_prob", "regen_tau"):
+            assert np.array_equal(getattr(a, field), getattr(b, field)), (i, field)
+        pairs = np.sort(rng.choice(kept.n_pairs, size=50, replace=False))
+        for x, y in zip(kept.gather(i, pairs), lazy.gather(i, pairs), strict=True):
+            assert np.array_equal(x, y)
