@@ -20,7 +20,7 @@ import numpy as np
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.equivariant import canonical_answers
 from hg_marl.agents.models.packing import StatePacker
-from hg_marl.agents.models.partners import batch_answers
+from hg_marl.agents.models.partners import Answers, batch_answers
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules
 
@@ -41,10 +41,17 @@ class AnswerTable:
         packer: the builder's packer (keys include the robot action seen).
         budget: read between live answers (phase :attr:`phase`).
         arrays: answer on arrays where the human has an array version (False: always live).
+        batch: answers on arrays to use instead of the human's (the human may then be None).
     """
 
     def __init__(
-        self, world: World, human: Any, packer: StatePacker, budget: Budget | None = None, arrays: bool = True
+        self,
+        world: World,
+        human: Any,
+        packer: StatePacker,
+        budget: Budget | None = None,
+        arrays: bool = True,
+        batch: Answers | None = None,
     ) -> None:
         self.world, self.human, self.packer = world, human, packer
         self.budget = budget
@@ -59,7 +66,7 @@ class AnswerTable:
             "canonical": np.zeros(0, dtype=np.int64),
             "d_human": np.zeros(0, dtype=np.float64),
         }
-        self.batch = batch_answers(world, human) if arrays else None
+        self.batch = batch or (batch_answers(world, human) if arrays else None)
         """The human's answers on arrays (``agents/models/partners.py``), None to ask it live."""
         self.canonical = canonical_answers(world, human, packer) if arrays and self.batch is None else None
         """An equivariant human asked once per canonical key (``agents/models/equivariant.py``)."""

@@ -91,3 +91,37 @@ def reference_arrays(world: World, answers: dict[tuple[State, int], list[tuple[i
         c[-1] = 1.0
         cum[starts[i] : starts[i + 1]] = i + c
     return {"keys": keys, "starts": starts, "actions": actions, "cum": cum}
+
+
+def reference_robot_states(world: World) -> set[State]:
+    """The compiled robot's states as its Python enumeration visited them (before the builder)."""
+    table = world.table
+    n_human = world.n_actions(Agent.HUMAN)
+    known: set[State] = set()
+    queue: deque[State] = deque()
+
+    def reach(state: State) -> None:
+        if state not in known:
+            known.add(state)
+            queue.append(state)
+
+    def answers(mid: State) -> None:
+        feasible = table.feasible_indices(mid, Agent.HUMAN)
+        taken = set(feasible)
+        failing = next((i for i in range(n_human) if i not in taken), None)
+        for h in [*feasible, *([failing] if failing is not None else [])]:
+            reach(table.successor(mid, Agent.HUMAN, h)[0])
+
+    layouts = [s for s, _ in layout_distribution(world)]
+    for layout in layouts:
+        reach(layout)
+    for layout in layouts:  # continuing mode: the re-drawn table meets the human first
+        answers(layout)
+    while queue:  # every feasible robot action
+        state = queue.popleft()
+        for a in table.feasible_indices(state, Agent.ROBOT):
+            mid, ok, _ = table.successor(state, Agent.ROBOT, a)
+            if ok and table.solves(state, Agent.ROBOT, a):
+                continue
+            answers(mid)
+    return known

@@ -54,3 +54,31 @@ def test_a_table_over_the_key_budget_is_refused_in_one_line() -> None:
     with pytest.raises(CompileError, match="budget of"):
         compile_human(world, "random", cache=None, max_keys=n - 1)
     assert len(compile_human(world, "random", cache=None, max_keys=n)) == n
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "forced_coordination", "generated:objects=2,seed=4,human_only=0.8"])
+def test_the_compiled_robots_states_are_the_python_enumerations(scenario: str) -> None:
+    from hg_marl.agents.compiled_robot import robot_states
+    from hg_marl.agents.models import StatePacker
+    from tests.agents.reference_compiled import reference_robot_states
+
+    world = World(scenario)
+    keys = robot_states(world)
+    b, _ = StatePacker(world).unpack(keys)
+    assert {b.state(i) for i in range(len(b))} == reference_robot_states(world)
+    assert len(set(keys.tolist())) == len(keys)
+
+
+def test_the_compiled_robots_table_is_the_cold_planners_answer_on_sampled_states() -> None:
+    from hg_marl.agents.compiled_robot import compile_robot, planner_action
+    from hg_marl.envs.batched import BatchState
+
+    world = World("paper2015")
+    robot = compile_robot(world, cache=None)
+    rng = np.random.default_rng(3)
+    from hg_marl.agents.models import StatePacker
+
+    b, _ = StatePacker(world).unpack(robot.keys[rng.choice(len(robot.keys), size=40, replace=False)])
+    states = [b.state(i) for i in range(len(b))]
+    actions, found = robot.plan(BatchState.of(states))
+    assert found.all() and actions.tolist() == [planner_action(world, s) for s in states]
