@@ -333,15 +333,13 @@ def build_model(
             budget.check("explore", lo, unit=f"states explored ({index.n:,} known)", states=index.n)
             b, _ = packer.unpack(index.keys()[lo:hi] if len(index.by_id) > 1 else index.by_id[0][lo:hi])
             mask = rules.masks(b, Agent.ROBOT)
-            ps, pa = np.nonzero(mask)
-            order_key = ps * (n_robot + 1) + pa
-            if failed_actions:
-                fails = np.flatnonzero(~mask.all(axis=1))
-                ps = np.concatenate([ps, fails])
-                pa = np.concatenate([pa, np.argmin(mask[fails], axis=1)])
-                order_key = np.concatenate([order_key, fails * (n_robot + 1) + n_robot])
-            order = np.argsort(order_key, kind="stable")
-            ps, pa = ps[order], pa[order]
+            if failed_actions:  # an extra column: the first infeasible action, after the feasible ones
+                fails = ~mask.all(axis=1)
+                ps, pa = np.nonzero(np.concatenate([mask, fails[:, None]], axis=1))  # row-major: in option order
+                failing = pa == n_robot
+                pa[failing] = np.argmin(mask[ps[failing]], axis=1)
+            else:
+                ps, pa = np.nonzero(mask)
             clean = rules.is_clean(b)[ps]
             pb = _rows(b, ps)
             ok, d_robot, _ = rules.step(pb, Agent.ROBOT, pa, mask[ps])
