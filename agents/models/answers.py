@@ -72,6 +72,9 @@ class AnswerTable:
         """An equivariant human asked once per canonical key (``agents/models/equivariant.py``)."""
         self.live_calls = 0
         """Distributions asked of the live human (the rest came from the table)."""
+        self.relabelled: bool | None = None
+        """Whether entries carry their next state's canonical key (the builder sets it on a new
+        table: a model without symmetry reduction never reads it); None: computed."""
         self.phase = "answers"
 
     def lookup(self, keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -128,12 +131,13 @@ class AnswerTable:
         b, _ = self.packer.unpack(np.repeat(missing, size))
         _, d_human, _ = self.rules.step(b, Agent.HUMAN, actions)
         nxt = self.packer.pack(b)
-        self.packer.canonical(b)
+        if self.relabelled is not False:
+            self.packer.canonical(b)
         new = {
             "actions": actions,
             "probs": probs.astype(np.float64, copy=False),
             "next": nxt,
-            "canonical": self.packer.pack(b),
+            "canonical": nxt if self.relabelled is False else self.packer.pack(b),
             "d_human": d_human,
         }
         self._merge(missing, size, new)

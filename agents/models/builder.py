@@ -312,6 +312,11 @@ def build_model(
     n_robot = rules.n_actions[Agent.ROBOT]
     lay = BatchState.of([s for s, _ in layouts])
     lay_p = np.array([p for _, p in layouts], dtype=np.float64)
+    for t in tables:
+        if not len(t.keys):
+            t.relabelled = canonical  # a model without the reduction never reads them
+        elif canonical and t.relabelled is False:
+            raise ValueError("an answer table filled without canonical keys cannot serve a reduced model")
     regen = [_regen(world, t, lay, lay_p, canonical) for t in tables]
     index = _Index()
     index.add(_first_unique(np.concatenate([packer.pack(lay), *(r[0] for r in regen)])))
@@ -334,8 +339,8 @@ def build_model(
             b, _ = packer.unpack(index.keys()[lo:hi] if len(index.by_id) > 1 else index.by_id[0][lo:hi])
             mask = rules.masks(b, Agent.ROBOT)
             if failed_actions:  # an extra column: the first infeasible action, after the feasible ones
-                fails = ~mask.all(axis=1)
-                ps, pa = np.nonzero(np.concatenate([mask, fails[:, None]], axis=1))  # row-major: in option order
+                fails = np.logical_not(mask.all(axis=1)).reshape(-1, 1)
+                ps, pa = np.nonzero(np.concatenate([mask, fails], axis=1))  # row-major: in option order
                 failing = pa == n_robot
                 pa[failing] = np.argmin(mask[ps[failing]], axis=1)
             else:
