@@ -76,8 +76,9 @@ STALL_AFTER = PROGRESS_AFTER
 MAX_STATES = 50_000
 """The compiler's budget of robot-turn states (one cold plan each, a few ms); beyond it, a clear error.
 
-``roboergosum`` has 530,036 robot-turn states (about 270 s to enumerate and, at 3-7 ms a
-plan, most of an hour to plan), so it is refused and its human seat keeps live robots."""
+``roboergosum`` has 530,036 robot-turn states: the builder enumerates them in seconds, but
+one cold plan each is over an hour (``docs/exact-references.md``), so it is refused and its
+human seat keeps live robots; ``max_states=`` lifts the budget for a build kept on disk."""
 
 COMPILABLE = ("planner",)
 """Robot specs that are compiled (the plain planner: its plans are a function of the state)."""
