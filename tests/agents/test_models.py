@@ -333,7 +333,8 @@ def full_chain_rate(model: Any, choice: np.ndarray, i: int) -> float:
     c = np.bincount(pos[rows[src]], weights=(probs * taus)[src], minlength=len(idx))
     values[idx] = spsolve((sparse.identity(len(idx), format="csr") - p).tocsc(), c)
     chain = model.chain(i)
-    expected = math.fsum(p * (t + values[s]) for s, p, t in zip(chain.regen_next, chain.regen_prob, chain.regen_tau))
+    regen = zip(chain.regen_next, chain.regen_prob, chain.regen_tau, strict=True)
+    expected = math.fsum(p * (t + values[s]) for s, p, t in regen)
     return 0.0 if math.isinf(expected) else 3600.0 / expected
 
 
