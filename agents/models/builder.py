@@ -30,6 +30,7 @@ from tqdm import tqdm
 
 from hg_marl.agents.models.answers import AnswerTable
 from hg_marl.agents.models.budget import Budget
+from hg_marl.agents.models.lazy import TableTransitions, ranges, starts_of
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules, BatchState
@@ -74,7 +75,7 @@ class Model:
     n_layouts: int
     partner: int = 0
     """The partner the ``t_*`` and ``regen_*`` shortcuts and the solver read."""
-    lazy: _Lazy | None = None
+    lazy: TableTransitions | None = None
     """``build_model(keep=False)``: the transitions are read from the answer tables."""
 
     def chain(self, partner: int) -> Dynamics:
@@ -97,8 +98,8 @@ class Model:
         if self.lazy is None:
             d = self.dynamics[partner]
             lo, size = d.t_start[pairs], d.t_start[pairs + 1] - d.t_start[pairs]
-            at = _ranges(lo, size)
-            return _starts(size), d.t_next[at], d.t_prob[at], d.t_tau[at]
+            at = ranges(lo, size)
+            return starts_of(size), d.t_next[at], d.t_prob[at], d.t_tau[at]
         return self.lazy.gather(partner, pairs, self.pair_terminal)
 
     def of(self, partner: int) -> Model:
@@ -159,53 +160,6 @@ class Model:
         """The states as :class:`State` tuples, by id (for tests and small models)."""
         b, _ = self.packer.unpack(self.keys)
         return [b.state(i) for i in range(len(b))]
-
-
-def _ranges(lo: np.ndarray, size: np.ndarray) -> np.ndarray:
-    """The positions ``lo[i]:lo[i] + size[i]`` of every ``i``, concatenated."""
-    return np.repeat(lo - np.concatenate([[0], np.cumsum(size)[:-1]]).astype(np.int64), size) + np.arange(size.sum())
-
-
-def _starts(size: np.ndarray) -> np.ndarray:
-    return np.concatenate([[0], np.cumsum(size)]).astype(np.int64)
-
-
-class _Lazy:
-    """A model's transitions left in the partners' answer tables: per pair its mid-cycle keys and robot seconds."""
-
-    def __init__(
-        self,
-        tables: list[AnswerTable],
-        index: _Index,
-        canonical: bool,
-        mid_seen: np.ndarray,
-        mid_plain: np.ndarray,
-        d_robot: np.ndarray,
-        regen: list[tuple[np.ndarray, np.ndarray, np.ndarray]],
-    ) -> None:
-        self.tables, self.index, self.canonical = tables, index, canonical
-        self.mid_seen, self.mid_plain, self.d_robot, self.regen = mid_seen, mid_plain, d_robot, regen
-        self._ids: dict[int, np.ndarray] = {}
-
-    def gather(
-        self, partner: int, pairs: np.ndarray, terminal: np.ndarray
-    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """As the builder's kept transitions: a pair's transitions are its key's entries, in order."""
-        table = self.tables[partner]
-        ids = self._ids.get(partner)
-        if ids is None:  # every entry's next state is known: each answer was some pair's transition
-            ids = self._ids[partner] = self.index.id_of(table.entries["canonical" if self.canonical else "next"])
-        live = ~terminal[pairs]
-        keys = (self.mid_seen if table.uses_robot_action else self.mid_plain)[pairs[live]]
-        start, count = table.lookup(keys)
-        size = np.zeros(len(pairs), dtype=np.int64)
-        size[live] = count
-        lo = np.zeros(len(pairs), dtype=np.int64)
-        lo[live] = start
-        at = _ranges(lo, size)
-        pair_of = np.repeat(pairs, size)
-        tau = np.maximum(self.d_robot[pair_of], table.entries["d_human"][at])
-        return _starts(size), ids[at], table.entries["probs"][at], tau
 
 
 def _rows(b: BatchState, rows: np.ndarray) -> BatchState:
@@ -419,7 +373,7 @@ def build_model(
             pair_terminal=cat(parts["terminal"], bool),
             dynamics=[],
             n_layouts=len(layouts),
-            lazy=_Lazy(
+            lazy=TableTransitions(
                 tables,
                 index,
                 canonical,
