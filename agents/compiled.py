@@ -4,11 +4,12 @@ A stationary human (every registry human but ``switching`` and ``replay``; ``lea
 in its numpy kinds, not SB3's, which the batched env runs as one forward pass per step
 instead: ``agents/batched_learned.py``)
 answers as a function of the mid-cycle state and the robot's action seen
-(``StationaryHuman.distribution``). :func:`compile_human` enumerates every mid-cycle
-state the robot-turn states of the scenario can reach, whatever the robot does (the
-oracle's exploration: every feasible robot action plus one failing one, the human's every
-answer), asks the live human once per (state, robot action seen) and stores the answers
-in flat arrays: sorted packed keys, segment starts, actions and cumulative probabilities.
+(``StationaryHuman.distribution``). :func:`compile_human` builds the answers with the
+model builder (:func:`answer_table`: every mid-cycle state the robot-turn states of the
+scenario can reach, whatever the robot does, the oracle's exploration on arrays; the
+human answered on arrays, once per canonical key, or live once per key, as the
+builder's :class:`~hg_marl.agents.models.AnswerTable` does) and stores them in flat
+arrays: sorted packed keys, segment starts, actions and cumulative probabilities.
 :class:`CompiledHuman` then answers a whole batch with two ``searchsorted`` calls (the
 ``ArrayPartner`` protocol of ``hg_marl.envs.batched``). A state outside the table (it
 cannot happen for a table compiled for the same scenario and durations, but a caller
@@ -29,20 +30,20 @@ from __future__ import annotations
 
 import io
 import os
-import sys
-from collections import deque
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from tqdm import tqdm
 
 from hg_marl.agents import content
 from hg_marl.agents.humans.base import HumanError
 from hg_marl.agents.humans.registry import HUMANS, make_human
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules, BatchState
+
+if TYPE_CHECKING:
+    from hg_marl.agents.models import AnswerTable
 
 MAX_KEYS = 5_000_000
 """The compiler's budget: (mid-cycle state, robot action seen) keys; beyond it, a clear error."""
@@ -89,68 +90,42 @@ class Packer:
         return int(sum(d * int(w) for d, w in zip(digits, self.weights, strict=True)))
 
 
-def enumerate_answers(
+def answer_table(
     world: World, human: Any, max_keys: int = MAX_KEYS, progress: bool = False, closure: Sequence[Any] = ()
-) -> dict[tuple[State, int], list[tuple[int, float]]]:
-    """Every (mid-cycle state, robot action seen) the human can face, with its distribution.
+) -> AnswerTable:
+    """Every (mid-cycle state, robot action seen) the human can face, with its distribution, as arrays.
 
-    Robot-turn states come from the layout distribution and, breadth-first, from every
-    robot action (feasible ones and one failing one: all failing actions lead to the same
-    mid-cycle state) followed by every answer of the human. The completing ``wait`` is
-    followed by the human's move on the clean table (episodic mode) and by the re-drawn
-    tables (continuing mode), both enumerated. ``closure``: other humans whose answers
-    also lead on (a switching partner's other phases reach states this one alone never
-    would); only ``human``'s own answers are stored.
+    The model builder's closure (``agents/models/builder.py``, the oracle's exploration):
+    robot-turn states from the layout distribution and, breadth-first, from every robot
+    action (feasible ones and one failing one: all failing actions lead to the same
+    mid-cycle state) followed by every answer of the human and of the ``closure`` humans
+    (a switching partner's other phases reach states this one alone never would; only
+    ``human``'s answers are kept). The re-drawn tables meet the human after the robot's
+    ``wait`` (continuing mode); the completing ``wait`` is followed by the human's move on
+    the clean table (episodic mode), asked here as the builder does not go on from it.
     """
-    from hg_marl.agents.oracle import layout_distribution
+    from hg_marl.agents.models import AnswerTable, Budget, OverBudget, StatePacker, build_model
+    from hg_marl.agents.models.layouts import layout_distribution
 
-    table = world.table
-    uses = bool(getattr(human, "uses_robot_action", False))
-    n_robot = world.n_actions(Agent.ROBOT)
-    wait = table.wait[Agent.ROBOT]
-    layouts = [s for s, _ in layout_distribution(world)]
-    answers: dict[tuple[State, int], list[tuple[int, float]]] = {}
-    seen_states: set[State] = set(layouts)
-    queue: deque[State] = deque(layouts)
-    bar = tqdm(desc=f"compile {getattr(human, 'name', 'human')}", unit=" keys", disable=not progress, file=sys.stderr)
-
-    def answer(mid: State, seen: int, expand: bool) -> None:
-        key = (mid, seen if uses else -1)
-        dist = answers.get(key)
-        if dist is None:
-            if len(answers) >= max_keys:
-                raise CompileError(
-                    f"scenario: {world.scenario.name!r} against {getattr(human, 'name', human)!r} exceeds the "
-                    f"compiler's budget of {max_keys} states (max_keys); use a smaller scenario"
-                )
-            dist = answers[key] = [(h, p) for h, p in human.distribution(world, mid, key[1]) if p > 0.0]
-            bar.update(1)
-        if expand:
-            moves = {h for h, _ in dist}
-            for other in closure:
-                other_seen = seen if getattr(other, "uses_robot_action", False) else -1
-                moves.update(h for h, p in other.distribution(world, mid, other_seen) if p > 0.0)
-            for h in sorted(moves):
-                nxt, _, _ = table.successor(mid, Agent.HUMAN, h)
-                if nxt not in seen_states:
-                    seen_states.add(nxt)
-                    queue.append(nxt)
-
-    for layout in layouts:  # continuing mode: the re-drawn table meets the human after the robot's wait
-        answer(layout, wait, True)
+    name = getattr(human, "name", human)
+    budget = Budget(None, None, max_keys, subject=f"scenario: {world.scenario.name!r} against {name!r}")
+    packer = StatePacker(world)
+    tables = [AnswerTable(world, h, packer, budget) for h in (human, *closure)]
     try:
-        while queue:
-            state = queue.popleft()
-            feasible = table.feasible_indices(state, Agent.ROBOT)
-            taken = set(feasible)
-            failing = next((i for i in range(n_robot) if i not in taken), None)
-            for a in [*feasible, *([failing] if failing is not None else [])]:
-                mid, ok, _ = table.successor(state, Agent.ROBOT, a)
-                terminal = ok and table.solves(state, Agent.ROBOT, a)
-                answer(mid, a if ok else -1, not terminal)
-    finally:
-        bar.close()
-    return answers
+        model = build_model(world, tables, layout_distribution(world), budget=budget, progress=progress)
+    except OverBudget:
+        model = None
+    table = tables[0]
+    if model is not None:
+        clean, _ = packer.unpack(model.keys[model.pair_state()[model.pair_terminal]])
+        seen = np.full(len(clean), world.table.wait[Agent.ROBOT] if table.uses_robot_action else -1)
+        table.ensure(np.unique(packer.pack(clean, seen)))
+    if model is None or len(table.keys) > max_keys:
+        raise CompileError(
+            f"scenario: {world.scenario.name!r} against {name!r} exceeds the compiler's budget of {max_keys} "
+            "states (max_keys); use a smaller scenario"
+        )
+    return table
 
 
 class CompiledHuman:
@@ -180,29 +155,26 @@ class CompiledHuman:
         """Tables answered by the live human because their state was not in the table."""
 
     @staticmethod
-    def arrays_of(
-        world: World, packer: Packer, answers: dict[tuple[State, int], list[tuple[int, float]]]
-    ) -> dict[str, np.ndarray]:
-        """Sorted flat arrays of ``answers``; ``cum`` is segment index + cumulative probability.
+    def arrays_of(world: World, table: AnswerTable) -> dict[str, np.ndarray]:
+        """The flat arrays of an answer table; ``cum`` is segment index + cumulative probability.
 
         Each entry's outcome is computed by ``BatchedRules`` on the whole table at once.
         """
-        triples = sorted(
-            ((packer.pack_one(s, seen), s, dist) for (s, seen), dist in answers.items()), key=lambda x: x[0]
-        )
-        items = [(k, d) for k, _, d in triples]
-        keys = np.array([k for k, _ in items], dtype=np.int64)
-        sizes = np.array([len(d) for _, d in items], dtype=np.int64)
-        starts = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
-        actions = np.array([h for _, d in items for h, _ in d], dtype=np.int64)
+        keys, starts, actions = table.keys, table.starts, table.entries["actions"]
+        probs = table.entries["probs"]
+        sizes = np.diff(starts)
         cum = np.empty(len(actions))
-        for i, (_, dist) in enumerate(items):
-            p = np.array([q for _, q in dist])
-            c = np.cumsum(p) / p.sum()
-            c[-1] = 1.0
-            cum[starts[i] : starts[i + 1]] = i + c
+        for size in np.unique(sizes).tolist():  # per segment: cumsum / sum, last one exactly 1
+            if size == 0:
+                continue
+            seg = np.flatnonzero(sizes == size)
+            at = starts[seg][:, None] + np.arange(size)
+            p = probs[at]
+            c = np.cumsum(p, axis=1) / p.sum(axis=1)[:, None]
+            c[:, -1] = 1.0
+            cum[at] = seg[:, None] + c
         rules = BatchedRules(world)
-        mids = BatchState.of([s for _, s, d in triples for _ in d]) if len(actions) else BatchState.of([])
+        mids, _ = table.packer.unpack(np.repeat(keys, sizes))
         ok, duration, _ = rules.step(mids, Agent.HUMAN, actions)
         return {
             "keys": keys,
@@ -343,7 +315,6 @@ def compile_human(
         other.reset(world, Agent.HUMAN, np.random.default_rng(0))
     if any(not isinstance(h, str) for h in closure):
         spec = None  # an instance in the closure has no content key: no disk cache
-    packer = Packer(world)
     name = spec or str(getattr(live, "name", "human"))
     folder = (
         None if cache is None or cache is False or spec is None else default_cache() if cache is True else Path(cache)
@@ -362,12 +333,12 @@ def compile_human(
             except (OSError, ValueError, KeyError):
                 pass  # a corrupt or foreign entry is rebuilt
     try:
-        answers = enumerate_answers(world, live, max_keys, progress, others)
+        table = answer_table(world, live, max_keys, progress, others)
     except CompileError:
         raise
     except ValueError as exc:  # e.g. a learned SB3 policy: no exact distribution
         raise CompileError(f"human: {name!r} cannot be compiled: {exc}") from None
-    arrays = CompiledHuman.arrays_of(world, packer, answers)
+    arrays = CompiledHuman.arrays_of(world, table)
     if path is not None:
         assert key is not None
         save_table(path, key, arrays)

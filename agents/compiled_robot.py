@@ -9,7 +9,8 @@ the plan's first robot action, ``wait`` when no plan is found), except for its p
 handling (:mod:`hg_marl.agents.partner`), which depends on history. The state function is
 compiled; the partner handling is replaced by an array rule (below).
 
-Compilation. :func:`enumerate_plans` visits every robot-turn state reachable from the
+Compilation. :func:`enumerate_plans` visits, with the model builder
+(:func:`robot_states`), every robot-turn state reachable from the
 layout distribution (``layout_distribution``, and each layout after the human's move: the
 continuing mode's re-drawn table meets the human first) under every feasible robot action (a
 superset of the robot's own compiled action and every stall move it may take, which are
@@ -57,17 +58,18 @@ user names (``cache=FOLDER``, or ``$HG_MARL_CACHE``).
 from __future__ import annotations
 
 import sys
-from collections import deque
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from tqdm import tqdm
 
 from hg_marl.agents import content
 from hg_marl.agents.compiled import CompileError, Packer, default_cache, save_table
+from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.progress import PROGRESS_AFTER, ArrayProgressGuard
 from hg_marl.core import Agent, State, World
-from hg_marl.envs.batched import BatchState
+from hg_marl.envs.batched import BatchedRules, BatchState
 
 STALL_AFTER = PROGRESS_AFTER
 """Unchanged robot turns in a row after which the compiled robot takes a stall move (the progress guard's K)."""
@@ -75,8 +77,9 @@ STALL_AFTER = PROGRESS_AFTER
 MAX_STATES = 50_000
 """The compiler's budget of robot-turn states (one cold plan each); beyond it, a clear error.
 
-``roboergosum`` has 530,036 robot-turn states, too many cold plans to wait for (the
-times: ``docs/batched.md``), so it is refused and its human seat keeps live robots."""
+``roboergosum`` has 530,036 robot-turn states: the builder enumerates them in seconds, but
+one cold plan each is over an hour (``docs/exact-references.md``), so it is refused and its
+human seat keeps live robots; ``max_states=`` lifts the budget for a build kept on disk."""
 
 COMPILABLE = ("planner",)
 """Robot specs that are compiled (the plain planner: its plans are a function of the state)."""
@@ -91,51 +94,62 @@ def planner_action(world: World, state: State) -> int:
     return plan_proposal(result, world.n_actions(Agent.ROBOT), Agent.ROBOT, CostModel()).action
 
 
-def enumerate_plans(world: World, max_states: int = MAX_STATES, progress: bool = False) -> dict[State, int]:
-    """Every robot-turn state the human's seat can reach against the compiled robot, with its planner action.
+def robot_states(world: World, max_states: int = MAX_STATES, progress: bool = False) -> np.ndarray:
+    """The packed keys, sorted, of every robot-turn state the human's seat can reach against the compiled robot.
 
-    See the module docstring for what is reached (every feasible robot action, then every
-    human answer); the states are planned once the set is known, so the budget is
-    checked before the first search.
+    The model builder's closure (``agents/models/builder.py``): from the layouts, every
+    feasible robot action (a superset of the compiled action and the stall moves; the
+    completing ``wait`` ends the task, the table is re-drawn: a layout), then every human
+    answer (every feasible human action and one failing one: a learner may send any
+    index), answered on arrays by :func:`any_answer`. The re-drawn table meets the human first.
     """
-    from hg_marl.agents.oracle import layout_distribution
+    from hg_marl.agents.models import AnswerTable, Budget, OverBudget, StatePacker, build_model
+    from hg_marl.agents.models.layouts import layout_distribution
 
-    table = world.table
-    n_human = world.n_actions(Agent.HUMAN)
-    known: set[State] = set()
-    queue: deque[State] = deque()
+    budget = Budget(None, None, max_states, subject=f"scenario: {world.scenario.name!r}")
+    packer = StatePacker(world)
+    table = AnswerTable(world, None, packer, budget, batch=any_answer(world))
+    try:
+        model = build_model(
+            world, table, layout_distribution(world), failed_actions=False, budget=budget, progress=progress
+        )
+    except OverBudget:
+        model = None
+    if model is None or model.n > max_states:
+        raise CompileError(
+            f"scenario: {world.scenario.name!r} has over {max_states} robot-turn states for the compiled "
+            "planner (max_states); use compiled=False for live robots"
+        )
+    return np.sort(model.keys)
 
-    def reach(state: State) -> None:
-        if state not in known:
-            if len(known) >= max_states:
-                raise CompileError(
-                    f"scenario: {world.scenario.name!r} has over {max_states} robot-turn states for the compiled "
-                    "planner (max_states); use compiled=False for live robots"
-                )
-            known.add(state)
-            queue.append(state)
 
-    def answers(mid: State) -> None:
-        feasible = table.feasible_indices(mid, Agent.HUMAN)
-        taken = set(feasible)
-        failing = next((i for i in range(n_human) if i not in taken), None)
-        for h in [*feasible, *([failing] if failing is not None else [])]:
-            reach(table.successor(mid, Agent.HUMAN, h)[0])
+def any_answer(world: World) -> Any:
+    """Every feasible human action and the first infeasible one (standing for all: nothing happens), on arrays."""
+    rules = BatchedRules(world)
 
-    layouts = [s for s, _ in layout_distribution(world)]
-    for layout in layouts:
-        reach(layout)
-    for layout in layouts:  # continuing mode: the re-drawn table meets the human first
-        answers(layout)
-    while queue:  # every feasible robot action: a superset of the compiled action and the stall moves
-        state = queue.popleft()
-        for a in table.feasible_indices(state, Agent.ROBOT):
-            mid, ok, _ = table.successor(state, Agent.ROBOT, a)
-            if ok and table.solves(state, Agent.ROBOT, a):
-                continue  # the task is solved: the episode ends or the table is re-drawn (a layout)
-            answers(mid)
+    def answers(b: BatchState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        mask = rules.masks(b, Agent.HUMAN)
+        fails = ~mask.all(axis=1)
+        rows, actions = np.nonzero(mask)
+        rows = np.concatenate([rows, np.flatnonzero(fails)])
+        actions = np.concatenate([actions, np.argmin(mask[fails], axis=1)])
+        order = np.argsort(rows, kind="stable")  # per state: the feasible ones in index order, then the failing one
+        sizes = np.bincount(rows, minlength=len(b))
+        return sizes, actions[order], 1.0 / sizes[rows[order]]
+
+    return answers
+
+
+def enumerate_plans(world: World, max_states: int = MAX_STATES, progress: bool = False) -> dict[State, int]:
+    """Every robot-turn state of :func:`robot_states`, with its planner action.
+
+    The states are planned once the set is known, so the budget is checked before the first search.
+    """
+    keys = robot_states(world, max_states, progress)
+    b, _ = StatePacker(world).unpack(keys)
     plans: dict[State, int] = {}
-    for state in tqdm(sorted(known), desc="compile planner", unit=" states", disable=not progress, file=sys.stderr):
+    for i in tqdm(range(len(b)), desc="compile planner", unit=" states", disable=not progress, file=sys.stderr):
+        state = b.state(i)
         plans[state] = planner_action(world, state)
     return plans
 

@@ -34,7 +34,6 @@ equivariant), so the model is the full one: keep scenarios small (see
 
 from __future__ import annotations
 
-import math
 import sys
 import time
 from collections.abc import Sequence
@@ -42,17 +41,14 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from scipy import sparse
-from scipy.sparse.linalg import spsolve
 from tqdm import tqdm
 
 from hg_marl.agents.models import AnswerTable, Model, StatePacker, build_model
 from hg_marl.agents.models.answers import stationary_human
-from hg_marl.agents.models.python_model import certain_states
+from hg_marl.agents.models.chains import Chain, certain_states, policy_rate, transitions
 from hg_marl.agents.oracle import (
     DEFAULT_MEMORY,
     DEFAULT_SECONDS,
-    HOUR,
     Budget,
     OracleTooLarge,
     layout_distribution,
@@ -110,7 +106,7 @@ class JointModel:
         self.pair_action: list[int] = []
         self.pair_terminal: list[bool] = []
         self.dynamics = [_Dynamics() for _ in self.humans]
-        self._arrays: list[tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]] = []
+        self.model: Model | None = None
         """Set by :meth:`from_model`; the Python enumeration keeps lists in ``dynamics``."""
         self.budget.refuse_count("layouts", layout_count(world.scenario), "initial layouts")
         layouts = layout_distribution(world, self.budget)
@@ -204,37 +200,49 @@ class JointModel:
         self.pair_state = model.pair_state()
         self.terminal = model.pair_terminal
         self.actions = model.pair_action
-        self.dynamics = []
-        self._arrays = []
-        for i, d in enumerate(model.dynamics):
-            dyn = _Dynamics()
-            dyn.regen = list(zip(d.regen_next.tolist(), d.regen_prob.tolist(), d.regen_tau.tolist(), strict=True))
-            self.dynamics.append(dyn)
-            self._arrays.append((model.of(i).t_pair(), d.t_next, d.t_prob, d.t_tau))
+        self.model = model
         return self
 
-    def arrays(self, i: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """Human ``i``'s transitions as arrays: pair, next state, probability, seconds."""
-        if self._arrays:
-            return self._arrays[i]
-        d = self.dynamics[i]
-        return (
-            np.array(d.t_pair, dtype=np.int64),
+    def chain(self, i: int) -> Chain:
+        """Human ``i``'s transitions as CSR rows per pair (:class:`~hg_marl.agents.models.chains.Chain`)."""
+        if self.model is not None:
+            d = self.model.chain(i)
+            return Chain(d.t_start, d.t_next, d.t_prob, d.t_tau, d.regen_next, d.regen_prob, d.regen_tau)
+        d = self.dynamics[i]  # the Python enumeration appends transitions in pair order
+        regen = np.array(d.regen, dtype=float).reshape(-1, 3)
+        t_pair = np.array(d.t_pair, dtype=np.int64)
+        return Chain(
+            np.concatenate([[0], np.cumsum(np.bincount(t_pair, minlength=self.n_pairs))]).astype(np.int64),
             np.array(d.t_next, dtype=np.int64),
             np.array(d.t_prob, dtype=float),
             np.array(d.t_tau, dtype=float),
+            regen[:, 0].astype(np.int64),
+            regen[:, 1].copy(),
+            regen[:, 2].copy(),
         )
 
+    def arrays(self, i: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Human ``i``'s transitions as arrays: pair, next state, probability, seconds."""
+        c = self.chain(i)
+        return np.repeat(np.arange(self.n_pairs), np.diff(c.t_start)), c.t_next, c.t_prob, c.t_tau
+
     def optimal_policy(self, i: int, tolerance: float = 1e-9, max_iterations: int = 200_000) -> np.ndarray:
-        """The pair index chosen at every state by the policy optimal against human ``i``."""
-        t_pair, t_next, t_prob, t_tau = self.arrays(i)
-        n, n_pairs = self.n, self.n_pairs
-        cost = np.bincount(t_pair, weights=t_prob * t_tau, minlength=n_pairs)
-        alive, ok = certain_states(n, self.pair_state, self.terminal, t_pair, t_next)
+        """The pair index chosen at every state by the policy optimal against human ``i``.
+
+        Value iteration from 0; each sweep sums a pair's transitions in their order (one
+        CSR product), as ``np.bincount`` over the transitions did, so the values are the
+        same floats as the Python joint model's.
+        """
+        chain = self.chain(i)
+        n = self.n
+        cost = transitions(chain, n, chain.t_prob * chain.t_tau) @ np.ones(n)
+        alive, ok = certain_states(n, self.pair_state, self.terminal, chain)
+        matrix = transitions(chain, n)
         values = np.zeros(n)
 
         def q_of(v: np.ndarray) -> np.ndarray:
-            q = cost + np.bincount(t_pair, weights=t_prob * np.where(alive[t_next], v[t_next], 0.0), minlength=n_pairs)
+            q = matrix @ np.where(alive, v, 0.0)
+            q += cost
             return np.where(ok, np.where(self.terminal, 0.0, q), np.inf)
 
         if alive.any():
@@ -258,47 +266,14 @@ class JointModel:
 
     def rate(self, choice: np.ndarray, i: int) -> float:
         """Exact tasks per hour of the policy ``choice`` (a pair per state) against human ``i``."""
-        t_pair, t_next, t_prob, t_tau = self.arrays(i)
-        n = self.n
-        chosen = np.zeros(self.n_pairs, dtype=bool)
-        chosen[choice] = True
-        done = self.terminal[choice]  # states whose chosen pair completes the task
-        keep = chosen[t_pair]
-        rows = self.pair_state[t_pair[keep]]
-        cols, probs, taus = t_next[keep], t_prob[keep], t_tau[keep]
-        graph = sparse.csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(n, n))
-        # states that can reach a completion, then those that may reach a state that cannot
-        reach = _backward(graph, done)
-        doomed = _backward(graph, ~reach)
-        certain = ~doomed
-        idx = np.flatnonzero(certain)
-        pos = np.full(n, -1, dtype=np.int64)
-        pos[idx] = np.arange(len(idx))
-        values = np.full(n, math.inf)
-        if len(idx):
-            inner = certain[rows] & certain[cols] & ~done[rows]
-            m = len(idx)
-            p = sparse.csr_matrix((probs[inner], (pos[rows[inner]], pos[cols[inner]])), shape=(m, m))
-            c = np.bincount(
-                pos[rows[certain[rows] & ~done[rows]]], weights=(probs * taus)[certain[rows] & ~done[rows]], minlength=m
-            )
-            values[idx] = np.atleast_1d(spsolve((sparse.identity(m, format="csr") - p).tocsc(), c))
-        d = self.dynamics[i]
-        expected = math.fsum(p * (tau + values[s]) for s, p, tau in d.regen)
-        return 0.0 if math.isinf(expected) else HOUR / expected
-
-
-def _backward(graph: sparse.csr_matrix, seeds: np.ndarray) -> np.ndarray:
-    """States from which some path of ``graph`` reaches a ``seeds`` state."""
-    reverse = graph.T.tocsr()
-    found = seeds.copy()
-    frontier = np.flatnonzero(seeds)
-    while len(frontier):
-        hit = reverse[frontier].indices
-        new = np.unique(hit[~found[hit]])
-        found[new] = True
-        frontier = new
-    return found
+        if self.model is not None:  # only the chosen pairs' transitions are read
+            chain = Chain(*([np.zeros(0)] * 4), *self.model.regen(i))
+            return policy_rate(chain, self.terminal[choice], self.model.gather(i, choice))
+        chain = self.chain(i)
+        lo, size = chain.t_start[choice], np.diff(chain.t_start)[choice]
+        at = np.repeat(lo - np.concatenate([[0], np.cumsum(size)[:-1]]), size) + np.arange(size.sum())
+        starts = np.concatenate([[0], np.cumsum(size)])
+        return policy_rate(chain, self.terminal[choice], (starts, chain.t_next[at], chain.t_prob[at], chain.t_tau[at]))
 
 
 @dataclass(frozen=True)
@@ -384,7 +359,14 @@ def headroom(
         packer = StatePacker(world)
         tables = [AnswerTable(world, h, packer, budget) for h in humans]
         built = build_model(
-            world, tables, layouts, failed_actions=failed_actions, budget=budget, progress=progress, label="headroom"
+            world,
+            tables,
+            layouts,
+            failed_actions=failed_actions,
+            budget=budget,
+            progress=progress,
+            label="headroom",
+            keep=False,  # 21 partners' transitions would not fit: each is read from its answer table
         )
         model = JointModel.from_model(world, built, budget)
         col = [labels.index(label) for label, _ in true]

@@ -1,6 +1,6 @@
 """Model building on arrays beside the Python enumeration it replaced, measured in the same run.
 
-Run: ``python benchmarks/model_build.py [--member m01] [--members] [--headroom] [--eight]``.
+Run: ``python benchmarks/model_build.py [--member m01] [--members] [--headroom] [--eight] [--robot]``.
 
 1. **Builder rate** on ``roboergosum`` against a population member (a stationary human;
    no symmetry reduction: the full model). Each builder runs twice: cold (the partner
@@ -16,6 +16,8 @@ Run: ``python benchmarks/model_build.py [--member m01] [--members] [--headroom] 
    in-process, timed, with ``--max-seconds 600``. Goal <= 60 s.
 4. ``--eight``: the oracle of an 8-object table (``generated:objects=8,bins=2`` against
    ``random``). Goal <= 60 s and 4 GB.
+5. ``--robot``: the compiled planner robot's states on ``roboergosum`` (the builder) and
+   the cost of a cold plan on a sample of them (the table needs one per state).
 """
 
 from __future__ import annotations
@@ -132,12 +134,33 @@ def eight() -> None:
     )
 
 
+def robot(sample: int = 300) -> None:
+    """The compiled planner robot on roboergosum: its states by the builder, and the cold plans' cost on a sample."""
+    import numpy as np
+
+    from hg_marl.agents.compiled_robot import planner_action, robot_states
+
+    world = World("roboergosum")
+    cpu = time.process_time()
+    keys = robot_states(world, max_states=10**7)
+    print(f"compiled robot, roboergosum: {len(keys):,} robot-turn states in {time.process_time() - cpu:.1f} s CPU")
+    b, _ = StatePacker(world).unpack(keys[np.random.default_rng(0).choice(len(keys), sample, replace=False)])
+    cpu = time.process_time()
+    for i in range(sample):
+        planner_action(world, b.state(i))
+    each = (time.process_time() - cpu) / sample
+    print(
+        f"  one cold plan: {each * 1e3:.2f} ms CPU (mean of {sample}); all states: {each * len(keys) / 60:.0f} min CPU"
+    )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--member", default="m01", help="population member of the builder-rate run")
     parser.add_argument("--members", action="store_true", help="time every member's oracle")
     parser.add_argument("--headroom", action="store_true", help="time the population's headroom matrix")
     parser.add_argument("--eight", action="store_true", help="time an 8-object table's oracle")
+    parser.add_argument("--robot", action="store_true", help="the compiled planner robot's states and plan cost")
     args = parser.parse_args()
     builder_rates(args.member)
     if args.members:
@@ -146,6 +169,8 @@ def main() -> None:
         eight()
     if args.headroom:
         headroom_time()
+    if args.robot:
+        robot()
 
 
 if __name__ == "__main__":

@@ -32,6 +32,21 @@ from hg_marl.core import Agent, Kind, State, World
 _MEMO_LIMIT = 500_000
 
 
+def seen_representatives(world: World) -> list[int]:
+    """Per robot action, the first action the cooperative human answers alike (its class's representative).
+
+    The planner only uses the robot action's duration and whether it is a wait or a give
+    (an unanswered give is no robot activity): one representative per class multiplies
+    memo and planner-cache hits without changing an answer, and the model builder asks
+    once per class (``agents/models/answers.py``).
+    """
+    classes: dict[tuple[float, bool, bool], int] = {}
+    return [
+        classes.setdefault((world.durations.of(a.kind), a.kind is Kind.WAIT, a.kind is Kind.GIVE), i)
+        for i, a in enumerate(world.actions(Agent.ROBOT))
+    ]
+
+
 class CooperativeHuman(StationaryHuman):
     """Follows the shared plan.
 
@@ -66,14 +81,7 @@ class CooperativeHuman(StationaryHuman):
             self._planner = Planner(world, config=config, human_model=None)
             self._planner_world = world
             self._memo = {}
-            # The planner only uses the robot action's duration and whether it is a wait or a
-            # give (an unanswered give is no robot activity): one representative per class
-            # multiplies memo and planner-cache hits without changing an answer.
-            classes: dict[tuple[float, bool, bool], int] = {}
-            self._canonical = [
-                classes.setdefault((world.durations.of(a.kind), a.kind is Kind.WAIT, a.kind is Kind.GIVE), i)
-                for i, a in enumerate(world.actions(Agent.ROBOT))
-            ]
+            self._canonical = seen_representatives(world)
         return self._planner
 
     def planned_action(self, world: World, state: State, robot_action: int = -1) -> int:
@@ -98,6 +106,10 @@ class CooperativeHuman(StationaryHuman):
                 self._memo.clear()
             self._memo[(state, robot_action)] = index
         return index
+
+    def seen_representatives(self, world: World) -> list[int]:
+        """Per robot action, the one it answers alike (:func:`seen_representatives`)."""
+        return seen_representatives(world)
 
     def distribution(self, world: World, state: State, robot_action: int = -1) -> Distribution:
         """The planned action (mixed with ``wait`` by ``p_idle``)."""

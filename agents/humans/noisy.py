@@ -55,6 +55,11 @@ class NoisyHuman(StationaryHuman):
             out[index] = cycle_length(d_robot, step.duration) + rest
         return out
 
+    def seen_representatives(self, world: World) -> list[int]:
+        """Per robot action, one it answers alike: the cooperative human's classes (finer than the
+        duration alone, which is all :meth:`scores` reads, and what the temperature-0 answer reads)."""
+        return self._cooperative.seen_representatives(world)
+
     def distribution(self, world: World, state: State, robot_action: int = -1) -> Distribution:
         """Softmax over ``-scores / temperature`` (the planned action at temperature 0)."""
         if self.temperature == 0.0:

@@ -5,9 +5,10 @@ once. :class:`AnswerTable` keeps them as a compiled partner does (``agents/compi
 sorted packed keys, segment starts, actions and probabilities, looked up with one
 ``searchsorted``, and per entry the answer's outcome (the next robot-turn state's key,
 as is and in canonical labelling, and the answer's duration), stepped once with the
-batched rules when the entry is made. Keys the table lacks are answered by the live
-stationary human, one Python call per distinct key, with a budget reading every
-:data:`CHECK_EVERY` answers: a planner-driven human may spend a search on one answer.
+batched rules when the entry is made. Keys the table lacks are answered on arrays where
+the human's rule allows (``partners.py``), by the live human once per canonical key where
+it is equivariant (``equivariant.py``), else by the live human once per key; a budget is
+read every :data:`CHECK_EVERY` live answers: a planner-driven human may spend a search on one.
 """
 
 from __future__ import annotations
@@ -18,8 +19,9 @@ import numpy as np
 
 from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.models.budget import Budget
+from hg_marl.agents.models.equivariant import canonical_answers
 from hg_marl.agents.models.packing import StatePacker
-from hg_marl.agents.models.partners import batch_answers
+from hg_marl.agents.models.partners import Answers, batch_answers
 from hg_marl.core import Agent, State, World
 from hg_marl.core.errors import HumanError
 from hg_marl.core.spec import AgentSpec
@@ -42,10 +44,17 @@ class AnswerTable:
         packer: the builder's packer (keys include the robot action seen).
         budget: read between live answers (phase :attr:`phase`).
         arrays: answer on arrays where the human has an array version (False: always live).
+        batch: answers on arrays to use instead of the human's (the human may then be None).
     """
 
     def __init__(
-        self, world: World, human: Any, packer: StatePacker, budget: Budget | None = None, arrays: bool = True
+        self,
+        world: World,
+        human: Any,
+        packer: StatePacker,
+        budget: Budget | None = None,
+        arrays: bool = True,
+        batch: Answers | None = None,
     ) -> None:
         self.world, self.human, self.packer = world, human, packer
         self.budget = budget
@@ -60,10 +69,15 @@ class AnswerTable:
             "canonical": np.zeros(0, dtype=np.int64),
             "d_human": np.zeros(0, dtype=np.float64),
         }
-        self.batch = batch_answers(world, human) if arrays else None
+        self.batch = batch or (batch_answers(world, human) if arrays else None)
         """The human's answers on arrays (``agents/models/partners.py``), None to ask it live."""
+        self.canonical = canonical_answers(world, human, packer) if arrays and self.batch is None else None
+        """An equivariant human asked once per canonical key (``agents/models/equivariant.py``)."""
         self.live_calls = 0
         """Distributions asked of the live human (the rest came from the table)."""
+        self.relabelled: bool | None = None
+        """Whether entries carry their next state's canonical key (the builder sets it on a new
+        table: a model without symmetry reduction never reads it); None: computed."""
         self.phase = "answers"
 
     def lookup(self, keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -87,6 +101,12 @@ class AnswerTable:
             size, actions, probs_arr = self.batch(states)
             self._store(missing, size, actions, probs_arr)
             return
+        if self.canonical is not None:
+            before = self.canonical.live_calls
+            size, actions, probs_arr = self.canonical(states, seen, self._check)
+            self.live_calls += self.canonical.live_calls - before
+            self._store(missing, size, actions, probs_arr)
+            return
         wheres, ats = states.where.tolist(), states.robot_at.tolist()
         bys, objs, seens = states.offer_by.tolist(), states.offer_obj.tolist(), seen.tolist()
         acts: list[int] = []
@@ -105,17 +125,22 @@ class AnswerTable:
         self.live_calls += len(missing)
         self._store(missing, np.array(sizes, dtype=np.int64), np.array(acts, dtype=np.int64), np.array(probs))
 
+    def _check(self, i: int, total: int) -> None:
+        if self.budget is not None and i % CHECK_EVERY == 0:
+            self.budget.check(self.phase, i, total, "partner answers of this step", memory=i % 4096 == 0)
+
     def _store(self, missing: np.ndarray, size: np.ndarray, actions: np.ndarray, probs: np.ndarray) -> None:
         """Step the answers of ``missing`` once and merge them into the table."""
         b, _ = self.packer.unpack(np.repeat(missing, size))
         _, d_human, _ = self.rules.step(b, Agent.HUMAN, actions)
         nxt = self.packer.pack(b)
-        self.packer.canonical(b)
+        if self.relabelled is not False:
+            self.packer.canonical(b)
         new = {
             "actions": actions,
             "probs": probs.astype(np.float64, copy=False),
             "next": nxt,
-            "canonical": self.packer.pack(b),
+            "canonical": nxt if self.relabelled is False else self.packer.pack(b),
             "d_human": d_human,
         }
         self._merge(missing, size, new)

@@ -30,6 +30,7 @@ from tqdm import tqdm
 
 from hg_marl.agents.models.answers import AnswerTable
 from hg_marl.agents.models.budget import Budget
+from hg_marl.agents.models.lazy import TableTransitions, ranges, starts_of
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules, BatchState
@@ -74,6 +75,32 @@ class Model:
     n_layouts: int
     partner: int = 0
     """The partner the ``t_*`` and ``regen_*`` shortcuts and the solver read."""
+    lazy: TableTransitions | None = None
+    """``build_model(keep=False)``: the transitions are read from the answer tables."""
+
+    def chain(self, partner: int) -> Dynamics:
+        """Partner ``partner``'s transitions (built from its answer table when not kept)."""
+        if self.lazy is None:
+            return self.dynamics[partner]
+        t_start, t_next, t_prob, t_tau = self.gather(partner, np.arange(self.n_pairs))
+        regen_next, regen_prob, regen_tau = self.lazy.regen[partner]
+        return Dynamics(t_start, t_next, t_prob, t_tau, regen_next, regen_prob, regen_tau)
+
+    def regen(self, partner: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Partner ``partner``'s re-draw: next states, probabilities, seconds."""
+        if self.lazy is not None:
+            return self.lazy.regen[partner]
+        d = self.dynamics[partner]
+        return d.regen_next, d.regen_prob, d.regen_tau
+
+    def gather(self, partner: int, pairs: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """The transitions of ``pairs`` only: (starts, next state, probability, seconds), CSR over ``pairs``."""
+        if self.lazy is None:
+            d = self.dynamics[partner]
+            lo, size = d.t_start[pairs], d.t_start[pairs + 1] - d.t_start[pairs]
+            at = ranges(lo, size)
+            return starts_of(size), d.t_next[at], d.t_prob[at], d.t_tau[at]
+        return self.lazy.gather(partner, pairs, self.pair_terminal)
 
     def of(self, partner: int) -> Model:
         """The same model read for another partner (arrays shared)."""
@@ -217,6 +244,7 @@ def build_model(
     budget: Budget | None = None,
     progress: bool = False,
     label: str = "model",
+    keep: bool = True,
 ) -> Model:
     """The model reachable from ``layouts`` (already canonical when ``canonical``) against ``answers``.
 
@@ -225,7 +253,10 @@ def build_model(
     ``canonical``: keep one state per relabelling class (equivariant partners, as the
     oracle's symmetry reduction). The budget is read per batch of states (phase
     ``"explore"``) and between the partners' live answers; its states budget counts the
-    states known.
+    states known. ``keep=False``: the transitions are not kept per partner but read from
+    the partners' answer tables when asked (:meth:`Model.chain`, :meth:`Model.gather`):
+    a pair's transitions are its mid-cycle key's answers, and the keys are fewer than
+    the pairs (the headroom's joint model of 21 partners fits in its memory budget).
     """
     tables = [answers] if isinstance(answers, AnswerTable) else list(answers)
     budget = budget or Budget(None, None, None)
@@ -235,13 +266,20 @@ def build_model(
     n_robot = rules.n_actions[Agent.ROBOT]
     lay = BatchState.of([s for s, _ in layouts])
     lay_p = np.array([p for _, p in layouts], dtype=np.float64)
+    for t in tables:
+        if not len(t.keys):
+            t.relabelled = canonical  # a model without the reduction never reads them
+        elif canonical and t.relabelled is False:
+            raise ValueError("an answer table filled without canonical keys cannot serve a reduced model")
     regen = [_regen(world, t, lay, lay_p, canonical) for t in tables]
     index = _Index()
     index.add(_first_unique(np.concatenate([packer.pack(lay), *(r[0] for r in regen)])))
     budget.check("explore", 0, unit=f"states explored ({index.n:,} known)", states=index.n)
     for t in tables:
         t.phase = "explore: partner answers"
-    parts: dict[str, list[np.ndarray]] = {k: [] for k in ("size", "action", "terminal")}
+    parts: dict[str, list[np.ndarray]] = {
+        k: [] for k in ("size", "action", "terminal", "mid_seen", "mid_plain", "d_robot")
+    }
     flows: list[dict[str, list[np.ndarray]]] = [{k: [] for k in ("tcount", "next", "prob", "tau")} for _ in tables]
     bar = tqdm(
         desc=f"{label}: states", unit=" states", disable=not progress, file=sys.stderr, dynamic_ncols=True, leave=False
@@ -254,15 +292,13 @@ def build_model(
             budget.check("explore", lo, unit=f"states explored ({index.n:,} known)", states=index.n)
             b, _ = packer.unpack(index.keys()[lo:hi] if len(index.by_id) > 1 else index.by_id[0][lo:hi])
             mask = rules.masks(b, Agent.ROBOT)
-            ps, pa = np.nonzero(mask)
-            order_key = ps * (n_robot + 1) + pa
-            if failed_actions:
-                fails = np.flatnonzero(~mask.all(axis=1))
-                ps = np.concatenate([ps, fails])
-                pa = np.concatenate([pa, np.argmin(mask[fails], axis=1)])
-                order_key = np.concatenate([order_key, fails * (n_robot + 1) + n_robot])
-            order = np.argsort(order_key, kind="stable")
-            ps, pa = ps[order], pa[order]
+            if failed_actions:  # an extra column: the first infeasible action, after the feasible ones
+                fails = np.logical_not(mask.all(axis=1)).reshape(-1, 1)
+                ps, pa = np.nonzero(np.concatenate([mask, fails], axis=1))  # row-major: in option order
+                failing = pa == n_robot
+                pa[failing] = np.argmin(mask[ps[failing]], axis=1)
+            else:
+                ps, pa = np.nonzero(mask)
             clean = rules.is_clean(b)[ps]
             pb = _rows(b, ps)
             ok, d_robot, _ = rules.step(pb, Agent.ROBOT, pa, mask[ps])
@@ -270,10 +306,20 @@ def build_model(
             live = np.flatnonzero(~terminal)
             live_b = _rows(pb, live)
             outcomes = []
+            found: list[np.ndarray] = []
+            mids = (packer.pack(live_b, np.where(ok[live], pa[live], -1)), packer.pack(live_b))
+            if not keep:
+                for name, mid in zip(("mid_seen", "mid_plain"), mids, strict=True):
+                    keyed = np.full(len(pa), -1, dtype=np.int64)
+                    keyed[live] = mid
+                    parts[name].append(keyed)
+                parts["d_robot"].append(d_robot)
             for t in tables:
-                seen = np.where(ok[live], pa[live], -1) if t.uses_robot_action else np.full(len(live), -1, np.int64)
-                u, inv = np.unique(packer.pack(live_b, seen), return_inverse=True)
+                u, inv = np.unique(mids[0 if t.uses_robot_action else 1], return_inverse=True)
                 ans = _Answered(t, u, canonical)
+                if not keep:
+                    found.append(ans.next)
+                    continue
                 tcount = np.zeros(len(pa), dtype=np.int64)
                 tcount[live] = ans.size[inv]
                 pair_of = np.repeat(np.arange(len(pa)), tcount)
@@ -282,6 +328,14 @@ def build_model(
                 entry = np.repeat(block - np.concatenate([[0], np.cumsum(tcount)[:-1]]), tcount)
                 entry += np.arange(len(pair_of))
                 outcomes.append((tcount, pair_of, ans, entry))
+            if not keep:  # the same states: every answer of a distinct key is some pair's transition
+                index.add(np.unique(np.concatenate(found)))
+                parts["size"].append(np.bincount(ps, minlength=hi - lo))
+                parts["action"].append(pa)
+                parts["terminal"].append(terminal)
+                bar.update(hi - lo)
+                lo = hi
+                continue
             uniq, inv = np.unique(np.concatenate([o[2].next[o[3]] for o in outcomes]), return_inverse=True)
             index.add(uniq)  # sorted: new states get ids in key order
             ids = index.id_of(uniq)[inv]
@@ -309,12 +363,32 @@ def build_model(
     def starts(counts: list[np.ndarray]) -> np.ndarray:
         return np.concatenate([[0], np.cumsum(cat(counts, np.int64))]).astype(np.int64)
 
-    dynamics = [
+    if not keep:
+        regen_ids = [(index.id_of(k), p, tau) for k, p, tau in regen]
+        return Model(
+            packer=packer,
+            keys=index.keys(),
+            pair_start=starts(parts["size"]),
+            pair_action=cat(parts["action"], np.int64),
+            pair_terminal=cat(parts["terminal"], bool),
+            dynamics=[],
+            n_layouts=len(layouts),
+            lazy=TableTransitions(
+                tables,
+                index,
+                canonical,
+                cat(parts["mid_seen"], np.int64),
+                cat(parts["mid_plain"], np.int64),
+                cat(parts["d_robot"], np.float64),
+                regen_ids,
+            ),
+        )
+    dynamics = [  # each list is dropped once concatenated: the peak is one field's two copies, not all
         Dynamics(
-            t_start=starts(flow["tcount"]),
-            t_next=cat(flow["next"], np.int64),
-            t_prob=cat(flow["prob"], np.float64),
-            t_tau=cat(flow["tau"], np.float64),
+            t_start=starts(flow.pop("tcount")),
+            t_next=cat(flow.pop("next"), np.int64),
+            t_prob=cat(flow.pop("prob"), np.float64),
+            t_tau=cat(flow.pop("tau"), np.float64),
             regen_next=index.id_of(keys),
             regen_prob=prob,
             regen_tau=tau,

@@ -63,17 +63,24 @@ class StatePacker:
         )
         return b, digits[:, n + 3] - 1
 
-    def canonical(self, b: BatchState) -> None:
-        """Relabel ``b`` in place into :meth:`Relabel.canonical`'s state (each class sorted by place)."""
+    def canonical(self, b: BatchState) -> np.ndarray:
+        """Relabel ``b`` in place into :meth:`Relabel.canonical`'s state (each class sorted by place).
+
+        Returns ``orig`` (N, objects): per row, the object of the original state that each
+        object of the canonical one stands for (:meth:`Relabel.canonical`'s second value).
+        """
         offer = b.offer_obj.copy()
+        every = np.broadcast_to(np.arange(self.n_objects, dtype=np.int64), b.where.shape).copy()
         for cols in self.classes:
             block = b.where[:, cols]
             perm = np.argsort(block, axis=1, kind="stable")  # slot j holds the object cols[perm[:, j]]
             b.where[:, cols] = np.take_along_axis(block, perm, axis=1)
             orig = cols[perm]
+            every[:, cols] = orig
             hit = orig == offer[:, None]
             inside = hit.any(axis=1)
             b.offer_obj[inside] = cols[hit[inside].argmax(axis=1)]
+        return every
 
     def pack_one(self, state: State) -> int:
         """The key of one robot-turn state (as :meth:`pack` with no action seen)."""

@@ -102,7 +102,8 @@ def _preference(world: World, h: Any) -> Answers:
             score[:, pick + o] = np.where(can & np.isfinite(best), value, -np.inf)
         choice = np.full(size, wait, dtype=np.int64)
         top = np.full(size, _TIE)
-        for a in range(n_actions):
+        never = score.max(axis=0, initial=-np.inf) <= top[0] + _TIE if size else np.ones(n_actions, dtype=bool)
+        for a in np.flatnonzero(~never).tolist():  # a column no row scores above the first bar never wins
             if a == wait:
                 continue
             better = score[:, a] > top + _TIE

@@ -262,3 +262,121 @@ def test_a_softmax_preference_is_answered_live() -> None:
     world = World("paper2015")
     assert batch_answers(world, stationary_human("preference:temperature=0.5", world)) is None
     assert batch_answers(world, stationary_human("random:feasible_only=false", world)) is None
+
+
+EQUIVARIANT = ("cooperative", "cooperative:p_idle=0.2", "noisy", "noisy:temperature=0")
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "roboergosum"])
+def test_canonical_answers_are_the_live_humans_answers(scenario: str) -> None:
+    """Asked once per canonical key and mapped back, the answers are the live human's at every state and seen."""
+    from hg_marl.agents.models.equivariant import canonical_answers
+
+    world = World(scenario)
+    states = mid_states(world, 1500 if scenario == "roboergosum" else 3000)
+    b = BatchState.of(states)
+    rng = np.random.default_rng(2)
+    seen = rng.integers(-1, world.n_actions(0), size=len(states))
+    for spec in EQUIVARIANT:
+        table = canonical_answers(world, stationary_human(spec, world), StatePacker(world))
+        assert table is not None, spec
+        sizes, actions, probs = table(b, seen, lambda i, n: None)
+        assert table.live_calls < len(states)  # relabelled states and alike actions share one live answer
+        fresh = stationary_human(spec, world)  # a separate instance: no answer shared through a memo
+        at = 0
+        for i, s in enumerate(states):
+            expected = [(h, p) for h, p in fresh.distribution(world, s, int(seen[i])) if p > 0.0]
+            got = list(zip(actions[at : at + sizes[i]].tolist(), probs[at : at + sizes[i]].tolist(), strict=True))
+            assert got == expected, (spec, s, int(seen[i]))
+            at += sizes[i]
+
+
+def test_a_partner_that_is_not_equivariant_is_not_asked_by_canonical_key() -> None:
+    from hg_marl.agents.models.equivariant import canonical_answers
+
+    world = World("roboergosum")
+    for spec in ("lazy", "no_handover", "adversarial"):
+        assert canonical_answers(world, stationary_human(spec, world), StatePacker(world)) is None
+
+
+def full_chain_rate(model: Any, choice: np.ndarray, i: int) -> float:
+    """A policy's rate on the whole joint model (the evaluation before it was restricted to the states reached)."""
+    import math
+
+    from scipy import sparse
+    from scipy.sparse.linalg import spsolve
+
+    t_pair, t_next, t_prob, t_tau = model.arrays(i)
+    n = model.n
+    chosen = np.zeros(model.n_pairs, dtype=bool)
+    chosen[choice] = True
+    done = model.terminal[choice]
+    keep = chosen[t_pair]
+    rows, cols, probs, taus = model.pair_state[t_pair[keep]], t_next[keep], t_prob[keep], t_tau[keep]
+    graph = sparse.csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(n, n))
+
+    def backward(seeds: np.ndarray) -> np.ndarray:
+        found = seeds.copy()
+        while True:  # grow by one step at a time until nothing changes
+            grown = found | ((graph @ found.astype(float)) > 0)
+            if (grown == found).all():
+                return found
+            found = grown
+
+    certain = ~backward(~backward(done))
+    idx = np.flatnonzero(certain)
+    pos = np.full(n, -1)
+    pos[idx] = np.arange(len(idx))
+    values = np.full(n, math.inf)
+    inner = certain[rows] & certain[cols] & ~done[rows]
+    p = sparse.csr_matrix((probs[inner], (pos[rows[inner]], pos[cols[inner]])), shape=(len(idx), len(idx)))
+    src = certain[rows] & ~done[rows]
+    c = np.bincount(pos[rows[src]], weights=(probs * taus)[src], minlength=len(idx))
+    values[idx] = spsolve((sparse.identity(len(idx), format="csr") - p).tocsc(), c)
+    chain = model.chain(i)
+    regen = zip(chain.regen_next, chain.regen_prob, chain.regen_tau, strict=True)
+    expected = math.fsum(p * (t + values[s]) for s, p, t in regen)
+    return 0.0 if math.isinf(expected) else 3600.0 / expected
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "forced_coordination"])
+def test_a_policy_rate_on_the_states_it_reaches_is_its_rate_on_the_whole_model(scenario: str) -> None:
+    from hg_marl.agents.headroom import JointModel
+    from hg_marl.agents.models.layouts import layout_distribution as layouts_of
+
+    world = World(scenario)
+    specs = ["cooperative", "lazy:p_idle=0.5", "adversarial", "random", "preference:handover=-1,shared=1"]
+    packer = StatePacker(world)
+    tables = [AnswerTable(world, stationary_human(h, world), packer) for h in specs]
+    model = JointModel.from_model(world, build_model(world, tables, layouts_of(world)))
+    rates = []
+    for i in range(len(specs)):
+        choice = model.optimal_policy(i)
+        for j in range(len(specs)):
+            rates.append(model.rate(choice, j))
+            assert rates[-1] == pytest.approx(full_chain_rate(model, choice, j), rel=1e-9, abs=1e-9), (i, j)
+    assert 0.0 in rates and min(r for r in rates if r > 0) < max(rates)  # the adversarial column: some never finish
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "forced_coordination"])
+def test_transitions_read_from_the_answer_tables_are_the_kept_ones(scenario: str) -> None:
+    """``build_model(keep=False)`` gives every partner the same transitions as the kept model, pair by pair."""
+    from hg_marl.agents.models.layouts import layout_distribution as layouts_of
+
+    world = World(scenario)
+    specs = ["cooperative", "lazy:p_idle=0.5", "random", "preference:handover=-1,shared=1"]
+    models = []
+    for keep in (True, False):
+        packer = StatePacker(world)
+        tables = [AnswerTable(world, stationary_human(h, world), packer) for h in specs]
+        models.append(build_model(world, tables, layouts_of(world), keep=keep))
+    kept, lazy = models
+    assert np.array_equal(kept.keys, lazy.keys) and np.array_equal(kept.pair_action, lazy.pair_action)
+    rng = np.random.default_rng(0)
+    for i in range(len(specs)):
+        a, b = kept.chain(i), lazy.chain(i)
+        for field in ("t_start", "t_next", "t_prob", "t_tau", "regen_next", "regen_prob", "regen_tau"):
+            assert np.array_equal(getattr(a, field), getattr(b, field)), (i, field)
+        pairs = np.sort(rng.choice(kept.n_pairs, size=50, replace=False))
+        for x, y in zip(kept.gather(i, pairs), lazy.gather(i, pairs), strict=True):
+            assert np.array_equal(x, y)

@@ -151,7 +151,7 @@ def test_human_disk_cache_file_name_reuse_and_rebuild(
         raise AssertionError("built again")
 
     with monkeypatch.context() as m:  # a matching entry is loaded, never rebuilt
-        m.setattr(compiled, "enumerate_answers", no_build)
+        m.setattr(compiled, "answer_table", no_build)
         loaded = compile_human(world, "lazy", cache=str(tmp_path))
         assert (loaded.keys == first.keys).all() and (loaded.actions == first.actions).all()
     compiled.save_table(path, "0" * 64, {"keys": np.zeros(1, dtype=np.int64)})  # a foreign entry at the path

@@ -1,0 +1,132 @@
+"""An equivariant partner's answers asked once per canonical state and mapped back on arrays.
+
+A partner is *equivariant* when relabelling interchangeable objects in the state relabels
+its answer (``equivariant = True``: the planner-driven ``cooperative`` and ``noisy``), and
+some read the robot's action seen only through a class of actions answered alike
+(``seen_representatives``: the cooperative human's planner reads its duration and
+whether it is a wait or a give). Its answer at a mid-cycle state is then its answer at
+the canonical state (:meth:`~hg_marl.agents.models.packing.StatePacker.canonical`), seen
+the class's representative, with each action's object mapped back through the
+relabelling. :class:`CanonicalAnswers` asks the live partner once per such canonical key
+(its own rule, unchanged: nothing is restated here) and answers every other key of a
+batch with array look-ups: on ``roboergosum``'s headroom model the cooperative human's
+2.5 million (state, robot action seen) keys are 57 thousand canonical ones.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from hg_marl.agents.models.packing import StatePacker
+from hg_marl.core import Agent, Kind, State, World
+from hg_marl.core.relabel import Relabel
+from hg_marl.envs.batched import BatchState
+
+Check = Callable[[int, int], None]
+"""Called with (live answers done, live answers of this batch) between live answers."""
+
+
+def canonical_answers(world: World, human: Any, packer: StatePacker) -> CanonicalAnswers | None:
+    """The canonical-key answers of ``human``, or None when it is not equivariant in this way."""
+    if not getattr(human, "equivariant", False):
+        return None
+    uses = bool(getattr(human, "uses_robot_action", False))
+    if uses and not callable(getattr(human, "seen_representatives", None)):
+        return None
+    return CanonicalAnswers(world, human, packer)
+
+
+def object_slots(world: World, agent: Agent) -> tuple[np.ndarray, np.ndarray]:
+    """(slot, remap): the object each action names (-1: none) and ``remap[a, o]``, action ``a`` on object ``o``.
+
+    Built with :meth:`Relabel.action_back` itself (the relabelling's one definition): an
+    ``orig`` with ``o`` at the action's object is all it reads.
+    """
+    table, relabel = world.table, Relabel(world)
+    n = table.n_objects
+    specs = table.specs[agent]
+    slot = np.full(len(specs), -1, dtype=np.int64)
+    remap = np.repeat(np.arange(len(specs), dtype=np.int64)[:, None], n, axis=1)
+    for a, (kind, obj, target, _) in enumerate(specs):
+        j = obj if obj >= 0 else (target if kind is Kind.GOTO and target < n else -1)
+        if j < 0:
+            continue
+        slot[a] = j
+        for o in range(n):
+            orig = list(range(n))
+            orig[j] = o
+            remap[a, o] = relabel.action_back(int(agent), a, tuple(orig))
+    return slot, remap
+
+
+class CanonicalAnswers:
+    """Answers by canonical (state, representative seen) key; the live partner asked once per key."""
+
+    def __init__(self, world: World, human: Any, packer: StatePacker) -> None:
+        self.world, self.human, self.packer = world, human, packer
+        self.uses_robot_action = bool(getattr(human, "uses_robot_action", False))
+        reps = human.seen_representatives(world) if self.uses_robot_action else []
+        self.rep = np.array([*reps, -1], dtype=np.int64)
+        """``rep[seen]``: the representative of the robot action seen (``seen = -1``: -1)."""
+        self.slot, self.remap = object_slots(world, Agent.HUMAN)
+        self.keys = np.zeros(0, dtype=np.int64)
+        self.starts = np.zeros(1, dtype=np.int64)
+        self.actions = np.zeros(0, dtype=np.int64)
+        self.probs = np.zeros(0, dtype=np.float64)
+        self.live_calls = 0
+        """Distributions asked of the live partner (one per canonical key)."""
+
+    def __call__(self, states: BatchState, seen: np.ndarray, check: Check) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(entries per state, actions, probabilities) of a batch, entries in index order per state."""
+        canon = BatchState(states.where.copy(), states.robot_at.copy(), states.offer_by.copy(), states.offer_obj.copy())
+        orig = self.packer.canonical(canon)
+        rep = self.rep[seen] if self.uses_robot_action else np.full(len(seen), -1, dtype=np.int64)
+        keys = self.packer.pack(canon, rep)
+        uniq, first, inv = np.unique(keys, return_index=True, return_inverse=True)
+        self._ask(uniq, first, canon, rep, check)
+        at = np.searchsorted(self.keys, uniq)[inv]
+        start, size = self.starts[at], self.starts[at + 1] - self.starts[at]
+        rows = np.repeat(np.arange(len(keys)), size)
+        entry = np.repeat(start - np.concatenate([[0], np.cumsum(size)[:-1]]), size) + np.arange(len(rows))
+        act = self.actions[entry]
+        slot = self.slot[act]
+        back = np.where(slot >= 0, self.remap[act, orig[rows, np.maximum(slot, 0)]], act)
+        order = np.lexsort((back, rows))  # the live partner lists a distribution in index order
+        return size, back[order], self.probs[entry][order]
+
+    def _ask(self, uniq: np.ndarray, first: np.ndarray, canon: BatchState, rep: np.ndarray, check: Check) -> None:
+        """Ask the live partner for the canonical keys of ``uniq`` not known yet, and store them."""
+        if len(self.keys):
+            pos = np.minimum(np.searchsorted(self.keys, uniq), len(self.keys) - 1)
+            new = np.flatnonzero(self.keys[pos] != uniq)
+        else:
+            new = np.arange(len(uniq))
+        if not len(new):
+            return
+        rows = first[new].tolist()
+        wheres, ats = canon.where[rows].tolist(), canon.robot_at[rows].tolist()
+        bys, objs, reps = canon.offer_by[rows].tolist(), canon.offer_obj[rows].tolist(), rep[rows].tolist()
+        sizes = [0] * len(rows)
+        acts: list[int] = []
+        probs: list[float] = []
+        world, distribution = self.world, self.human.distribution
+        for i in range(len(rows)):
+            check(i, len(rows))
+            for h, p in distribution(world, State(tuple(wheres[i]), ats[i], bys[i], objs[i]), reps[i]):
+                if p > 0.0:
+                    acts.append(h)
+                    probs.append(p)
+                    sizes[i] += 1
+        self.live_calls += len(rows)
+        keys = np.concatenate([self.keys, uniq[new]])
+        size = np.concatenate([np.diff(self.starts), np.array(sizes, dtype=np.int64)])
+        first_entry = np.concatenate([self.starts[:-1], len(self.actions) + np.cumsum([0, *sizes[:-1]])])
+        actions = np.concatenate([self.actions, np.array(acts, dtype=np.int64)])
+        all_probs = np.concatenate([self.probs, np.array(probs, dtype=np.float64)])
+        order = np.argsort(keys, kind="stable")
+        self.starts = np.concatenate([[0], np.cumsum(size[order])]).astype(np.int64)
+        gather = np.repeat(first_entry[order] - self.starts[:-1], size[order]) + np.arange(self.starts[-1])
+        self.keys, self.actions, self.probs = keys[order], actions[gather], all_probs[gather]

@@ -1,0 +1,84 @@
+"""The compiled partners' tables, built by the model builder, equal the Python enumeration's.
+
+Expected values: ``tests/agents/reference_compiled.py`` (the compiler before it used the
+builder: one state at a time, one live answer per key, ``cum`` per key with numpy).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from hg_marl.agents.compiled import CompiledHuman, answer_table, compile_human
+from hg_marl.agents.humans.registry import make_human
+from hg_marl.core import Agent, World
+from tests.agents.reference_compiled import enumerate_answers, reference_arrays
+
+
+def live(spec: str, world: World):  # type: ignore[no-untyped-def]
+    human = make_human(spec)
+    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    return human
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "forced_coordination"])
+@pytest.mark.parametrize(
+    ("spec", "closure"),
+    [
+        ("cooperative", ()),
+        ("lazy", ()),
+        ("random", ()),
+        ("noisy", ()),
+        ("preference:accept=0.5,p_idle=0.3", ()),
+        ("cooperative:p_idle=0.2", ()),
+        ("lazy", ("no_handover", "adversarial")),
+    ],
+)
+def test_the_builders_table_is_the_python_enumerations(scenario: str, spec: str, closure: tuple[str, ...]) -> None:
+    world = World(scenario)
+    expected = reference_arrays(
+        world, enumerate_answers(world, live(spec, world), closure=[live(c, world) for c in closure])
+    )
+    got = CompiledHuman.arrays_of(
+        world, answer_table(world, live(spec, world), closure=[live(c, world) for c in closure])
+    )
+    for field in ("keys", "starts", "actions", "cum"):
+        assert np.array_equal(got[field], expected[field]), field
+
+
+def test_a_table_over_the_key_budget_is_refused_in_one_line() -> None:
+    from hg_marl.agents.compiled import CompileError
+
+    world = World("paper2015")
+    n = len(enumerate_answers(world, live("random", world)))
+    with pytest.raises(CompileError, match="budget of"):
+        compile_human(world, "random", cache=None, max_keys=n - 1)
+    assert len(compile_human(world, "random", cache=None, max_keys=n)) == n
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "forced_coordination", "generated:objects=2,seed=4,human_only=0.8"])
+def test_the_compiled_robots_states_are_the_python_enumerations(scenario: str) -> None:
+    from hg_marl.agents.compiled_robot import robot_states
+    from hg_marl.agents.models import StatePacker
+    from tests.agents.reference_compiled import reference_robot_states
+
+    world = World(scenario)
+    keys = robot_states(world)
+    b, _ = StatePacker(world).unpack(keys)
+    assert {b.state(i) for i in range(len(b))} == reference_robot_states(world)
+    assert len(set(keys.tolist())) == len(keys)
+
+
+def test_the_compiled_robots_table_is_the_cold_planners_answer_on_sampled_states() -> None:
+    from hg_marl.agents.compiled_robot import compile_robot, planner_action
+    from hg_marl.envs.batched import BatchState
+
+    world = World("paper2015")
+    robot = compile_robot(world, cache=None)
+    rng = np.random.default_rng(3)
+    from hg_marl.agents.models import StatePacker
+
+    b, _ = StatePacker(world).unpack(robot.keys[rng.choice(len(robot.keys), size=40, replace=False)])
+    states = [b.state(i) for i in range(len(b))]
+    actions, found = robot.plan(BatchState.of(states))
+    assert found.all() and actions.tolist() == [planner_action(world, s) for s in states]
