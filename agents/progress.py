@@ -12,12 +12,14 @@ the guard counts that and nothing else.
 
 The rule (one rule, a scalar form :class:`ProgressGuard` for the live robots and an
 array form :class:`ArrayProgressGuard` for the compiled robot in the human's batched
-seat; ``tests/agents/test_progress.py`` checks that both choose alike):
+seat; ``tests/agents/test_progress.py`` checks that both choose alike; the robots that
+use it: ``planner``, ``hybrid``, ``belief``, ``memory`` and the ``oracle`` off its model):
 
 - ``unchanged`` counts the consecutive robot turns at which the state equals the state
   at the previous robot turn; any change zeroes it; a new run starts at 0.
 - When ``unchanged >= K`` the robot does not play its expert's move: it takes the
-  ``(m mod n)``-th feasible non-``wait`` action in index order, where ``n`` is the number
+  ``(m mod n)``-th feasible non-``wait`` action in index order (in the robot's own order of
+  preference when it ranks its actions: the ``memory`` robot's policy), where ``n`` is the number
   of such actions and ``m`` the guard moves it took since the run started (so a stall that
   comes back tries the next move, and a guard move that itself changes nothing is followed
   by the next option at once); ``wait`` only when nothing else is feasible. A feasible
@@ -39,6 +41,9 @@ mix gains 0.8 tasks), and against a partner who refuses every offer a stall cost
 
 from __future__ import annotations
 
+import math
+from collections.abc import Sequence
+
 import numpy as np
 
 from hg_marl.core import Agent, State, World
@@ -47,10 +52,22 @@ PROGRESS_AFTER = 12
 """``K``: robot turns in a row at an unchanged state after which the guard takes a move."""
 
 
-def guard_option(world: World, state: State, taken: int, agent: Agent = Agent.ROBOT) -> int:
-    """The guard's move at ``state``: the ``(taken mod n)``-th feasible non-wait action, ``wait`` if none."""
+def guard_option(
+    world: World, state: State, taken: int, agent: Agent = Agent.ROBOT, prefer: Sequence[float] | None = None
+) -> int:
+    """The guard's move at ``state``: the ``(taken mod n)``-th feasible non-wait action, ``wait`` if none.
+
+    The options are in index order, or, when the robot ranks its actions (``prefer``,
+    one score per action: a learned policy's logits), best first (ties in index order):
+    the same rule, with the robot's own second choice first in line. A score of ``-inf``
+    takes the action out (the move the robot keeps choosing, which changed nothing),
+    unless nothing else is left.
+    """
     wait = world.n_actions(agent) - 1
     options = [i for i in world.feasible_indices(state, agent) if i != wait]
+    if prefer is not None:
+        options = [i for i in options if float(prefer[i]) > -math.inf] or options
+        options.sort(key=lambda i: (-float(prefer[i]), i))
     return options[taken % len(options)] if options else wait
 
 
@@ -85,9 +102,11 @@ class ProgressGuard:
         """Whether the state has not changed for ``K`` robot turns in a row."""
         return self.unchanged >= self.after
 
-    def move(self, world: World, state: State, agent: Agent = Agent.ROBOT) -> int:
-        """The guard's move at ``state`` (counted when it is not ``wait``)."""
-        action = guard_option(world, state, self.moves, agent)
+    def move(
+        self, world: World, state: State, agent: Agent = Agent.ROBOT, prefer: Sequence[float] | None = None
+    ) -> int:
+        """The guard's move at ``state`` (counted when it is not ``wait``); ``prefer``: :func:`guard_option`."""
+        action = guard_option(world, state, self.moves, agent, prefer)
         self.moves += int(action != world.n_actions(agent) - 1)
         return action
 

@@ -50,8 +50,10 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   keeps a member who accepts offers often enough to explain each refusal), it takes the
   guard's feasible move, whatever the belief says (``reason="no_progress"``).
 
-The members' oracles are solved at the first reset in a world and kept for the
-robot's lifetime (a pure cache: the same inputs give the same values).
+Each member's oracle is solved the first time a decision consults it (under ``map`` and a
+uniform prior the first move needs one member) and kept by content, in the process and
+in the folder ``cache`` names (:mod:`hg_marl.agents.member_models`): the same inputs give
+the same values, so the robot decides as if every member had been solved at the start.
 """
 
 from __future__ import annotations
@@ -62,9 +64,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from hg_marl.agents.models.answers import stationary_human
-from hg_marl.agents.models.python_model import PythonModel
-from hg_marl.agents.oracle import OracleResult, OracleRobot, oracle_rate
+from hg_marl.agents.member_models import MemberModels
+from hg_marl.agents.oracle import OracleResult, OracleRobot
 from hg_marl.agents.partner import PartnerPosterior
 from hg_marl.agents.partner_model import LearnedPartner
 from hg_marl.agents.planner.space import Relabel
@@ -103,6 +104,8 @@ class BeliefRobot(Robot):
             ``"learned"`` (a partner model learned online from this partner's answers,
             :class:`~hg_marl.agents.partner_model.LearnedPartner`; its prequential evidence
             competes with the members').
+        cache: a folder that keeps the members' solved models by content (empty:
+            ``$HG_MARL_CACHE/oracle`` when set, else none), so a later robot reads them.
     """
 
     name = "belief"
@@ -117,6 +120,7 @@ class BeliefRobot(Robot):
         unknown: float = 0.05,
         probe: float = 0.0,
         open_world: str = "uniform",
+        cache: str = "",
     ) -> None:
         from hg_marl.agents.humans.population import load_population
 
@@ -153,30 +157,25 @@ class BeliefRobot(Robot):
             self.posterior = PartnerPosterior(types=types, prior=prior, decay=decay, epsilon=epsilon, learned=learned)
         except ValueError as exc:
             raise RobotError(f"belief: {exc}") from None
-        self._world: World | None = None
-        self._results: list[OracleResult] = []
-        self._models: list[PythonModel] = []
+        self.members = MemberModels(self.member_specs, cache)
         self._fallback = OracleRobot(result=None)
         self._planner = PlannerRobot()
         self._prev: tuple[State, int] | None = None
         self.progress = ProgressGuard()
 
     def _reset(self, world: World) -> None:
-        """Solve each member's oracle (once per world) and forget the previous run's evidence."""
+        """Forget the previous run's evidence (members' models are solved when first consulted)."""
         if self.agent is not Agent.ROBOT:
             raise RobotError("belief plays the robot seat only")
-        if self._world is None or self._world.scenario != world.scenario:
-            self._results = [oracle_rate(world, spec) for spec in self.member_specs]
-            humans = [stationary_human(spec, world) for spec in self.member_specs]
-            self._models = [PythonModel(world, h, True, 1) for h in humans]
-            self._world = world
+        self.members.reset(world)
         self._relabel = Relabel(world)
         self._wait = world.n_actions(Agent.ROBOT) - 1
         self._planner_mode = False
         self._wait_run = 1.0
         self.posterior.reset()
         self._prev = None
-        self._fallback.result = self._results[0]
+        # The fallback robot plays only its off-model move: an empty policy keeps it from solving one.
+        self._fallback.result = OracleResult(0.0, math.inf, 0, 0, 0, 0, True, {}, {}, scenario=world.scenario.name)
         self._fallback.reset(world, self.agent, self.rng)
         self._planner.reset(world, self.agent, self.rng.spawn(1)[0])
         self._off_population = False
@@ -194,7 +193,7 @@ class BeliefRobot(Robot):
 
     def q_values(self, world: World, state: State, member: int) -> dict[int, float]:
         """Member ``member``'s expected seconds to the next success after each feasible robot action."""
-        result, model = self._results[member], self._models[member]
+        result, model = self.members.result(member), self.members.model(member)
         table = world.table
         out: dict[int, float] = {}
         for a in world.feasible_indices(state, Agent.ROBOT):
@@ -314,6 +313,10 @@ class BeliefRobot(Robot):
             )
         self._prev = (state, int(action))
         return int(action)
+
+    def members_built(self) -> list[int]:
+        """The members whose models have been solved (or read from a cache) so far."""
+        return self.members.built()
 
     def information(self, world: World, state: State, action: int, weights: list[float]) -> float:
         """Mutual information (nats) between the member and the partner's reply to ``action``.

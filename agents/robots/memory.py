@@ -10,11 +10,14 @@ new episode) and is carried from turn to turn. The turn's mask is always applied
 policy was trained masked), so its action is always feasible.
 
 Stalls. A policy trained with partners who always do their share may wait for a partner
-who never will (both wait forever on a table that is still solvable). After ``unstall``
-turns (default 8) in which the robot waited and the partner made no progress (the
-history's counter), the robot takes the policy's best feasible action other than
-``wait``, so it never idles forever beside an idle partner; ``unstall=0`` plays the
-policy as trained.
+who never will (both wait forever on a table that is still solvable), or repeat an offer
+such a partner refuses. The robot obeys the progress guard every robot obeys
+(:mod:`hg_marl.agents.progress`) with ``K = unstall`` (default 8, the value this robot's
+earlier rule was measured with, ``docs/learned-robots.md``): after ``unstall`` turns at an
+unchanged state it takes the guard's move, in the policy's own order of preference (its
+best feasible action other than ``wait`` and other than the move it keeps choosing
+first), so it never idles forever beside an idle partner nor repeats a refused offer;
+``unstall=0`` plays the policy as trained.
 
 Decision time: the habit's deterministic constant, as for the ``sb3`` robot.
 ``deterministic=False`` samples the policy with the robot's own generator. The forward
@@ -32,6 +35,7 @@ import numpy as np
 from hg_marl.agents.memory_numpy import NumpyMemoryPolicy
 from hg_marl.agents.meta.cost import CostModel
 from hg_marl.agents.model_file import check_world, load_model_file
+from hg_marl.agents.progress import ProgressGuard
 from hg_marl.agents.robots.base import Robot
 from hg_marl.core import Agent, World
 from hg_marl.core.errors import RobotError, check_int
@@ -49,8 +53,8 @@ class MemoryRobot(Robot):
         net: an in-memory policy instead of ``path`` (with ``history``): anything with
             ``initial(n)`` and ``step(obs, h) -> (logits, h)`` on numpy arrays.
         history: the history length of ``net``.
-        unstall: after this many turns in which the robot waited and its partner made no
-            progress, take the policy's best feasible action other than ``wait`` (0: never).
+        unstall: the progress guard's ``K`` (after this many turns at an unchanged state,
+            the policy's best feasible action other than ``wait``; 0: never).
     """
 
     name = "memory"
@@ -76,8 +80,7 @@ class MemoryRobot(Robot):
             history, self.cap = net.shape.history, net.shape.cap
         self.net, self.history = net, int(history)
         self.unstall = check_int(unstall, "unstall", minimum=0, error=RobotError)
-        self.waits = 0
-        """Consecutive turns the robot has waited."""
+        self.progress = ProgressGuard(self.unstall) if self.unstall else None
         self.tracker: HistoryTracker | None = None
         self.h: Any = None
         self.last_obs: np.ndarray | None = None
@@ -90,7 +93,8 @@ class MemoryRobot(Robot):
             check_world(self.file, world, Agent.ROBOT)
         self.tracker = HistoryTracker(world, self.history, 1, self.cap)
         self.h = self.net.initial(1)
-        self.waits = 0
+        if self.progress is not None:
+            self.progress.reset()
 
     def act(self, turn: Turn) -> int:
         """The policy's action for the facts and the history so far (masked)."""
@@ -104,18 +108,21 @@ class MemoryRobot(Robot):
         self.last_obs = np.concatenate([facts, self.tracker.features(Agent.ROBOT)[0]])
         logits, self.h = self.net.step(self.last_obs[None, :].astype(np.float64), self.h)
         mask = np.asarray(turn.mask).astype(bool)
-        wait = turn.world.table.wait[Agent.ROBOT]
-        stalled = self.unstall and self.waits >= self.unstall
-        if stalled and self.tracker.since[0, 1] >= min(self.unstall, self.cap) and mask.sum() > 1:
-            mask = mask.copy()
-            mask[wait] = False  # both idle: move on with the policy's best other feasible action
         scores = np.where(mask, logits[0], -np.inf)
+        if self.progress is not None and self.progress.observe(turn.state):
+            # Nothing changed for K turns: the guard's move in the policy's order, without
+            # the move the policy keeps choosing (it changed nothing).
+            prefer = scores.copy()
+            prefer[int(np.argmax(scores))] = -np.inf
+            action = self.progress.move(turn.world, turn.state, self.agent, prefer=prefer)
+            wall = time.perf_counter() - t0
+            self._record("guard", action, reason="no_progress", decision_time=self.cost.habit_cost(wall))
+            return action
         if self.deterministic:
             action = int(np.argmax(scores))
         else:
             p = np.exp(scores - scores.max())
             action = int(self.rng.choice(len(p), p=p / p.sum()))
-        self.waits = self.waits + 1 if action == wait else 0
         wall = time.perf_counter() - t0
         self._record("memory", action, planning_time=wall, decision_time=self.cost.habit_cost(wall))
         return action

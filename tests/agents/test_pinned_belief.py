@@ -74,7 +74,7 @@ def test_a_robot_reused_in_another_world_solves_that_worlds_oracles(tmp_path: Pa
     fresh = BeliefRobot(population=population, splits="train")
     pd.testing.assert_frame_equal(_log(reused, MAT, other), _log(fresh, MAT, other))
     world = World(other)
-    assert [r.rate_per_hour for r in reused._results] == pytest.approx(
+    assert [reused.members.result(m).rate_per_hour for m in range(2)] == pytest.approx(
         [oracle_rate(world, spec).rate_per_hour for spec in (COOP, MAT)]
     )
 

@@ -17,9 +17,9 @@ import pytest
 
 from hg_marl.agents.humans import make_human
 from hg_marl.agents.oracle import OracleResult, OracleRobot
-from hg_marl.agents.progress import PROGRESS_AFTER, ArrayProgressGuard, ProgressGuard
+from hg_marl.agents.progress import PROGRESS_AFTER, ArrayProgressGuard, ProgressGuard, guard_option
 from hg_marl.agents.robots import make_robot
-from hg_marl.core import Agent, State, World
+from hg_marl.core import Agent, Kind, State, World
 from hg_marl.envs.batched import BatchState
 from hg_marl.policy import Turn
 from hg_marl.training.runner import RunConfig, run
@@ -84,6 +84,25 @@ def test_scalar_guard_fires_at_the_k_plus_first_unchanged_turn_and_cycles_option
     assert not guard.observe(other) and guard.unchanged == 0
 
 
+def test_a_robot_that_ranks_its_moves_gets_them_in_its_order() -> None:
+    # prefer = the action index: the highest feasible non-wait index is the robot's first
+    # choice, then the next lower one (by hand: the index-order options, reversed).
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(0))
+    prefer = np.arange(world.n_actions(Agent.ROBOT), dtype=float)
+    n = len([i for i in world.feasible_indices(state, Agent.ROBOT) if i != world.n_actions(Agent.ROBOT) - 1])
+    by_index = [expected_option(world, state, k) for k in range(n)]
+    guard = ProgressGuard(1)
+    ranked = [guard.move(world, state, prefer=prefer) for _ in range(n + 1)]
+    assert ranked == [*by_index[::-1], by_index[-1]]  # and round again
+    assert guard_option(world, state, 0, prefer=-prefer) == by_index[0]  # reversed scores: index order
+    out = prefer.copy()
+    out[by_index[-1]] = -np.inf  # the move that changed nothing is no option
+    assert [guard_option(world, state, k, prefer=out) for k in range(n - 1)] == by_index[-2::-1]
+    alone = np.full(len(prefer), -np.inf)  # nothing else left: the guard's options stand
+    assert guard_option(world, state, 0, prefer=alone) == by_index[0]
+
+
 def test_array_guard_chooses_as_the_scalar_one() -> None:
     world = World("paper2015")
     rng = np.random.default_rng(3)
@@ -126,7 +145,28 @@ def _oracle_off_model() -> Any:
     return OracleRobot(result=empty)
 
 
+class OfferFirst:
+    """A memory policy stub (the numpy player's interface) that ranks every offer first, then wait."""
+
+    def __init__(self, world: World) -> None:
+        acts = world.actions(Agent.ROBOT)
+        self.logits = np.array([2.0 if a.kind is Kind.GIVE else 0.0 for a in acts])
+        self.logits[world.n_actions(Agent.ROBOT) - 1] = 1.0
+
+    def initial(self, n: int = 1) -> np.ndarray:
+        return np.zeros((n, 0))
+
+    def step(self, obs: np.ndarray, h: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        return self.logits[None, :].copy(), h
+
+
+def _memory() -> Any:
+    # offers whenever it can, waits otherwise: a refusing partner leaves it offering or waiting
+    return make_robot("memory", net=OfferFirst(World(SCENARIO)), unstall=K)
+
+
 ROBOTS: dict[str, Any] = {
+    "memory": _memory,
     "planner": lambda: make_robot("planner"),
     "planner_partner_aware": lambda: make_robot("planner", partner_aware=True),
     "hybrid": lambda: make_robot("hybrid"),
