@@ -31,8 +31,8 @@ from collections import OrderedDict
 from pathlib import Path
 from typing import Any
 
-from hg_marl.agents.models.cache import cache_folder, result_key
 from hg_marl.agents.models.answers import stationary_human
+from hg_marl.agents.models.cache import cache_folder, result_key
 from hg_marl.agents.models.python_model import PythonModel
 from hg_marl.agents.oracle import OracleResult, oracle_rate
 from hg_marl.core import World
