@@ -1,0 +1,91 @@
+"""SB3 model-file pieces checked against values worked by hand (``agents/model_sb3.py``).
+
+A Dict space round-trips through its JSON; a space type that is not one of the four is
+refused by name. Saved state may nest at most 20 levels: a scalar wrapped in 20 lists is
+read back, in 21 it is refused. A replay buffer is restored only from arrays of the
+buffer's own dtype, and its position is any of ``0 .. buffer_size - 1``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from types import SimpleNamespace
+from typing import Any
+
+import numpy as np
+import pytest
+from gymnasium import spaces
+
+from hg_marl.agents.model_sb3 import (
+    _unflatten,
+    load_replay_buffer,
+    save_replay_buffer,
+    space_from_json,
+    space_to_json,
+)
+from hg_marl.core.errors import ModelFileError
+
+
+def test_a_dict_space_round_trips() -> None:
+    space = spaces.Dict({"a": spaces.Discrete(3), "b": spaces.MultiBinary(2)})
+    back = space_from_json(space_to_json(space), "h")
+    assert isinstance(back, spaces.Dict)
+    assert back == space
+
+
+def test_an_unknown_space_type_is_refused_by_name() -> None:
+    with pytest.raises(ModelFileError, match="unknown space type 'Tuple'"):
+        space_from_json({"type": "Tuple", "spaces": [{"type": "Discrete", "n": 2}]}, "h")
+
+
+def _nested(levels: int) -> Any:
+    tree: Any = 7
+    for _ in range(levels):
+        tree = [tree]
+    return tree
+
+
+def test_state_nested_in_twenty_lists_is_read_back() -> None:
+    assert _unflatten(_nested(20), {}, "h") == _nested(20)
+
+
+def test_state_nested_in_twenty_one_lists_is_refused() -> None:
+    with pytest.raises(ModelFileError, match="nested too deeply"):
+        _unflatten(_nested(21), {}, "h")
+
+
+def _buffer(dtype: Any, pos: int = 0) -> SimpleNamespace:
+    size = 4
+    return SimpleNamespace(
+        observations=np.arange(size * 2, dtype=dtype).reshape(size, 2) * (pos + 1),
+        actions=np.full((size, 1), pos, dtype=np.int64),
+        buffer_size=size,
+        pos=pos,
+        full=False,
+    )
+
+
+def test_a_buffer_is_restored_with_its_position(tmp_path: Path) -> None:
+    source = _buffer(np.float64, pos=3)
+    entry = save_replay_buffer(source, tmp_path / "buffer.npz")
+    target = _buffer(np.float64)
+    load_replay_buffer(target, tmp_path / "model.json", entry)
+    assert (target.pos, target.full) == (3, False)
+    assert target.observations.tolist() == [[0, 4], [8, 12], [16, 20], [24, 28]]
+    assert target.actions.tolist() == [[3], [3], [3], [3]]
+
+
+@pytest.mark.parametrize("pos", [-1, 4])
+def test_a_position_outside_the_buffer_is_refused(tmp_path: Path, pos: int) -> None:
+    entry = save_replay_buffer(_buffer(np.float64), tmp_path / "buffer.npz")
+    with pytest.raises(ModelFileError, match="out of range"):
+        load_replay_buffer(_buffer(np.float64), tmp_path / "model.json", {**entry, "pos": pos})
+
+
+@pytest.mark.parametrize(("saved", "needed"), [(np.float32, np.float64), (np.float64, np.float32)])
+def test_arrays_of_another_dtype_are_refused(tmp_path: Path, saved: Any, needed: Any) -> None:
+    entry = save_replay_buffer(_buffer(saved, pos=1), tmp_path / "buffer.npz")
+    target = _buffer(needed)
+    with pytest.raises(ModelFileError, match="the buffer needs"):
+        load_replay_buffer(target, tmp_path / "model.json", entry)
+    assert target.pos == 0 and target.observations.tolist() == [[0, 1], [2, 3], [4, 5], [6, 7]]
