@@ -58,8 +58,8 @@ def test_a_module_no_root_reaches_changes_nothing(sources: Path) -> None:
 
 def test_the_walk_follows_function_level_imports_and_parent_packages() -> None:
     modules, outside = content.code_modules(ROOTS)
-    # compiled imports the oracle inside a function; the oracle's package parents come with it
-    assert {"hg_marl.agents.oracle", "hg_marl.agents", "hg_marl"} <= set(modules)
+    # compiled imports the model builder's layouts inside a function; their package parents come with them
+    assert {"hg_marl.agents.models.layouts", "hg_marl.agents.models", "hg_marl.agents", "hg_marl"} <= set(modules)
     assert "numpy" in outside and "hg_marl.agents.robots.planner" not in modules
 
 

@@ -27,7 +27,7 @@ COVERED = [
     "hg_marl/core/world.py",
     "agents/planner/costs.py",
     "agents/compiled.py",
-    "agents/oracle.py",
+    "agents/models/builder.py",
     "agents/content.py",
 ]
 """One file of each source both tables are keyed by (the import walk reaches them from both)."""

@@ -43,7 +43,7 @@ CASES = [
     (["train", "--algo", "ppo_batched", "--hp", "colour=red"], "--hp"),
     (["train", "--algo", "ppo_batched", "--hp", "num_envs=100000000000"], "num_envs"),
     (["train", "--algo", "ppo_batched", "--human", "switching"], "human: "),
-    (["train", "--algo", "ppo_batched", "--human", "lazy", "--scenario", "generated:objects=14"], "budget"),
+    (["train", "--algo", "ppo_batched", "--human", "lazy", "--scenario", "generated:objects=14"], "cannot be compiled"),
     (["train", "--checkpoint-freq", "-5"], "--checkpoint-freq"),
     (["train", "--effort-weight", "nan"], "--effort-weight"),
     (["convert", "model.zip"], "--trust"),
