@@ -206,8 +206,7 @@ class JointModel:
     def chain(self, i: int) -> Chain:
         """Human ``i``'s transitions as CSR rows per pair (:class:`~hg_marl.agents.models.chains.Chain`)."""
         if self.model is not None:
-            d = self.model.chain(i)
-            return Chain(d.t_start, d.t_next, d.t_prob, d.t_tau, d.regen_next, d.regen_prob, d.regen_tau)
+            return self.model.chain(i)
         d = self.dynamics[i]  # the Python enumeration appends transitions in pair order
         regen = np.array(d.regen, dtype=float).reshape(-1, 3)
         t_pair = np.array(d.t_pair, dtype=np.int64)

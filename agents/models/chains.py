@@ -19,26 +19,19 @@ pair (:class:`Chain`), so:
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from typing import TypeAlias
 
 import numpy as np
 from scipy import sparse
 from scipy.sparse.linalg import spsolve
 
+from hg_marl.agents.models.builder import Dynamics
+
 HOUR = 3600.0
 
 
-@dataclass
-class Chain:
-    """One partner's transitions on a model: pair ``p``'s are ``t_start[p]:t_start[p + 1]``."""
-
-    t_start: np.ndarray
-    t_next: np.ndarray
-    t_prob: np.ndarray
-    t_tau: np.ndarray
-    regen_next: np.ndarray
-    regen_prob: np.ndarray
-    regen_tau: np.ndarray
+Chain: TypeAlias = Dynamics
+"""One partner's transitions on a model (the builder's :class:`Dynamics`)."""
 
 
 def _spread(frontier: np.ndarray, reverse: sparse.csr_matrix) -> np.ndarray:
