@@ -27,6 +27,7 @@ Usage::
 from __future__ import annotations
 
 import argparse
+import difflib
 import json
 import os
 import re
@@ -38,6 +39,7 @@ import tarfile
 import tempfile
 import time
 import tomllib
+import traceback
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
 from io import BytesIO
@@ -254,13 +256,116 @@ def _prejudged(mutation: Any, lines: list[str], module: str, equivalents: list[E
     return any(e.judges_line(module, mutation.operator_name, line) for e in equivalents)
 
 
-def run_module(
-    module: Module, sample: int | None, seed: int, equivalents: list[Equivalent], work: Path, rev: str | None = None
-) -> Outcome:
-    """Baseline, enumerate, sample, execute and score one module."""
+BASELINE_TIMEOUT = 3600.0
+"""The unmutated tests' own limit (a module's mutants get 4x the time they took)."""
+
+
+class WarmRunner:
+    """The driver's side of ``mutation/warm.py``: one warm server per scratch copy.
+
+    The server imports the third-party test stack once and forks a child per test run,
+    which imports the package afresh from the scratch copy (so it sees the mutant on
+    disk); :meth:`run` returns pytest's exit status, whether the time ran out, and the
+    output. ``--cold`` runs every test in a new interpreter instead (``cosmic-ray exec``).
+    """
+
+    def __init__(self, scratch: Path, env: dict[str, str]) -> None:
+        self.log = scratch / "warm-test-output.log"
+        self.proc = subprocess.Popen(
+            [sys.executable, str(ROOT / "mutation" / "warm.py"), "hg_marl"],
+            cwd=scratch,
+            env=env,
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,
+            text=True,
+        )
+        self._answer()  # {"ready": true}, once the test stack is imported
+
+    def _answer(self) -> dict[str, Any]:
+        assert self.proc.stdout is not None
+        for line in self.proc.stdout:  # a preloaded library may print; the protocol's lines are JSON objects
+            try:
+                data = json.loads(line)
+            except json.JSONDecodeError:
+                continue
+            if isinstance(data, dict):
+                return data
+        raise RuntimeError(f"the warm test runner stopped (exit {self.proc.wait()})")
+
+    def run(self, args: list[str], timeout: float) -> tuple[int, bool, str]:
+        """pytest with ``args`` in a forked child: ``(exit status, timed out, output)``."""
+        assert self.proc.stdin is not None
+        self.proc.stdin.write(json.dumps({"args": args, "timeout": timeout, "log": str(self.log)}) + "\n")
+        self.proc.stdin.flush()
+        answer = self._answer()
+        output = self.log.read_text(errors="replace") if self.log.exists() else ""
+        return int(answer["code"]), bool(answer["timeout"]), output
+
+    def close(self) -> None:
+        """Stop the server."""
+        if self.proc.stdin is not None:
+            self.proc.stdin.close()
+        try:
+            self.proc.wait(timeout=60)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            self.proc.wait()
+
+
+def _execute_warm(session: Path, scratch: Path, warm: WarmRunner, args: list[str], timeout: float) -> None:
+    """``cosmic-ray exec`` with the warm runner: apply each pending mutant, test it, record the result."""
+    import cosmic_ray.plugins
+    from cosmic_ray.mutating import use_mutation
     from cosmic_ray.work_db import WorkDB, use_db
     from cosmic_ray.work_item import TestOutcome, WorkerOutcome, WorkResult
 
+    with use_db(str(session), WorkDB.Mode.open) as db:
+        for item in list(db.pending_work_items):
+            (mutation,) = item.mutations  # run.py draws single mutants
+            try:
+                operator = cosmic_ray.plugins.get_operator(mutation.operator_name)(
+                    **(getattr(mutation, "operator_args", None) or {})
+                )
+                path = scratch / mutation.module_path
+                with use_mutation(path, operator, mutation.occurrence) as (original, mutated):
+                    if mutated is None:
+                        result = WorkResult(worker_outcome=WorkerOutcome.NO_TEST)
+                    else:
+                        code, timed_out, output = warm.run(args, timeout)
+                        name = str(mutation.module_path)
+                        diff = difflib.unified_diff(
+                            original.splitlines(), mutated.splitlines(), f"a/{name}", f"b/{name}", lineterm=""
+                        )
+                        result = WorkResult(
+                            output="timeout" if timed_out else output[-4000:],
+                            diff="\n".join(diff),
+                            test_outcome=TestOutcome.KILLED if code != 0 else TestOutcome.SURVIVED,
+                            worker_outcome=WorkerOutcome.NORMAL,
+                        )
+            except Exception:  # as cosmic-ray: a mutant that cannot be applied is incompetent
+                result = WorkResult(
+                    output=traceback.format_exc(),
+                    test_outcome=TestOutcome.INCOMPETENT,
+                    worker_outcome=WorkerOutcome.EXCEPTION,
+                )
+            db.set_result(item.job_id, result)
+
+
+def run_module(
+    module: Module,
+    sample: int | None,
+    seed: int,
+    equivalents: list[Equivalent],
+    work: Path,
+    rev: str | None = None,
+    cold: bool = False,
+) -> Outcome:
+    """Baseline, enumerate, sample, execute and score one module.
+
+    ``cold``: run each mutant's tests in a new interpreter through ``cosmic-ray exec``
+    (the reference the warm runner is checked against) instead of :class:`WarmRunner`.
+    """
     out = Outcome(module.key, module.path)
     start = time.perf_counter()
     scratch = scratch_copy(work / module.key)
@@ -270,12 +375,40 @@ def run_module(
         module = Module(module.key, module.path, kept, 0, 0.0)
     _check_layout(scratch, module)
     env = _env(scratch)
-    t0 = time.perf_counter()
     command = shlex.join(_test_command(module.tests))  # cosmic-ray runs shlex.split(command)
-    base = subprocess.run(shlex.split(command), cwd=scratch, env=env, capture_output=True, text=True)
+    warm = None if cold else WarmRunner(scratch, env)
+    try:
+        return _score(module, sample, seed, equivalents, scratch, env, command, warm, out, start)
+    finally:
+        if warm is not None:
+            warm.close()
+
+
+def _score(
+    module: Module,
+    sample: int | None,
+    seed: int,
+    equivalents: list[Equivalent],
+    scratch: Path,
+    env: dict[str, str],
+    command: str,
+    warm: WarmRunner | None,
+    out: Outcome,
+    start: float,
+) -> Outcome:
+    """:func:`run_module` once the scratch copy is ready: baseline, draw, execute, read."""
+    from cosmic_ray.work_db import WorkDB, use_db
+    from cosmic_ray.work_item import TestOutcome, WorkerOutcome, WorkResult
+
+    t0 = time.perf_counter()
+    if warm is not None:
+        code, _, output = warm.run(_test_command(module.tests)[3:], timeout=BASELINE_TIMEOUT)
+    else:
+        base = subprocess.run(shlex.split(command), cwd=scratch, env=env, capture_output=True, text=True)
+        code, output = base.returncode, base.stdout
     out.baseline_s = time.perf_counter() - t0
-    if base.returncode != 0:
-        out.error = f"tests fail before mutation:\n{base.stdout[-2000:]}"
+    if code != 0:
+        out.error = f"tests fail before mutation:\n{output[-2000:]}"
         return out
     timeout = max(30.0, 4.0 * out.baseline_s)
     config = scratch / "cosmic-ray.toml"
@@ -301,7 +434,10 @@ def run_module(
         skipped = [w.job_id for w in every if w.job_id not in chosen]
         if skipped:
             db.set_multiple_results(skipped, WorkResult(output="not in sample", worker_outcome=WorkerOutcome.SKIPPED))
-    subprocess.run([*cosmic, "exec", str(config), str(session)], cwd=scratch, env=env, check=True)
+    if warm is not None:
+        _execute_warm(session, scratch, warm, _test_command(module.tests)[3:], timeout)
+    else:
+        subprocess.run([*cosmic, "exec", str(config), str(session)], cwd=scratch, env=env, check=True)
     with use_db(str(session), WorkDB.Mode.open) as db:
         for item, result in db.completed_work_items:
             if result.worker_outcome == WorkerOutcome.SKIPPED:
@@ -385,6 +521,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--jobs", type=int, default=2, help="modules mutated at once (default 2)")
     parser.add_argument("--json", type=Path, help="also write the results here")
     parser.add_argument("--keep", action="store_true", help="keep the scratch copies (printed)")
+    parser.add_argument(
+        "--cold", action="store_true", help="a new interpreter per test run (cosmic-ray exec), not the warm runner"
+    )
     parser.add_argument("--tests-from", metavar="REV", help="score the tests of commit REV (e.g. to compare)")
     parser.add_argument("--list", action="store_true", help="print the selected modules and their tests, run nothing")
     parser.add_argument("--rescore", type=Path, metavar="JSON", help="re-apply equivalent.toml to a --json file")
@@ -432,6 +571,7 @@ def main(argv: list[str] | None = None) -> int:
                     equivalents,
                     work,
                     args.tests_from,
+                    args.cold,
                 )
                 for m in selected
             ]

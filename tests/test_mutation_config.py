@@ -89,3 +89,30 @@ def test_a_module_its_package_shadows_is_found_in_the_scratch_copy(mutation, tmp
     scratch = mutation.scratch_copy(tmp_path / "copy")
     mutation._check_layout(scratch, modules["model_solve"])  # raises when the copy is not imported
     mutation._check_layout(scratch, modules["world"])
+
+
+def test_the_warm_runner_sees_each_edit_on_disk_and_stops_a_hung_run(mutation, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    """Each test run is a child forked from the warm server: it must import the package
+    as it is on disk now (a mutant written after the server started), report pytest's
+    status, and be killed when its time is up (a mutant that loops forever)."""
+    import os
+
+    package = tmp_path / "hg_marl"
+    package.mkdir()
+    (package / "__init__.py").write_text("VALUE = 1\n")
+    (tmp_path / "test_value.py").write_text("import hg_marl\n\n\ndef test_value():\n    assert hg_marl.VALUE == 1\n")
+    env = dict(os.environ, PYTHONPATH=str(tmp_path), PYTHONDONTWRITEBYTECODE="1")
+    args = ["-q", "-p", "no:cacheprovider", "test_value.py"]
+    warm = mutation.WarmRunner(tmp_path, env)
+    try:
+        assert warm.run(args, timeout=600)[:2] == (0, False)
+        (package / "__init__.py").write_text("VALUE = 2\n")  # the mutant
+        code, timed_out, output = warm.run(args, timeout=600)
+        assert (code, timed_out) == (1, False) and "assert 2 == 1" in output
+        (package / "__init__.py").write_text("import time\n\nwhile True:\n    time.sleep(1)\n")
+        assert warm.run(args, timeout=1)[1] is True  # never ends by itself: stopped at its limit
+        (package / "__init__.py").write_text("VALUE = 1\n")  # and the server still answers afterwards
+        assert warm.run(args, timeout=600)[:2] == (0, False)
+    finally:
+        warm.close()
+    assert warm.proc.returncode == 0
