@@ -6,6 +6,10 @@ does not grow, and a mix of known and new keys asks only the new ones. The secon
 plain enumeration: every deal ``World.initial_state`` can make (``layout_distribution``)
 mapped through ``Relabel.canonical`` and summed, on scenarios whose layout groups draw
 fewer objects than they have spots (where ``(m - c)!`` is not 1).
+
+The live answers read the budget on a schedule stated here, not taken from the code: one
+reading before every fourth answer (answers 0, 4, 8, ...), and the resident memory only on
+every 4096th answer (0, 4096, ...), a system call too dear to make on each reading.
 """
 
 from __future__ import annotations
@@ -15,6 +19,7 @@ import pytest
 
 from hg_marl.agents.humans import make_human
 from hg_marl.agents.models.answers import AnswerTable
+from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.layouts import canonical_layout_count, canonical_layouts, layout_distribution
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.planner.space import Relabel
@@ -36,6 +41,49 @@ def test_known_keys_are_not_asked_again() -> None:
     assert table.live_calls == 8 and len(table.keys) == 8
     table.ensure(keys)  # 8 known, 4 new
     assert table.live_calls == 12 and table.keys.tolist() == keys.tolist()
+
+
+class RecordingBudget(Budget):
+    """A budget that never refuses and records each reading's (phase, done, total, unit, memory)."""
+
+    def __init__(self) -> None:
+        super().__init__(None, None, None)
+        self.readings: list[tuple[str, int, int | None, str, bool]] = []
+
+    def check(
+        self,
+        phase: str,
+        done: int,
+        total: int | None = None,
+        unit: str = "states",
+        *,
+        states: int | None = None,
+        memory: bool = True,
+    ) -> None:
+        self.readings.append((phase, done, total, unit, memory))
+
+
+def test_live_answers_read_the_budget_every_fourth_answer_and_the_memory_every_4096th() -> None:
+    # 4097 live answers (the lazy human, asked live with arrays=False): readings before
+    # answers 0, 4, ..., 4096 (1025 of them), the memory read at 0 and 4096 alone
+    world = World("roboergosum")
+    human = make_human("lazy")
+    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    packer = StatePacker(world)
+    states = [s for s, _ in layout_distribution(world)][:4097]
+    keys = np.unique(packer.pack(BatchState.of(states), np.full(len(states), -1)))
+    assert len(keys) == 4097
+    budget = RecordingBudget()
+    table = AnswerTable(world, human, packer, budget=budget, arrays=False)
+    table.ensure(keys)
+    assert table.live_calls == 4097
+    unit = "partner answers of this step"
+    expected = [("answers", i, 4097, unit, i in (0, 4096)) for i in range(0, 4097, 4)]
+    assert len(budget.readings) == len(expected) == 1025
+    # the first few differences only: pytest's diff of two long lists would take minutes
+    wrong = [(got, want) for got, want in zip(budget.readings, expected, strict=True) if got != want]
+    assert wrong[:3] == []
+    assert [done for _, done, _, _, memory in budget.readings if memory] == [0, 4096]
 
 
 @pytest.mark.parametrize(
