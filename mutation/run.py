@@ -28,6 +28,8 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import functools
+import itertools
 import json
 import os
 import re
@@ -40,6 +42,7 @@ import tempfile
 import time
 import tomllib
 import traceback
+from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
 from io import BytesIO
@@ -510,6 +513,18 @@ def rescore(path: Path, equivalents: list[Equivalent], target: float) -> int:
     return 0
 
 
+def _progress(finished: Iterator[int], total: int, module: Module, future: Any) -> None:
+    """One line when a module's scoring ends (its score, or that it failed), with the count so far."""
+    done = next(finished)
+    error = future.exception()
+    if error is None:
+        o = future.result()
+        what = f"ERROR {o.error.splitlines()[0]}" if o.error else f"{o.killed}/{o.run} killed, {o.score:.0%}"
+        print(f"[{done}/{total}] {module.key}: {what} in {o.wall_s:.0f}s", flush=True)
+    else:
+        print(f"[{done}/{total}] {module.key}: ERROR {type(error).__name__}: {error}", flush=True)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Parse options, run the modules (``--jobs`` at a time) and report."""
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
@@ -575,6 +590,9 @@ def main(argv: list[str] | None = None) -> int:
                 )
                 for m in selected
             ]
+            finished = itertools.count(1)
+            for m, f in zip(selected, futures, strict=True):  # a line per module as it ends: long runs show progress
+                f.add_done_callback(functools.partial(_progress, finished, len(selected), m))
             outcomes = []
             for m, f in zip(selected, futures, strict=True):
                 try:
