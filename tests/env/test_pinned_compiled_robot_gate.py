@@ -2,18 +2,23 @@
 
 Expected values by hand: a state whose key is beyond every stored key is not in the table
 (it is planned live, as the module says of any missing state); an entry that is not a
-readable archive is rebuilt, not an error.
+readable archive is rebuilt, not an error; the human's answers the states are explored
+with are a distribution (uniform over the feasible actions and one failing one, read from
+the scalar rules' mask); the code a robot table is keyed by is the planner robot's.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import numpy as np
+import pytest
 
+from hg_marl.agents import content
 from hg_marl.agents.compiled import Packer
-from hg_marl.agents.compiled_robot import CompiledRobot, compile_robot, planner_action, robot_cache_key
-from hg_marl.core import World
+from hg_marl.agents.compiled_robot import CompiledRobot, any_answer, compile_robot, planner_action, robot_cache_key
+from hg_marl.core import Agent, World
 from hg_marl.core.batch import BatchState
 from tests.agents.test_oracle import TINY
 
@@ -45,3 +50,49 @@ def test_a_corrupt_entry_is_rebuilt(tmp_path: Path) -> None:
     assert rebuilt.actions.tolist() == fresh.actions.tolist()
     with np.load(path, allow_pickle=False) as data:  # the entry was written again, readable
         assert str(data["key"]) == key
+
+
+def test_any_answer_is_each_feasible_human_action_and_one_failing_one_uniformly() -> None:
+    """Per state, by the scalar rules' mask: the feasible actions in index order, then the first
+    infeasible one (standing for them all), each with probability 1 / (their count)."""
+    world = World("paper2015")
+    rng = np.random.default_rng(3)
+    states = [world.initial_state(rng) for _ in range(8)]
+    sizes, actions, probs = any_answer(world)(BatchState.of(states))
+    at = 0
+    for i, state in enumerate(states):
+        mask = world.mask(state, Agent.HUMAN)
+        expected = [a for a in range(len(mask)) if mask[a]]
+        if len(expected) < len(mask):
+            expected.append(next(a for a in range(len(mask)) if not mask[a]))
+        n = len(expected)
+        assert int(sizes[i]) == n, i
+        assert actions[at : at + n].tolist() == expected, i
+        assert probs[at : at + n].tolist() == pytest.approx([1.0 / n] * n), i
+        assert float(probs[at : at + n].sum()) == pytest.approx(1.0)
+        at += n
+    assert at == len(actions) == len(probs)
+
+
+def test_a_robot_tables_key_covers_the_planners_code_and_no_humans(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The cheap counterpart of ``test_pinned_compiled.py``'s edits of a copy of the sources: the
+    modules the key's import walk reaches (the planner robot's own, not a human's), without copying."""
+    asked: list[tuple[str, dict[str, Any], tuple[str, ...]]] = []
+
+    def recording(kind: str, fields: dict[str, Any], roots: tuple[str, ...]) -> str:
+        asked.append((kind, dict(fields), tuple(roots)))
+        return "0" * 64
+
+    world = World("paper2015")
+    monkeypatch.setattr(content, "content_key", recording)
+    robot_cache_key(world, "planner", 5)
+    [(kind, fields, roots)] = asked
+    assert kind == "compiled robot"
+    assert fields == {"scenario": repr(world.scenario), "durations": repr(world.durations), "spec": "planner", "K": 5}
+    keyed, _ = content.code_modules(roots)
+    shared = ["hg_marl.core.world", "hg_marl.agents.planner.costs", "hg_marl.agents.compiled"]
+    shared += ["hg_marl.agents.models.builder", "hg_marl.agents.content"]
+    own = ["hg_marl.agents.compiled_robot", "hg_marl.agents.robots.planner", "hg_marl.agents.robots.base"]
+    own += ["hg_marl.agents.partner"]
+    assert set(shared + own) <= set(keyed)
+    assert not {"hg_marl.agents.humans.lazy", "hg_marl.agents.humans.cooperative"} & set(keyed)
