@@ -156,3 +156,37 @@ def test_connections_over_the_cap_are_closed_at_once(session: PlaySession) -> No
 def test_limits_are_checked(fields: dict[str, float]) -> None:
     with pytest.raises(ConfigError):
         ServerLimits(**fields)  # type: ignore[arg-type]
+
+
+def _status(sock: socket.socket, srv: Server) -> bytes:
+    """Ask for the board on ``sock``; the status line's first 12 bytes (``b""`` if the server closed it)."""
+    sock.sendall(f"GET /board?token={srv.token} HTTP/1.1\r\nHost: 127.0.0.1:{srv.port}\r\n\r\n".encode())
+    status = b""
+    while len(status) < 12:  # the status line may come in pieces
+        chunk = sock.recv(12 - len(status))
+        if not chunk:
+            break
+        status += chunk
+    return status
+
+
+def test_every_connection_within_the_cap_is_served_when_the_cap_is_full(session: PlaySession) -> None:
+    """At the cap, each of the ``max_connections`` open connections still gets its answer.
+
+    uvicorn refuses a request with 503 once its count of open connections reaches its
+    concurrency limit, and that count includes the asking connection: so with
+    ``max_connections`` open (the one over the cap was closed at once, which also shows
+    that all the held ones were accepted) every request must be 200, not 503.
+    """
+    limits = ServerLimits(idle_timeout=GUARD * 2, header_timeout=GUARD * 2, max_connections=3)
+    for srv in _serve(session, limits):
+        held = [_connect(srv) for _ in range(limits.max_connections)]
+        try:
+            assert _status(held[0], srv) == b"HTTP/1.1 200"  # the server is up and has accepted them
+            with _connect(srv) as extra:
+                assert _closed_by_server(extra) == b""  # the cap is full: every held one is counted
+            # the others have not asked yet (the first still holds the rest of its answer)
+            assert [_status(sock, srv) for sock in held[1:]] == [b"HTTP/1.1 200"] * (limits.max_connections - 1)
+        finally:
+            for sock in held:
+                sock.close()
