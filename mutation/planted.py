@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from run import _env, scratch_copy, tests_from
+from run import _env, load_modules, scratch_copy, tests_from
 
 
 @dataclass(frozen=True)
@@ -212,7 +212,116 @@ FRESH = (
     ),
 )
 
-ALL = BUGS + FRESH
+
+def gate(key: str, *extra: str) -> tuple[str, ...]:
+    """The tests modules.toml gives module ``key`` (the mutation gate's list), and ``extra`` ones."""
+    return (*load_modules()[0][key].tests, *extra)
+
+
+# Second round: bugs written from the sources of the newest modules (not their tests), each
+# run against its module's gate tests from modules.toml (mutation/README.md, "Fresh planted bugs").
+FRESH2 = (
+    Bug(
+        "fresh2 content: a model's weights keyed by its header's bytes",
+        "agents/content.py",
+        "out[weights.name] = file_digest(weights)",
+        "out[weights.name] = file_digest(header)",
+        gate("content"),
+    ),
+    Bug(
+        "fresh2 content: the top-level package left out of the code walk",
+        "agents/content.py",
+        'range(1, name.count(".") + 1)',
+        'range(1, name.count("."))',
+        gate("content"),
+    ),
+    Bug(
+        "fresh2 chains: re-draw seconds without the probability on the value",
+        "agents/models/chains.py",
+        "p * (tau + v)",
+        "p * tau + v",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh2 equivariant: an action on object 0 not mapped back",
+        "agents/models/equivariant.py",
+        "np.where(slot >= 0,",
+        "np.where(slot > 0,",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh2 lazy: robot seconds read by position among the asked pairs",
+        "agents/models/lazy.py",
+        "pair_of = np.repeat(pairs, size)",
+        "pair_of = np.repeat(np.arange(len(pairs)), size)",
+        gate("model_lazy"),
+    ),
+    Bug(
+        "fresh2 member models: new durations keep the old results",
+        "agents/member_models.py",
+        "(self.world.scenario, self.world.durations) != (world.scenario, world.durations)",
+        "self.world.scenario != world.scenario",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh2 member models: the memo drops the newest result",
+        "agents/member_models.py",
+        "_MEMO.popitem(last=False)",
+        "_MEMO.popitem()",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh2 builder: a failed robot action seen by the partner as done",
+        "agents/models/builder.py",
+        "np.where(ok[live], pa[live], -1)",
+        "pa[live]",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh2 answers: budget read after the first CHECK_EVERY live answers, not before",
+        "agents/models/answers.py",
+        "if budget is not None and i % CHECK_EVERY == 0:",
+        "if budget is not None and (i + 1) % CHECK_EVERY == 0:",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh2 headroom: a held-out value read by its place among the held-out",
+        "agents/headroom.py",
+        "values = [row[self.true.index(h)] for h in self.held_out]",
+        "values = [row[self.held_out.index(h)] for h in self.held_out]",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh2 progress: a move ranked -inf stays among the guard's options",
+        "agents/progress.py",
+        "float(prefer[i]) > -math.inf",
+        "float(prefer[i]) >= -math.inf",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh2 memory robot: the robot's and the human's failures swapped in its history",
+        "agents/robots/memory.py",
+        "np.array([r]), np.array([r_ok]), np.array([hu]), np.array([h_ok])",
+        "np.array([r]), np.array([h_ok]), np.array([hu]), np.array([r_ok])",
+        gate("memory_robot"),
+    ),
+    Bug(
+        "fresh2 recipes: coverage moves every table one cycle more",
+        "training/baselines/recipes.py",
+        "on = np.flatnonzero(moves > j)",
+        "on = np.flatnonzero(moves >= j)",
+        gate("recipes"),
+    ),
+    Bug(
+        "fresh2 compiled robot: cache key without the stall rule's K",
+        "agents/compiled_robot.py",
+        '"spec": spec, "K": stall_after}',
+        '"spec": spec}',
+        gate("compiled_robot"),
+    ),
+)
+
+ALL = BUGS + FRESH + FRESH2
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:
@@ -225,7 +334,7 @@ def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]
     if text.count(bug.old) != 1:
         raise SystemExit(f"{bug.name}: the code to change is not found once in {bug.path} (update mutation/planted.py)")
     source.write_text(text.replace(bug.old, bug.new))
-    tests = [t for t in bug.tests if (scratch / t).exists()]
+    tests = [t for t in bug.tests if (scratch / t.split("::")[0]).exists()]  # files or pytest node ids
     cmd = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-m", "not slow", "-rf", *tests]
     proc = subprocess.run(cmd, cwd=scratch, env=_env(scratch), capture_output=True, text=True)
     failed = [ln.split(" ")[1] for ln in proc.stdout.splitlines() if ln.startswith(("FAILED ", "ERROR "))]
