@@ -11,13 +11,13 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
-from typing import Any
 
 import pytest
 
 from hg_marl.agents import compiled, content
 from hg_marl.agents.compiled import cache_key, compile_human
 from hg_marl.core import World
+from tests.content_keys import record_content_keys
 
 
 def test_a_family_scenarios_table_file_is_named_after_the_family(tmp_path: Path) -> None:
@@ -30,14 +30,8 @@ def test_a_family_scenarios_table_file_is_named_after_the_family(tmp_path: Path)
 
 
 def test_a_human_tables_key_covers_its_compiler_and_the_humans_code_only(monkeypatch: pytest.MonkeyPatch) -> None:
-    asked: list[tuple[str, dict[str, Any], tuple[str, ...]]] = []
-
-    def recording(kind: str, fields: dict[str, Any], roots: tuple[str, ...]) -> str:
-        asked.append((kind, dict(fields), tuple(roots)))
-        return "0" * 64
-
     world = World("paper2015")
-    monkeypatch.setattr(content, "content_key", recording)
+    asked = record_content_keys(monkeypatch)
     cache_key(world, "lazy", ("cooperative",))
     [(kind, fields, roots)] = asked
     assert kind == "compiled human"

@@ -10,7 +10,6 @@ the scalar rules' mask); the code a robot table is keyed by is the planner robot
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import pytest
@@ -21,6 +20,7 @@ from hg_marl.agents.compiled_robot import CompiledRobot, any_answer, compile_rob
 from hg_marl.core import Agent, World
 from hg_marl.core.batch import BatchState
 from tests.agents.test_oracle import TINY
+from tests.content_keys import record_content_keys
 
 
 def test_a_state_beyond_every_stored_key_is_not_found() -> None:
@@ -77,14 +77,8 @@ def test_any_answer_is_each_feasible_human_action_and_one_failing_one_uniformly(
 def test_a_robot_tables_key_covers_the_planners_code_and_no_humans(monkeypatch: pytest.MonkeyPatch) -> None:
     """The cheap counterpart of ``test_pinned_compiled.py``'s edits of a copy of the sources: the
     modules the key's import walk reaches (the planner robot's own, not a human's), without copying."""
-    asked: list[tuple[str, dict[str, Any], tuple[str, ...]]] = []
-
-    def recording(kind: str, fields: dict[str, Any], roots: tuple[str, ...]) -> str:
-        asked.append((kind, dict(fields), tuple(roots)))
-        return "0" * 64
-
     world = World("paper2015")
-    monkeypatch.setattr(content, "content_key", recording)
+    asked = record_content_keys(monkeypatch)
     robot_cache_key(world, "planner", 5)
     [(kind, fields, roots)] = asked
     assert kind == "compiled robot"
