@@ -17,12 +17,14 @@ Usage::
 from __future__ import annotations
 
 import argparse
+import functools
 import re
 import subprocess
 import sys
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from run import _env, load_modules, scratch_copy, tests_from
@@ -213,9 +215,14 @@ FRESH = (
 )
 
 
+@functools.cache
+def _gate_modules() -> dict[str, Any]:
+    return load_modules()[0]
+
+
 def gate(key: str, *extra: str) -> tuple[str, ...]:
     """The tests modules.toml gives module ``key`` (the mutation gate's list), and ``extra`` ones."""
-    return (*load_modules()[0][key].tests, *extra)
+    return (*_gate_modules()[key].tests, *extra)
 
 
 # Second round: bugs written from the sources of the newest modules (not their tests), each

@@ -27,6 +27,7 @@ Usage::
 from __future__ import annotations
 
 import argparse
+import contextlib
 import difflib
 import functools
 import itertools
@@ -218,8 +219,13 @@ def _env(scratch: Path) -> dict[str, str]:
     return env
 
 
+def _pytest_args(tests: tuple[str, ...]) -> list[str]:
+    """pytest's arguments for a module's tests (the warm runner's request; the cold command's tail)."""
+    return ["-x", "-q", "-p", "no:cacheprovider", "-m", "not slow", *tests]
+
+
 def _test_command(tests: tuple[str, ...]) -> list[str]:
-    return [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider", "-m", "not slow", *tests]
+    return [sys.executable, "-m", "pytest", *_pytest_args(tests)]
 
 
 def _check_layout(scratch: Path, module: Module) -> None:
@@ -305,6 +311,12 @@ class WarmRunner:
         output = self.log.read_text(errors="replace") if self.log.exists() else ""
         return int(answer["code"]), bool(answer["timeout"]), output
 
+    def __enter__(self) -> WarmRunner:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
     def close(self) -> None:
         """Stop the server."""
         if self.proc.stdin is not None:
@@ -369,6 +381,9 @@ def run_module(
     ``cold``: run each mutant's tests in a new interpreter through ``cosmic-ray exec``
     (the reference the warm runner is checked against) instead of :class:`WarmRunner`.
     """
+    from cosmic_ray.work_db import WorkDB, use_db
+    from cosmic_ray.work_item import TestOutcome, WorkerOutcome, WorkResult
+
     out = Outcome(module.key, module.path)
     start = time.perf_counter()
     scratch = scratch_copy(work / module.key)
@@ -379,97 +394,78 @@ def run_module(
     _check_layout(scratch, module)
     env = _env(scratch)
     command = shlex.join(_test_command(module.tests))  # cosmic-ray runs shlex.split(command)
-    warm = None if cold else WarmRunner(scratch, env)
-    try:
-        return _score(module, sample, seed, equivalents, scratch, env, command, warm, out, start)
-    finally:
+    args = _pytest_args(module.tests)
+    with contextlib.nullcontext() if cold else WarmRunner(scratch, env) as warm:
+        t0 = time.perf_counter()
         if warm is not None:
-            warm.close()
-
-
-def _score(
-    module: Module,
-    sample: int | None,
-    seed: int,
-    equivalents: list[Equivalent],
-    scratch: Path,
-    env: dict[str, str],
-    command: str,
-    warm: WarmRunner | None,
-    out: Outcome,
-    start: float,
-) -> Outcome:
-    """:func:`run_module` once the scratch copy is ready: baseline, draw, execute, read."""
-    from cosmic_ray.work_db import WorkDB, use_db
-    from cosmic_ray.work_item import TestOutcome, WorkerOutcome, WorkResult
-
-    t0 = time.perf_counter()
-    if warm is not None:
-        code, _, output = warm.run(_test_command(module.tests)[3:], timeout=BASELINE_TIMEOUT)
-    else:
-        base = subprocess.run(shlex.split(command), cwd=scratch, env=env, capture_output=True, text=True)
-        code, output = base.returncode, base.stdout
-    out.baseline_s = time.perf_counter() - t0
-    if code != 0:
-        out.error = f"tests fail before mutation:\n{output[-2000:]}"
-        return out
-    timeout = max(30.0, 4.0 * out.baseline_s)
-    config = scratch / "cosmic-ray.toml"
-    config.write_text(
-        "[cosmic-ray]\n"
-        f"module-path = {json.dumps(module.path)}\n"
-        f"timeout = {timeout:.0f}\n"
-        "excluded-modules = []\n"
-        f"test-command = {json.dumps(command)}\n"
-        '[cosmic-ray.distributor]\nname = "local"\n'
-    )
-    session = scratch / "session.sqlite"
-    cosmic = [sys.executable, "-m", "cosmic_ray.cli"]
-    subprocess.run([*cosmic, "init", str(config), str(session)], cwd=scratch, env=env, check=True)
-    with use_db(str(session), WorkDB.Mode.open) as db:
-        every = sorted(db.work_items, key=lambda w: [(m.start_pos, m.operator_name, m.occurrence) for m in w.mutations])
-        out.total = len(every)
-        lines = (scratch / module.path).read_text().splitlines()
-        items = [w for w in every if not _prejudged(w.mutations[0], lines, module.key, equivalents)]
-        out.prejudged = out.total - len(items)
-        keep = len(items) if sample is None else min(sample, len(items))
-        chosen = {items[i].job_id for i in np.random.default_rng(seed).choice(len(items), size=keep, replace=False)}
-        skipped = [w.job_id for w in every if w.job_id not in chosen]
-        if skipped:
-            db.set_multiple_results(skipped, WorkResult(output="not in sample", worker_outcome=WorkerOutcome.SKIPPED))
-    if warm is not None:
-        _execute_warm(session, scratch, warm, _test_command(module.tests)[3:], timeout)
-    else:
-        subprocess.run([*cosmic, "exec", str(config), str(session)], cwd=scratch, env=env, check=True)
-    with use_db(str(session), WorkDB.Mode.open) as db:
-        for item, result in db.completed_work_items:
-            if result.worker_outcome == WorkerOutcome.SKIPPED:
-                continue
-            out.run += 1
-            if result.output == "timeout":  # cosmic-ray counts a timed-out test run as killed
-                out.timeouts += 1
-            if result.test_outcome == TestOutcome.INCOMPETENT:  # the mutant cannot even be imported
-                out.incompetent += 1
-            if result.worker_outcome != WorkerOutcome.NORMAL or result.is_killed:
-                out.killed += 1
-                continue
-            removed, added = _diff_lines(result.diff or "")
-            mutation = item.mutations[0]
-            op = mutation.operator_name
-            why = next((e.why for e in equivalents if e.matches(module.key, op, removed, added)), "")
-            out.equivalent += bool(why)
-            out.survivors.append(
-                {
-                    "line": mutation.start_pos[0],
-                    "operator": op,
-                    "removed": removed,
-                    "added": added,
-                    "equivalent": why,
-                }
+            code, _, output = warm.run(args, timeout=BASELINE_TIMEOUT)
+        else:
+            base = subprocess.run(shlex.split(command), cwd=scratch, env=env, capture_output=True, text=True)
+            code, output = base.returncode, base.stdout
+        out.baseline_s = time.perf_counter() - t0
+        if code != 0:
+            out.error = f"tests fail before mutation:\n{output[-2000:]}"
+            return out
+        timeout = max(30.0, 4.0 * out.baseline_s)
+        config = scratch / "cosmic-ray.toml"
+        config.write_text(
+            "[cosmic-ray]\n"
+            f"module-path = {json.dumps(module.path)}\n"
+            f"timeout = {timeout:.0f}\n"
+            "excluded-modules = []\n"
+            f"test-command = {json.dumps(command)}\n"
+            '[cosmic-ray.distributor]\nname = "local"\n'
+        )
+        session = scratch / "session.sqlite"
+        cosmic = [sys.executable, "-m", "cosmic_ray.cli"]
+        subprocess.run([*cosmic, "init", str(config), str(session)], cwd=scratch, env=env, check=True)
+        with use_db(str(session), WorkDB.Mode.open) as db:
+            every = sorted(
+                db.work_items, key=lambda w: [(m.start_pos, m.operator_name, m.occurrence) for m in w.mutations]
             )
-    out.survivors.sort(key=lambda s: int(s["line"]))
-    out.wall_s = time.perf_counter() - start
-    return out
+            out.total = len(every)
+            lines = (scratch / module.path).read_text().splitlines()
+            items = [w for w in every if not _prejudged(w.mutations[0], lines, module.key, equivalents)]
+            out.prejudged = out.total - len(items)
+            keep = len(items) if sample is None else min(sample, len(items))
+            chosen = {items[i].job_id for i in np.random.default_rng(seed).choice(len(items), size=keep, replace=False)}
+            skipped = [w.job_id for w in every if w.job_id not in chosen]
+            if skipped:
+                skip = WorkResult(output="not in sample", worker_outcome=WorkerOutcome.SKIPPED)
+                db.set_multiple_results(skipped, skip)
+        if warm is not None:
+            _execute_warm(session, scratch, warm, args, timeout)
+        else:
+            subprocess.run([*cosmic, "exec", str(config), str(session)], cwd=scratch, env=env, check=True)
+        with use_db(str(session), WorkDB.Mode.open) as db:
+            for item, result in db.completed_work_items:
+                if result.worker_outcome == WorkerOutcome.SKIPPED:
+                    continue
+                out.run += 1
+                if result.output == "timeout":  # cosmic-ray counts a timed-out test run as killed
+                    out.timeouts += 1
+                if result.test_outcome == TestOutcome.INCOMPETENT:  # the mutant cannot even be imported
+                    out.incompetent += 1
+                if result.worker_outcome != WorkerOutcome.NORMAL or result.is_killed:
+                    out.killed += 1
+                    continue
+                removed, added = _diff_lines(result.diff or "")
+                mutation = item.mutations[0]
+                op = mutation.operator_name
+                why = next((e.why for e in equivalents if e.matches(module.key, op, removed, added)), "")
+                out.equivalent += bool(why)
+                out.survivors.append(
+                    {
+                        "line": mutation.start_pos[0],
+                        "operator": op,
+                        "removed": removed,
+                        "added": added,
+                        "equivalent": why,
+                    }
+                )
+        out.survivors.sort(key=lambda s: int(s["line"]))
+        out.wall_s = time.perf_counter() - start
+        return out
 
 
 def report(outcomes: list[Outcome], target: float) -> None:

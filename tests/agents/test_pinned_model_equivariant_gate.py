@@ -22,17 +22,13 @@ from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.equivariant import CanonicalAnswers, canonical_answers
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchState
+from tests.agents.ragged import per_state
 from tests.agents.test_models import mid_states
 
 
 def listed(table: CanonicalAnswers, states: list[State], seen: np.ndarray) -> list[list[tuple[int, float]]]:
     """The table's answers for a batch, one list of (action, probability) per state."""
-    sizes, actions, probs = table(BatchState.of(states), seen, lambda i, n: None)
-    out, at = [], 0
-    for size in sizes.tolist():
-        out.append(list(zip(actions[at : at + size].tolist(), probs[at : at + size].tolist(), strict=True)))
-        at += size
-    return out
+    return per_state(*table(BatchState.of(states), seen, lambda i, n: None))
 
 
 def test_a_batch_with_known_and_new_keys_is_answered_as_the_live_partner_answers() -> None:

@@ -20,6 +20,7 @@ from hg_marl.agents.humans.random_human import RandomHuman
 from hg_marl.agents.models.partners import batch_answers
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchState
+from tests.agents.ragged import per_state
 
 ROBOT_HAND, HUMAN_HAND = 7, 8
 HUMAN_SIDE = 3
@@ -40,12 +41,7 @@ def answers(human: object, states: list[State]) -> list[list[tuple[int, float]]]
     world = World("paper2015")
     batch = batch_answers(world, human)
     assert batch is not None
-    sizes, actions, probs = batch(BatchState.of(states))
-    out, at = [], 0
-    for size in sizes.tolist():
-        out.append(list(zip(actions[at : at + size].tolist(), probs[at : at + size].tolist(), strict=True)))
-        at += size
-    return out
+    return per_state(*batch(BatchState.of(states)))
 
 
 def test_the_offer_the_choice_and_the_idle_wait_in_action_order() -> None:
