@@ -24,6 +24,8 @@ from sb3_contrib import MaskablePPO
 from sb3_contrib.common.maskable.utils import get_action_masks
 from stable_baselines3.common.vec_env import VecEnv
 
+from hg_marl.wrappers.sb3 import quiet_logger
+
 ENV_ID = "hg_marl:hg_marl/RobotTableCleaning-v0"
 
 
@@ -107,6 +109,7 @@ def main(steps: int = 1024, seed: int = 0, n_envs: int = 2, human: str = "cooper
     venv = GymnasiumVecEnv(vec)
     try:
         model = MaskablePPO("MlpPolicy", venv, n_steps=128, batch_size=64, n_epochs=2, seed=seed, verbose=0)
+        quiet_logger(model)
         start = time.perf_counter()
         model.learn(total_timesteps=steps)
         seconds = time.perf_counter() - start

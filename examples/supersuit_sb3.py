@@ -28,7 +28,7 @@ from sb3_contrib import MaskablePPO
 
 import hg_marl
 from hg_marl.wrappers import AUDITS, audit_totals, audit_v0, flatten_v0, homogenize_v0, to_parallel
-from hg_marl.wrappers.sb3 import InfoMasks
+from hg_marl.wrappers.sb3 import InfoMasks, quiet_logger
 
 
 def main(steps: int = 2048, seed: int = 0) -> dict[str, Any]:
@@ -40,7 +40,7 @@ def main(steps: int = 2048, seed: int = 0) -> dict[str, Any]:
     venv = ss.concat_vec_envs_v1(venv, 1, num_cpus=0, base_class="stable_baselines3")
     venv = InfoMasks(venv)
     parallel.reset(seed=seed)  # seeds the table's generator; vector resets then continue it
-    model = MaskablePPO("MlpPolicy", venv, n_steps=128, batch_size=64, n_epochs=2, seed=seed, verbose=0)
+    model = quiet_logger(MaskablePPO("MlpPolicy", venv, n_steps=128, batch_size=64, n_epochs=2, seed=seed, verbose=0))
     start = time.perf_counter()
     model.learn(total_timesteps=steps)
     seconds = time.perf_counter() - start

@@ -14,16 +14,22 @@ yes to it; ``seed(s)`` seeds the next reset.
 in ``infos``; it serves them to sb3-contrib through ``env_method("action_masks")`` and
 counts actions sent outside them (``outside_mask``).
 
+:func:`quiet_logger` is the logger every SB3 model here trains with unless TensorBoard
+is asked for: SB3's default creates an empty ``SB3-<date>`` folder in the system's
+temporary folder at every ``learn()``, a write outside the folder the user named.
+
 Needs ``pip install "hg-marl[sb3]"`` (imported on demand by ``hg_marl.wrappers``).
 """
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 from gymnasium.vector import AutoresetMode
+from stable_baselines3.common.logger import HumanOutputFormat, KVWriter, Logger
 from stable_baselines3.common.vec_env import VecEnv, VecEnvWrapper
 
 from hg_marl.core.errors import ConfigError
@@ -160,3 +166,14 @@ class InfoMasks(VecEnvWrapper):
         if method_name == "action_masks":
             return list(self._masks)
         return self.venv.env_method(method_name, *args, indices=indices, **kwargs)
+
+
+def quiet_logger(model: Any, verbose: int = 0) -> Any:
+    """Give ``model`` a logger that writes to no folder (stdout only when ``verbose``); return ``model``.
+
+    SB3 builds its logger in ``learn()`` unless one was set, and that default makes a
+    folder in the temporary directory even when it logs nothing; a set logger is kept.
+    """
+    formats: list[KVWriter] = [HumanOutputFormat(sys.stdout)] if verbose else []
+    model.set_logger(Logger(folder=None, output_formats=formats))
+    return model

@@ -154,8 +154,10 @@ def test_bad_arguments_are_clear() -> None:
 def test_maskable_ppo_learns_briefly() -> None:
     from sb3_contrib import MaskablePPO
 
+    from hg_marl.wrappers.sb3 import quiet_logger
+
     view = RobotView("paper2015", human="cooperative", max_cycles=50)
-    model = MaskablePPO("MlpPolicy", view, n_steps=64, batch_size=32, n_epochs=1, seed=0, device="cpu")
+    model = quiet_logger(MaskablePPO("MlpPolicy", view, n_steps=64, batch_size=32, n_epochs=1, seed=0, device="cpu"))
     model.learn(128)
     obs, _ = view.reset(seed=0)
     action, _ = model.predict(obs, action_masks=view.action_masks())

@@ -410,7 +410,7 @@ def test_maskable_ppo_trains_on_the_batched_env_and_honours_masks() -> None:
     import torch
     from sb3_contrib import MaskablePPO
 
-    from hg_marl.wrappers.sb3 import batched_vec_env
+    from hg_marl.wrappers.sb3 import batched_vec_env, quiet_logger
 
     torch.set_num_threads(1)
     venv = batched_vec_env(16, human="cooperative", max_cycles=50, cache=None)
@@ -423,7 +423,7 @@ def test_maskable_ppo_trains_on_the_batched_env_and_honours_masks() -> None:
         step_async(actions)
 
     venv.step_async = audited  # type: ignore[method-assign]
-    MaskablePPO("MlpPolicy", venv, n_steps=16, batch_size=64, n_epochs=1, seed=0, device="cpu").learn(512)
+    quiet_logger(MaskablePPO("MlpPolicy", venv, n_steps=16, batch_size=64, n_epochs=1, seed=0, device="cpu")).learn(512)
     assert len(sent) >= 512 and all(sent)
 
 
@@ -522,12 +522,12 @@ def test_plain_sb3_algorithms_train_on_the_batched_vec_env(algo: str) -> None:
     sb3 = pytest.importorskip("stable_baselines3")
     import torch
 
-    from hg_marl.wrappers.sb3 import batched_vec_env
+    from hg_marl.wrappers.sb3 import batched_vec_env, quiet_logger
 
     torch.set_num_threads(1)
     venv = batched_vec_env(8, human="lazy", max_cycles=20, cache=None)
     kwargs = {"n_steps": 16, "batch_size": 64} if algo == "PPO" else {"learning_starts": 64, "buffer_size": 1000}
-    model = getattr(sb3, algo)("MlpPolicy", venv, seed=0, device="cpu", **kwargs).learn(256)
+    model = quiet_logger(getattr(sb3, algo)("MlpPolicy", venv, seed=0, device="cpu", **kwargs)).learn(256)
     assert model.num_timesteps >= 256
     assert int(venv.env.cycles.max()) <= 20  # the tables were reset by the adapter as they ended
 

@@ -108,6 +108,7 @@ def train(config: RecurrentSb3Config) -> Sb3RecurrentResult:
     from sb3_contrib import RecurrentPPO
 
     from hg_marl.agents.model_file import save_sb3, world_fields
+    from hg_marl.wrappers.sb3 import quiet_logger
 
     config = config.check()
     torch.set_num_threads(config.threads)
@@ -123,6 +124,7 @@ def train(config: RecurrentSb3Config) -> Sb3RecurrentResult:
         seed=config.seed,
         device="cpu",
     )
+    quiet_logger(model)
     began = time.perf_counter()
     model.learn(config.steps)
     seconds = time.perf_counter() - began

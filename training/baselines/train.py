@@ -253,6 +253,7 @@ def train(config: TrainConfig, callbacks: Sequence[Any] = ()) -> TrainResult:
     from stable_baselines3.common.callbacks import CallbackList
 
     from hg_marl.training.baselines.callbacks import Checkpoints, ProgressBar, StopOnSignal, save_checkpoint
+    from hg_marl.wrappers.sb3 import quiet_logger
 
     torch.set_num_threads(config.torch_threads)
     if resume is not None:
@@ -280,6 +281,8 @@ def train(config: TrainConfig, callbacks: Sequence[Any] = ()) -> TrainResult:
             verbose=config.verbose,
             **model_kwargs(hp),
         )
+    if not config.tensorboard:
+        quiet_logger(model, config.verbose)
     start_steps = int(model.num_timesteps)
 
     freq = checkpoint_every(config, hp, total)
