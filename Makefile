@@ -10,8 +10,11 @@ NOX_ARGS ?=
 MUTATION_ARGS ?=
 RAY_VENV ?= .venv-ray
 TEST_WORKERS ?= 2
+# noxfile.py's sessions, longest first (tests/test_ci_config.py checks none is missing)
+NOX_SESSIONS := cleanrl rllib tianshou core_lowest supersuit
+INTEGRATION_JOBS ?= $(TEST_WORKERS)
 
-.PHONY: setup reproduce test test-slow test-browser test-ray test-integrations test-mutation mutation-full lint docs bench clean
+.PHONY: setup reproduce test test-slow test-browser test-ray test-integrations $(addprefix nox-,$(NOX_SESSIONS)) test-mutation mutation-full lint docs bench clean
 
 # Set-up prints a step counter and pip's own progress (one line per package collected,
 # a bar per download), so the minutes of installing are never silent.
@@ -40,9 +43,15 @@ test-slow: setup
 	$(BIN)/python -m pytest -n $(TEST_WORKERS) -m "slow and not integrations and not browser and not ray" $(PYTEST_ARGS)
 
 # The MARL libraries (Tianshou, RLlib, SuperSuit+SB3, CleanRL-style, make_vec) and the
-# lowest/newest gymnasium and pettingzoo, each in its own nox environment (noxfile.py).
+# lowest/newest gymnasium and pettingzoo, each in its own nox environment (noxfile.py),
+# two sessions at a time (INTEGRATION_JOBS), longest first; each session's output is
+# printed whole when it ends (--output-sync), so the two never interleave.
 test-integrations: setup
-	$(BIN)/nox $(NOX_ARGS)
+	@echo "integrations: nox sessions $(NOX_SESSIONS), $(INTEGRATION_JOBS) at a time; each prints when it ends"
+	$(MAKE) --no-print-directory -j$(INTEGRATION_JOBS) --output-sync=target $(addprefix nox-,$(NOX_SESSIONS))
+
+$(addprefix nox-,$(NOX_SESSIONS)): nox-%: setup
+	$(BIN)/nox -s $* $(NOX_ARGS)
 
 # The web front end in a real headless Chromium: Debian's chromium (installed with
 # apt-get when missing) driven by Playwright with the system executable.

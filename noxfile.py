@@ -7,9 +7,25 @@ examples' tests for that library with ``HG_MARL_INTEGRATION`` set, so a missing
 library fails instead of skipping. Every session that pulls torch pins
 ``torch==2.13.0`` through the extras (the CPU wheel; an unpinned torch may download a
 multi-GB CUDA build).
+
+``make test-integrations`` runs the sessions two at a time (``nox -s NAME`` per make
+target). Installing dominates a session, and pip spends most of it on one core, so two
+sessions side by side nearly halve the stage. Two things make that safe: each session
+installs its third-party requirements on its own (read from ``pyproject.toml``) and the
+project itself last with ``--no-deps`` under a file lock, because an editable install
+writes ``hg_marl.egg-info`` into the shared checkout; and pytest runs without its cache
+folder, which two sessions would otherwise both write. Installs skip compiling every
+installed module to bytecode (``--no-compile``): a session imports a small part of what
+it installs, once.
 """
 
 from __future__ import annotations
+
+import fcntl
+import tomllib
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
 
 import nox
 
@@ -29,13 +45,37 @@ CORE_TESTS = ["tests/env", "tests/core"]
 OWN_EXTRA_ONLY = {"HG_MARL_REQUIRE_EXTRAS": "0"}
 
 
-def examples(session: nox.Session, extra: str, selector: str, name: str) -> None:
-    session.install(TORCH, "-e", f".[{extra}]", "pytest>=8", "hypothesis>=6.100")
+TEST_TOOLS = ["pytest>=8", "hypothesis>=6.100"]
+PYTEST = ["python", "-m", "pytest", "-q", "-p", "no:cacheprovider"]
+PROJECT = tomllib.loads(Path("pyproject.toml").read_text())["project"]
+
+
+@contextmanager
+def _project_lock() -> Iterator[None]:
+    """One editable install of the checkout at a time (see the module's docstring)."""
+    Path(".nox").mkdir(exist_ok=True)
+    with open(".nox/install.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(lock, fcntl.LOCK_UN)
+
+
+def install(session: nox.Session, extra: str | None, *pins: str) -> None:
+    """The project's requirements (with ``extra``'s), ``pins`` and the test tools, then the project itself."""
+    requirements = [*PROJECT["dependencies"], *(PROJECT["optional-dependencies"][extra] if extra else [])]
+    session.install("--no-compile", *pins, *requirements, *TEST_TOOLS)
+    with _project_lock():
+        session.install("--no-compile", "--no-deps", "-e", ".")
+    session.run("python", "-m", "pip", "check")
     session.run("python", "-m", "pip", "list", "--format=freeze", silent=False)
+
+
+def examples(session: nox.Session, extra: str, selector: str, name: str) -> None:
+    install(session, extra, TORCH)
     env = {"HG_MARL_INTEGRATION": name, "OMP_NUM_THREADS": "1"} | OWN_EXTRA_ONLY
-    session.run(
-        "python", "-m", "pytest", "-q", "-m", "integrations", "-k", selector, "tests/integrations", env=env,
-    )  # fmt: skip
+    session.run(*PYTEST, "-m", "integrations", "-k", selector, "tests/integrations", env=env)
 
 
 @nox.session
@@ -46,7 +86,7 @@ def cleanrl(session: nox.Session) -> None:
     core tests there (one install fewer than a separate session: the stage's budget).
     """
     examples(session, "sb3", "cleanrl or make_vec", "cleanrl")
-    session.run("python", "-m", "pytest", "-q", "-m", "not slow and not integrations", *CORE_TESTS, env=OWN_EXTRA_ONLY)
+    session.run(*PYTEST, "-m", "not slow and not integrations", *CORE_TESTS, env=OWN_EXTRA_ONLY)
 
 
 @nox.session
@@ -70,6 +110,5 @@ def rllib(session: nox.Session) -> None:
 @nox.session
 def core_lowest(session: nox.Session) -> None:
     """The environment and wrappers against the lowest declared gymnasium, pettingzoo and numpy."""
-    session.install(*LOWEST, "-e", ".", "pytest>=8", "hypothesis>=6.100")
-    session.run("python", "-m", "pip", "list", "--format=freeze", silent=False)
-    session.run("python", "-m", "pytest", "-q", "-m", "not slow and not integrations", *CORE_TESTS, env=OWN_EXTRA_ONLY)
+    install(session, None, *LOWEST)
+    session.run(*PYTEST, "-m", "not slow and not integrations", *CORE_TESTS, env=OWN_EXTRA_ONLY)
