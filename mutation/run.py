@@ -40,6 +40,7 @@ import subprocess
 import sys
 import tarfile
 import tempfile
+import threading
 import time
 import tomllib
 import traceback
@@ -213,8 +214,13 @@ def scratch_copy(dest: Path) -> Path:
     return dest
 
 
-def _env(scratch: Path) -> dict[str, str]:
-    env = dict(os.environ, PYTHONPATH=str(scratch), PYTHONDONTWRITEBYTECODE="1")
+def _env(scratch: Path | None) -> dict[str, str]:
+    """The tests' environment: imports from ``scratch`` (the warm server's children set their own)."""
+    env = dict(os.environ, PYTHONDONTWRITEBYTECODE="1")
+    if scratch is None:
+        env.pop("PYTHONPATH", None)
+    else:
+        env["PYTHONPATH"] = str(scratch)
     env.setdefault("CI", "1")  # hypothesis replays the same examples (conftest's "ci" profile)
     return env
 
@@ -270,19 +276,18 @@ BASELINE_TIMEOUT = 3600.0
 
 
 class WarmRunner:
-    """The driver's side of ``mutation/warm.py``: one warm server per scratch copy.
+    """The driver's side of ``mutation/warm.py``: one warm server, serving any scratch copy.
 
     The server imports the third-party test stack once and forks a child per test run,
-    which imports the package afresh from the scratch copy (so it sees the mutant on
-    disk); :meth:`run` returns pytest's exit status, whether the time ran out, and the
-    output. ``--cold`` runs every test in a new interpreter instead (``cosmic-ray exec``).
+    which works in the scratch copy the request names and imports the package afresh from
+    it (so it sees the mutant on disk); :meth:`run` returns pytest's exit status, whether
+    the time ran out, and the output. ``--cold`` runs every test in a new interpreter
+    instead (``cosmic-ray exec``).
     """
 
-    def __init__(self, scratch: Path, env: dict[str, str]) -> None:
-        self.log = scratch / "warm-test-output.log"
+    def __init__(self, env: dict[str, str]) -> None:
         self.proc = subprocess.Popen(
             [sys.executable, str(ROOT / "mutation" / "warm.py"), "hg_marl"],
-            cwd=scratch,
             env=env,
             stdin=subprocess.PIPE,
             stdout=subprocess.PIPE,
@@ -302,13 +307,15 @@ class WarmRunner:
                 return data
         raise RuntimeError(f"the warm test runner stopped (exit {self.proc.wait()})")
 
-    def run(self, args: list[str], timeout: float) -> tuple[int, bool, str]:
-        """pytest with ``args`` in a forked child: ``(exit status, timed out, output)``."""
+    def run(self, args: list[str], timeout: float, root: Path) -> tuple[int, bool, str]:
+        """pytest with ``args`` in a forked child working in ``root``: ``(exit status, timed out, output)``."""
         assert self.proc.stdin is not None
-        self.proc.stdin.write(json.dumps({"args": args, "timeout": timeout, "log": str(self.log)}) + "\n")
+        log = root / "warm-test-output.log"
+        request = {"args": args, "timeout": timeout, "log": str(log), "root": str(root)}
+        self.proc.stdin.write(json.dumps(request) + "\n")
         self.proc.stdin.flush()
         answer = self._answer()
-        output = self.log.read_text(errors="replace") if self.log.exists() else ""
+        output = log.read_text(errors="replace") if log.exists() else ""
         return int(answer["code"]), bool(answer["timeout"]), output
 
     def __enter__(self) -> WarmRunner:
@@ -326,6 +333,36 @@ class WarmRunner:
         except subprocess.TimeoutExpired:
             self.proc.kill()
             self.proc.wait()
+
+
+class WarmPool:
+    """One warm server per worker thread, kept for every module that thread mutates.
+
+    Starting a server (importing torch, SB3 and the rest) and stopping it cost a few
+    seconds; paid once per worker instead of once per module.
+    """
+
+    def __init__(self) -> None:
+        self._local = threading.local()
+        self._lock = threading.Lock()
+        self._started: list[WarmRunner] = []
+
+    def get(self) -> WarmRunner:
+        """This thread's server, started on first use (or again if it stopped)."""
+        runner: WarmRunner | None = getattr(self._local, "runner", None)
+        if runner is None or runner.proc.poll() is not None:
+            runner = WarmRunner(_env(None))
+            self._local.runner = runner
+            with self._lock:
+                self._started.append(runner)
+        return runner
+
+    def __enter__(self) -> WarmPool:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        for runner in self._started:
+            runner.close()
 
 
 def _execute_warm(session: Path, scratch: Path, warm: WarmRunner, args: list[str], timeout: float) -> None:
@@ -347,7 +384,7 @@ def _execute_warm(session: Path, scratch: Path, warm: WarmRunner, args: list[str
                     if mutated is None:
                         result = WorkResult(worker_outcome=WorkerOutcome.NO_TEST)
                     else:
-                        code, timed_out, output = warm.run(args, timeout)
+                        code, timed_out, output = warm.run(args, timeout, scratch)
                         name = str(mutation.module_path)
                         diff = difflib.unified_diff(
                             original.splitlines(), mutated.splitlines(), f"a/{name}", f"b/{name}", lineterm=""
@@ -367,6 +404,18 @@ def _execute_warm(session: Path, scratch: Path, warm: WarmRunner, args: list[str
             db.set_result(item.job_id, result)
 
 
+@contextlib.contextmanager
+def _warm_runner(pool: WarmPool | None, cold: bool) -> Iterator[WarmRunner | None]:
+    """The pool's server for this thread (left running), a server of its own, or none (``cold``)."""
+    if cold:
+        yield None
+    elif pool is not None:
+        yield pool.get()
+    else:
+        with WarmRunner(_env(None)) as warm:
+            yield warm
+
+
 def run_module(
     module: Module,
     sample: int | None,
@@ -375,11 +424,13 @@ def run_module(
     work: Path,
     rev: str | None = None,
     cold: bool = False,
+    pool: WarmPool | None = None,
 ) -> Outcome:
     """Baseline, enumerate, sample, execute and score one module.
 
     ``cold``: run each mutant's tests in a new interpreter through ``cosmic-ray exec``
     (the reference the warm runner is checked against) instead of :class:`WarmRunner`.
+    ``pool``: the warm servers to use (one is started and stopped for this module without it).
     """
     from cosmic_ray.work_db import WorkDB, use_db
     from cosmic_ray.work_item import TestOutcome, WorkerOutcome, WorkResult
@@ -395,10 +446,10 @@ def run_module(
     env = _env(scratch)
     command = shlex.join(_test_command(module.tests))  # cosmic-ray runs shlex.split(command)
     args = _pytest_args(module.tests)
-    with contextlib.nullcontext() if cold else WarmRunner(scratch, env) as warm:
+    with _warm_runner(pool, cold) as warm:
         t0 = time.perf_counter()
         if warm is not None:
-            code, _, output = warm.run(args, timeout=BASELINE_TIMEOUT)
+            code, _, output = warm.run(args, BASELINE_TIMEOUT, scratch)
         else:
             base = subprocess.run(shlex.split(command), cwd=scratch, env=env, capture_output=True, text=True)
             code, output = base.returncode, base.stdout
@@ -572,7 +623,7 @@ def main(argv: list[str] | None = None) -> int:
     work = Path(tempfile.mkdtemp(prefix="hg-marl-mutation-"))
     start = time.perf_counter()
     try:
-        with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        with WarmPool() as servers, ThreadPoolExecutor(max_workers=args.jobs) as pool:
             futures = [
                 pool.submit(
                     run_module,
@@ -583,6 +634,7 @@ def main(argv: list[str] | None = None) -> int:
                     work,
                     args.tests_from,
                     args.cold,
+                    servers,
                 )
                 for m in selected
             ]

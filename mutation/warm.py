@@ -9,12 +9,16 @@ mutant on disk), runs ``pytest.main`` and exits with pytest's status; the server
 the child's whole process group when the request's time is up.
 
 Protocol (one JSON object per line): the request ``{"args": [...], "timeout": s, "log":
-path}`` on stdin, the answer ``{"code": n, "timeout": bool}`` on stdout. The child's
-output goes to ``log``.
+path, "root": folder}`` on stdin, the answer ``{"code": n, "timeout": bool}`` on stdout.
+The child's output goes to ``log``. ``root`` (optional) is the scratch copy to test: the
+child works in it and imports from it (first on ``sys.path`` and on ``PYTHONPATH``, for
+the subprocesses tests start), so one server serves every module a worker mutates, each
+in its own copy, and the test stack is imported once per worker instead of once per
+module.
 
 Usage (by ``mutation/run.py``)::
 
-    python mutation/warm.py hg_marl     # in the scratch folder, PYTHONPATH=scratch
+    python mutation/warm.py hg_marl     # requests name their scratch folder as ``root``
 """
 
 from __future__ import annotations
@@ -56,11 +60,15 @@ def preload(package: str) -> None:
         del sys.modules[name]
 
 
-def _child(args: list[str], log: str) -> None:
-    """In the forked child: its own process group, output to ``log``, pytest, exit."""
+def _child(args: list[str], log: str, root: str | None) -> None:
+    """In the forked child: its own process group, in ``root``, output to ``log``, pytest, exit."""
     code = 99
     try:
         os.setsid()
+        if root is not None:
+            os.chdir(root)
+            sys.path.insert(0, root)
+            os.environ["PYTHONPATH"] = root
         out = os.open(log, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
         null = os.open(os.devnull, os.O_RDONLY)
         os.dup2(null, 0)
@@ -77,11 +85,11 @@ def _child(args: list[str], log: str) -> None:
         os._exit(code)
 
 
-def run_once(args: list[str], timeout: float, log: str) -> tuple[int, bool]:
-    """Fork, run pytest with ``args`` in the child; ``(exit code, timed out)``."""
+def run_once(args: list[str], timeout: float, log: str, root: str | None = None) -> tuple[int, bool]:
+    """Fork, run pytest with ``args`` in the child (in ``root``); ``(exit code, timed out)``."""
     pid = os.fork()
     if pid == 0:
-        _child(args, log)
+        _child(args, log, root)
     deadline = time.monotonic() + timeout
     while True:
         done, status = os.waitpid(pid, os.WNOHANG)
@@ -105,7 +113,10 @@ def serve(package: str) -> None:
         if not line.strip():
             continue
         request = json.loads(line)
-        code, timed_out = run_once(list(request["args"]), float(request["timeout"]), str(request["log"]))
+        root = request.get("root")
+        code, timed_out = run_once(
+            list(request["args"]), float(request["timeout"]), str(request["log"]), None if root is None else str(root)
+        )
         print(json.dumps({"code": code, "timeout": timed_out}), flush=True)
 
 

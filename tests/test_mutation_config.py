@@ -95,24 +95,53 @@ def test_the_warm_runner_sees_each_edit_on_disk_and_stops_a_hung_run(mutation, t
     """Each test run is a child forked from the warm server: it must import the package
     as it is on disk now (a mutant written after the server started), report pytest's
     status, and be killed when its time is up (a mutant that loops forever)."""
-    import os
-
     package = tmp_path / "hg_marl"
     package.mkdir()
     (package / "__init__.py").write_text("VALUE = 1\n")
     (tmp_path / "test_value.py").write_text("import hg_marl\n\n\ndef test_value():\n    assert hg_marl.VALUE == 1\n")
-    env = dict(os.environ, PYTHONPATH=str(tmp_path), PYTHONDONTWRITEBYTECODE="1")
     args = ["-q", "-p", "no:cacheprovider", "test_value.py"]
-    warm = mutation.WarmRunner(tmp_path, env)
+    warm = mutation.WarmRunner(mutation._env(None))
     try:
-        assert warm.run(args, timeout=600)[:2] == (0, False)
+        assert warm.run(args, 600, tmp_path)[:2] == (0, False)
         (package / "__init__.py").write_text("VALUE = 2\n")  # the mutant
-        code, timed_out, output = warm.run(args, timeout=600)
+        code, timed_out, output = warm.run(args, 600, tmp_path)
         assert (code, timed_out) == (1, False) and "assert 2 == 1" in output
         (package / "__init__.py").write_text("import time\n\nwhile True:\n    time.sleep(1)\n")
-        assert warm.run(args, timeout=1)[1] is True  # never ends by itself: stopped at its limit
+        assert warm.run(args, 1, tmp_path)[1] is True  # never ends by itself: stopped at its limit
         (package / "__init__.py").write_text("VALUE = 1\n")  # and the server still answers afterwards
-        assert warm.run(args, timeout=600)[:2] == (0, False)
+        assert warm.run(args, 600, tmp_path)[:2] == (0, False)
     finally:
         warm.close()
+    assert warm.proc.returncode == 0
+
+
+def test_one_warm_server_tests_each_scratch_copy_in_its_own_folder(mutation, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    """The pool keeps a server for every module a worker mutates, each module in its own
+    copy: a run must import the copy its request names, work in it, and hand that copy
+    to the subprocesses its tests start (the CLI tests run ``python -m hg_marl...``)."""
+    test = (
+        "import os, subprocess, sys\n\nimport hg_marl\n\n\n"
+        "def test_value():\n"
+        "    child = subprocess.run([sys.executable, '-c', 'import hg_marl; print(hg_marl.VALUE)'],\n"
+        "                           cwd=os.path.dirname(os.getcwd()), capture_output=True, text=True, check=True)\n"
+        "    assert (hg_marl.VALUE, int(child.stdout), os.getcwd()) == (EXPECTED, EXPECTED, FOLDER)\n"
+    )
+    copies = {}
+    for value in (1, 2):
+        root = tmp_path / f"copy{value}"
+        (root / "hg_marl").mkdir(parents=True)
+        (root / "hg_marl" / "__init__.py").write_text(f"VALUE = {value}\n")
+        body = test.replace("EXPECTED", str(value)).replace("FOLDER", repr(str(root)))
+        (root / "test_value.py").write_text(body)
+        copies[value] = root
+    args = ["-q", "-p", "no:cacheprovider", "test_value.py"]
+    with mutation.WarmPool() as pool:
+        warm = pool.get()
+        assert pool.get() is warm  # the same thread gets the same server back
+        for root in (copies[1], copies[2], copies[1]):
+            code, timed_out, output = warm.run(args, 600, root)
+            assert (code, timed_out) == (0, False), output
+        (copies[2] / "hg_marl" / "__init__.py").write_text("VALUE = 3\n")  # a mutant in one copy only
+        assert warm.run(args, 600, copies[2])[0] == 1
+        assert warm.run(args, 600, copies[1])[0] == 0
     assert warm.proc.returncode == 0
