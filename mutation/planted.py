@@ -328,7 +328,114 @@ FRESH2 = (
     ),
 )
 
-ALL = BUGS + FRESH + FRESH2
+
+# Third round: bugs written from the sources of the newest modules (not their tests), each
+# run against its module's gate tests from modules.toml (mutation/README.md, "Fresh planted bugs").
+FRESH3 = (
+    Bug(
+        "fresh3 builder: the re-draw's probabilities leave out the layout's own",
+        "agents/models/builder.py",
+        "lay_p[rows] * first.prob[entry]",
+        "first.prob[entry]",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh3 answers: entries merged into a grown table read from the old entries' offsets",
+        "agents/models/answers.py",
+        "n_old + np.concatenate([[0], np.cumsum(sizes)[:-1]])",
+        "np.concatenate([[0], np.cumsum(sizes)[:-1]])",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh3 partners: an idle wait merged with the offer's probability, not the choice's",
+        "agents/models/partners.py",
+        "np.where(merged, h.p_idle + prob[:, 1], h.p_idle)",
+        "np.where(merged, h.p_idle + prob[:, 0], h.p_idle)",
+        gate("model_partners"),
+    ),
+    Bug(
+        "fresh3 cache: an oracle result keyed without the durations",
+        "agents/models/cache.py",
+        '"durations": repr(world.durations), "spec": spec, "options": options}',
+        '"spec": spec, "options": options}',
+        gate("model_cache"),
+    ),
+    Bug(
+        "fresh3 content: a submodule imported as `from package import module` left out of the code walk",
+        "agents/content.py",
+        '            out.add(base)\n            out.update(f"{base}.{alias.name}" for alias in node.names)',
+        "            out.add(base)",
+        gate("content"),
+    ),
+    Bug(
+        "fresh3 belief: expected seconds reported unnormalised by the members' weight",
+        "agents/robots/belief.py",
+        '("expected_seconds", mixed[action] / total)',
+        '("expected_seconds", mixed[action])',
+        gate("belief"),
+    ),
+    Bug(
+        "fresh3 partner model: a failed robot action counted under its kind, not as failed",
+        "agents/partner_model.py",
+        "model.update(world, step.state, robot_action if step.ok else -1, human_action)",
+        "model.update(world, step.state, robot_action, human_action)",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh3 compiled robot: a robot read from the disk cache gets the default K",
+        "agents/compiled_robot.py",
+        'world, {k: data[k] for k in ("keys", "actions")}, robot, stall_after=stall_after',
+        'world, {k: data[k] for k in ("keys", "actions")}, robot',
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh3 compiled: cache key without the closure humans",
+        "agents/compiled.py",
+        '        "spec": spec,\n        "closure": list(closure),\n',
+        '        "spec": spec,\n',
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh3 heldout curve: a checkpoint exactly at its step is skipped",
+        "training/baselines/heldout_curve.py",
+        "if steps < self.next:",
+        "if steps <= self.next:",
+        gate("heldout_curve"),
+    ),
+    Bug(
+        "fresh3 ppo_recurrent: GAE's lambda term undiscounted, so it crosses an episode's end",
+        "training/baselines/ppo_recurrent.py",
+        "buf.disc[t] * lam * last",
+        "lam * last",
+        gate("ppo_recurrent"),
+    ),
+    Bug(
+        "fresh3 history: a finished episode's final observation carries the reset history",
+        "hg_marl/envs/history.py",
+        '            info["final_obs"] = self._with(info["final_obs"])\n'
+        "            self.tracker.reset(np.flatnonzero(ended))",
+        "            self.tracker.reset(np.flatnonzero(ended))\n"
+        '            info["final_obs"] = self._with(info["final_obs"])',
+        gate("history"),
+    ),
+    Bug(
+        "fresh3 adaptation: metrics start at the first change, not the last",
+        "training/adaptation.py",
+        "return self.at[-1]",
+        "return self.at[0]",
+        gate("adaptation"),
+    ),
+    Bug(
+        "fresh3 population generator: cycles where the human played action 0 left out of its features",
+        "training/population_gen.py",
+        'log["human_action"] >= 0',
+        'log["human_action"] > 0',
+        gate("population_gen"),
+    ),
+)
+
+
+ALL = BUGS + FRESH + FRESH2 + FRESH3
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:

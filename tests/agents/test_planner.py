@@ -146,16 +146,19 @@ def test_optimal_four_objects_many_seeds(scenario: str, weights: CostWeights) ->
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("weights", WEIGHTS.values(), ids=WEIGHTS.keys())
-@pytest.mark.parametrize("seed", range(3))
-def test_optimal_on_roboergosum(seed: int, weights: CostWeights) -> None:
-    """About a minute per case: the exhaustive reference explores every joint cycle."""
+@pytest.mark.parametrize(("seed", "weights"), [(0, "default"), (1, "time_only"), (2, "default")])
+def test_optimal_on_roboergosum(seed: int, weights: str) -> None:
+    """About a minute per case: the exhaustive reference explores every joint cycle.
+
+    Three layouts, each weighting on at least one (every seed with every weighting
+    doubled the slow stage's longest tests for the same check on the same table).
+    """
     world = World("roboergosum")
-    planner = Planner(world, PlannerConfig(weights=weights))
+    planner = Planner(world, PlannerConfig(weights=WEIGHTS[weights]))
     state = world.initial_state(np.random.default_rng(seed))
     result = planner.plan(state)
     check_plan(world, planner, state, result)
-    assert result.cost == pytest.approx(reference_cost(world, state, weights))
+    assert result.cost == pytest.approx(reference_cost(world, state, WEIGHTS[weights]))
 
 
 @pytest.mark.parametrize("seed", range(6))
