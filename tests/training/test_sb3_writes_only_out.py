@@ -37,20 +37,23 @@ def _listing(root: Path) -> list[str]:
     return sorted(str(p) for p in paths if not p.parts[0].startswith("torchinductor_"))
 
 
+def _train_ppo(out: Path, tensorboard: bool) -> None:
+    config = TrainConfig(
+        algo="ppo",
+        steps=128,
+        seed=0,
+        out=out,
+        eval_freq=0,
+        checkpoint_freq=0,
+        tensorboard=tensorboard,
+        env=EnvSpec(partners=("cooperative",), observation="flat"),
+    )
+    train(config)
+
+
 def test_train_sb3_writes_only_inside_out(system_tmp: Path, tmp_path: Path) -> None:
     out = tmp_path / "out"
-    train(
-        TrainConfig(
-            algo="ppo",
-            steps=128,
-            seed=0,
-            out=out,
-            eval_freq=0,
-            checkpoint_freq=0,
-            tensorboard=False,
-            env=EnvSpec(partners=("cooperative",), observation="flat"),
-        )
-    )
+    _train_ppo(out, tensorboard=False)
     assert _listing(system_tmp) == []
     assert _listing(out) == ["model.json", "model.npz"]
 
@@ -58,18 +61,7 @@ def test_train_sb3_writes_only_inside_out(system_tmp: Path, tmp_path: Path) -> N
 def test_train_sb3_with_tensorboard_logs_inside_out(system_tmp: Path, tmp_path: Path) -> None:
     pytest.importorskip("tensorboard")
     out = tmp_path / "out"
-    train(
-        TrainConfig(
-            algo="ppo",
-            steps=128,
-            seed=0,
-            out=out,
-            eval_freq=0,
-            checkpoint_freq=0,
-            tensorboard=True,
-            env=EnvSpec(partners=("cooperative",), observation="flat"),
-        )
-    )
+    _train_ppo(out, tensorboard=True)
     assert _listing(system_tmp) == []
     assert any(name.startswith("tb/") for name in _listing(out))
 
