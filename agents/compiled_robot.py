@@ -50,9 +50,10 @@ against one who refuses, the live robot may find a detour sooner.
 
 Cost: one cold plan per robot-turn state, paid once, after which a batch is one lookup
 instead of a planner per table (its build time and speed-up, measured by
-``benchmarks/batched_throughput.py --human-seat``: ``docs/batched.md``; ``roboergosum`` is
-over :data:`MAX_STATES`). Cached on disk like the compiled humans, only in a folder the
-user names (``cache=FOLDER``, or ``$HG_MARL_CACHE``).
+``benchmarks/batched_throughput.py --human-seat``: ``docs/batched.md``). A scenario with
+more robot-turn states than :data:`MAX_STATES` (``roboergosum``) is planned once per state
+up to relabelling interchangeable objects (:func:`canonical_plans`). Cached on disk like
+the compiled humans, only in a folder the user names (``cache=FOLDER``, or ``$HG_MARL_CACHE``).
 """
 
 from __future__ import annotations
@@ -75,11 +76,15 @@ STALL_AFTER = PROGRESS_AFTER
 """Unchanged robot turns in a row after which the compiled robot takes a stall move (the progress guard's K)."""
 
 MAX_STATES = 50_000
-"""The compiler's budget of robot-turn states (one cold plan each); beyond it, a clear error.
+"""The compiler's budget of cold plans; beyond it, a clear error.
 
-``roboergosum`` has 530,036 robot-turn states: the builder enumerates them in seconds, but
-one cold plan each is over an hour (``docs/exact-references.md``), so it is refused and its
-human seat keeps live robots; ``max_states=`` lifts the budget for a build kept on disk."""
+A scenario with at most this many robot-turn states gets one cold plan per state. A larger
+one (``roboergosum``: 530,036) gets one per state up to relabelling interchangeable
+objects (17,160 there), if those fit (:func:`canonical_plans`); beyond that it is refused
+and its human seat keeps live robots. ``max_states=`` moves the budget."""
+
+MAX_ENUMERATED = 2_000_000
+"""Robot-turn states the compiler enumerates at most (before planning any)."""
 
 COMPILABLE = ("planner",)
 """Robot specs that are compiled (the plain planner: its plans are a function of the state)."""
@@ -143,15 +148,52 @@ def any_answer(world: World) -> Any:
 def enumerate_plans(world: World, max_states: int = MAX_STATES, progress: bool = False) -> dict[State, int]:
     """Every robot-turn state of :func:`robot_states`, with its planner action.
 
-    The states are planned once the set is known, so the budget is checked before the first search.
+    The states are planned once the set is known, so the budget is checked before the first
+    search: each state's cold answer when there are at most ``max_states``, else
+    :func:`canonical_plans`.
     """
-    keys = robot_states(world, max_states, progress)
+    keys = robot_states(world, max(max_states, MAX_ENUMERATED), progress)
     b, _ = StatePacker(world).unpack(keys)
+    if len(b) > max_states:
+        return canonical_plans(world, b, max_states, progress)
     plans: dict[State, int] = {}
     for i in tqdm(range(len(b)), desc="compile planner", unit=" states", disable=not progress, file=sys.stderr):
         state = b.state(i)
         plans[state] = planner_action(world, state)
     return plans
+
+
+def canonical_plans(world: World, b: BatchState, max_states: int, progress: bool = False) -> dict[State, int]:
+    """The cold answer at each state's canonical relabelling, mapped back to the state's objects.
+
+    The planner's problem is the same up to relabelling interchangeable objects (same kind,
+    same bins: :class:`~hg_marl.core.relabel.Relabel`), so an optimal plan at the canonical
+    state, its objects mapped back, is an optimal plan at the state: the cost is the same.
+    Where the state's own cold search would pick another object of the same class at equal
+    cost (the search breaks ties by object index), the table holds the canonical one; every
+    state that is its own canonical relabelling gets exactly its cold answer. Refused, before
+    any search, when the canonical states are more than ``max_states``.
+    """
+    from hg_marl.agents.models.equivariant import object_slots
+
+    packer = StatePacker(world)
+    canon = BatchState(b.where.copy(), b.robot_at.copy(), b.offer_by.copy(), b.offer_obj.copy())
+    orig = packer.canonical(canon)
+    keys = packer.pack(canon, np.full(len(b), -1, dtype=np.int64))
+    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    if len(first) > max_states:
+        raise CompileError(
+            f"scenario: {world.scenario.name!r} has {len(b)} robot-turn states, {len(first)} up to relabelling "
+            f"interchangeable objects, over the {max_states} cold plans of the compiled planner (max_states); "
+            "use compiled=False for live robots"
+        )
+    bar = tqdm(first, desc="compile planner (canonical)", unit=" states", disable=not progress, file=sys.stderr)
+    planned = np.array([planner_action(world, canon.state(int(i))) for i in bar], dtype=np.int64)
+    act = planned[inverse.ravel()]
+    slot, remap = object_slots(world, Agent.ROBOT)
+    rows = np.arange(len(b))
+    back = np.where(slot[act] >= 0, remap[act, orig[rows, np.maximum(slot[act], 0)]], act)
+    return {b.state(i): int(back[i]) for i in range(len(b))}
 
 
 class CompiledRobot:
@@ -223,11 +265,18 @@ class CompiledRobot:
         return self.guard.apply(batch, out)
 
 
-def robot_cache_key(world: World, spec: str, stall_after: int) -> str:
+def robot_cache_key(world: World, spec: str, stall_after: int, max_states: int = MAX_STATES) -> str:
     """Content key of a compiled robot (:func:`hg_marl.agents.content.content_key`): scenario,
-    durations, spec, the rule's ``K`` and the code reachable from this module (the table is built by
-    :func:`planner_action`, so the live robot's own module is not code it runs)."""
-    fields = {"scenario": repr(world.scenario), "durations": repr(world.durations), "spec": spec, "K": stall_after}
+    durations, spec, the rule's ``K``, the budget (it decides between each state's own cold
+    answer and :func:`canonical_plans`) and the code reachable from this module (the table is
+    built by :func:`planner_action`, so the live robot's own module is not code it runs)."""
+    fields = {
+        "scenario": repr(world.scenario),
+        "durations": repr(world.durations),
+        "spec": spec,
+        "K": stall_after,
+        "max_states": max_states,
+    }
     return content.content_key("compiled robot", fields, (__name__,))
 
 
@@ -246,7 +295,7 @@ def compile_robot(
         world: the world (scenario and durations) of the batched env.
         robot: the robot spec; only the plain ``"planner"`` is a function of the state.
         cache: True for ``$HG_MARL_CACHE/partners`` (no disk cache when unset), a folder, or None/False.
-        max_states: the compiler's budget (:class:`CompileError` beyond it).
+        max_states: the compiler's budget of cold plans (:data:`MAX_STATES`; :class:`CompileError` beyond it).
         stall_after: ``K`` of the stall rule.
         progress: show a progress bar of the states planned.
 
@@ -258,7 +307,7 @@ def compile_robot(
     folder = None if cache is None or cache is False else default_cache() if cache is True else Path(cache)
     path = key = None
     if folder is not None:
-        key = robot_cache_key(world, robot, stall_after)
+        key = robot_cache_key(world, robot, stall_after, max_states)
         path = folder / f"{world.scenario.name.split(':')[0]}-robot-{key[:24]}.npz"
         if path.exists():
             try:

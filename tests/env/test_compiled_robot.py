@@ -235,9 +235,14 @@ def test_a_state_that_never_changes_gets_the_planner_k_times_then_each_option_in
     assert int(robot.act(BatchState.of([state]), np.array([-1]), np.random.default_rng(0))[0]) == planned
 
 
-def test_a_scenario_over_the_budget_keeps_live_robots_with_a_warning(caplog: pytest.LogCaptureFixture) -> None:
-    """roboergosum has 530,036 robot-turn states, over the 50,000 budget: refused at once, live robots."""
+def test_a_scenario_over_the_budget_keeps_live_robots_with_a_warning(
+    caplog: pytest.LogCaptureFixture, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A budget of 10 cold plans (paper2015: 328 states up to relabelling): refused, live robots."""
+    from hg_marl.agents import compiled_robot
+
+    monkeypatch.setitem(compiled_robot.compile_robot.__kwdefaults__, "max_states", 10)
     with caplog.at_level("WARNING"):
-        env = human_vector_env(num_envs=2, scenario="roboergosum", cache=None)
+        env = human_vector_env(num_envs=2, scenario="paper2015", cache=None)
     assert isinstance(env.partner, LiveRobots)
-    assert "max_states" in caplog.text
+    assert "328 up to relabelling" in caplog.text and "(max_states)" in caplog.text

@@ -79,10 +79,11 @@ def test_a_robot_tables_key_covers_the_planners_code_and_no_humans(monkeypatch: 
     modules the key's import walk reaches (the planner robot's own, not a human's), without copying."""
     world = World("paper2015")
     asked = record_content_keys(monkeypatch)
-    robot_cache_key(world, "planner", 5)
+    robot_cache_key(world, "planner", 5, 1000)
     [(kind, fields, roots)] = asked
     assert kind == "compiled robot"
-    assert fields == {"scenario": repr(world.scenario), "durations": repr(world.durations), "spec": "planner", "K": 5}
+    expected = {"scenario": repr(world.scenario), "durations": repr(world.durations), "spec": "planner", "K": 5}
+    assert fields == {**expected, "max_states": 1000}
     keyed, _ = content.code_modules(roots)
     shared = ["hg_marl.core.world", "hg_marl.agents.planner.costs", "hg_marl.agents.compiled"]
     shared += ["hg_marl.agents.models.builder", "hg_marl.agents.content"]
@@ -90,3 +91,21 @@ def test_a_robot_tables_key_covers_the_planners_code_and_no_humans(monkeypatch: 
     own += ["hg_marl.agents.partner"]
     assert set(shared + own) <= set(keyed)
     assert not {"hg_marl.agents.humans.lazy", "hg_marl.agents.humans.cooperative"} & set(keyed)
+
+
+def test_a_frozen_tables_counters_read_k_planned_turns_then_one_stall_move_per_turn() -> None:
+    """One table whose state never changes, ``K`` = 3: turns 1-3 are the planner's (no stall
+    move), turns 4-6 are stall moves, so after six turns the table has taken 3 stall moves
+    (``stall_count``), its last move was one (``stalled``), 3 in all (``stall_moves_taken``);
+    a reset zeroes the table's count."""
+    world = World(TINY)
+    robot = compile_robot(world, cache=None, stall_after=3)
+    state = world.initial_state(np.random.default_rng(11))
+    robot.reset_rows(np.array([0]), np.random.default_rng(0))
+    for turn in range(1, 7):
+        robot.act(BatchState.of([state]), np.array([-1]), np.random.default_rng(0))
+        assert robot.stall_count.tolist() == [max(0, turn - 3)]
+        assert robot.stalled.tolist() == [turn > 3]
+    assert robot.stall_moves_taken == 3
+    robot.reset_rows(np.array([0]), np.random.default_rng(0))
+    assert robot.stall_count.tolist() == [0]
