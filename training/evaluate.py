@@ -174,11 +174,12 @@ def score_table(
     return frame[list(SCORE_COLUMNS)]
 
 
-def headroom_of(store: Store, study: Study, scenario: str) -> float | None:
+def headroom_of(store: Store, study: Study, scenario: str, progress: bool = False) -> float | None:
     """The scenario's adaptation headroom over the study's held-out partners (cached; None: not computable).
 
     The partners are the study's stationary test partners (every stationary partner when
-    the study has no test group); see :mod:`hg_marl.agents.headroom`.
+    the study has no test group); see :mod:`hg_marl.agents.headroom`. ``progress`` shows
+    the model's bars on stderr (on a large table the joint model takes minutes).
     """
     import hashlib
     import inspect
@@ -203,7 +204,7 @@ def headroom_of(store: Store, study: Study, scenario: str) -> float | None:
 
         try:
             value = module.headroom(
-                scenario, [(h.label, h.spec()) for h in test], max_states=study.oracle_max_states
+                scenario, [(h.label, h.spec()) for h in test], max_states=study.oracle_max_states, progress=progress
             ).headroom
         except OracleTooLarge as exc:
             log.warning("headroom of %s is over its budget (%s)", scenario, exc)
@@ -228,7 +229,7 @@ def evaluate(
         out: output folder; its ``store`` keeps the runs.
         backend: executor (default: in this process).
         on_done: called per cell as it is found or finished (progress bars).
-        progress: show the bar of each oracle solve not yet in the store (stderr).
+        progress: show the bar of each oracle solve and of the headroom's model not yet in the store (stderr).
     """
     from hg_marl.training.report import write_outputs
     from hg_marl.training.sweep import run_jobs, store_of
@@ -238,5 +239,5 @@ def evaluate(
     plan = cells(study)
     runs, stats = run_jobs([c.job for c in plan], store, backend or LocalBackend(1), on_done)
     frame = score_table(study, plan, runs, store, progress)
-    headrooms = {scenario: headroom_of(store, study, scenario) for scenario in study.scenarios}
+    headrooms = {scenario: headroom_of(store, study, scenario, progress) for scenario in study.scenarios}
     return write_outputs(study, frame, out, {"ran": stats.ran, "reused": stats.reused}, headrooms)

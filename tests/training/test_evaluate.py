@@ -211,3 +211,13 @@ def test_one_seed_study_flags_its_intervals_and_says_what_it_ran(tmp_path: Path)
     assert code == 0 and f"store {tmp_path / 'store'}: 0 runs made, 4 reused" in err
     assert "oracle paper2015: states" not in err
     assert "of which aggregation" in out
+
+
+@pytest.mark.parametrize("progress", [True, False])
+def test_the_headrooms_model_shows_its_progress_when_asked(
+    progress: bool, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The headroom's joint model takes minutes on a large table: ``evaluate(progress=True)``
+    (the CLI's) shows its bars on stderr, as it does each oracle's; without it, nothing."""
+    evaluate(load_study(TINY).narrowed(seeds=1), tmp_path, progress=progress)
+    assert ("headroom: policies" in capsys.readouterr().err) is progress
