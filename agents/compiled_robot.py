@@ -174,11 +174,10 @@ def canonical_plans(world: World, b: BatchState, max_states: int, progress: bool
     state that is its own canonical relabelling gets exactly its cold answer. Refused, before
     any search, when the canonical states are more than ``max_states``.
     """
-    from hg_marl.agents.models.equivariant import object_slots
+    from hg_marl.agents.models.equivariant import actions_back, canonical_copy, object_slots
 
     packer = StatePacker(world)
-    canon = BatchState(b.where.copy(), b.robot_at.copy(), b.offer_by.copy(), b.offer_obj.copy())
-    orig = packer.canonical(canon)
+    canon, orig = canonical_copy(packer, b)
     keys = packer.pack(canon, np.full(len(b), -1, dtype=np.int64))
     _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
     if len(first) > max_states:
@@ -189,10 +188,8 @@ def canonical_plans(world: World, b: BatchState, max_states: int, progress: bool
         )
     bar = tqdm(first, desc="compile planner (canonical)", unit=" states", disable=not progress, file=sys.stderr)
     planned = np.array([planner_action(world, canon.state(int(i))) for i in bar], dtype=np.int64)
-    act = planned[inverse.ravel()]
     slot, remap = object_slots(world, Agent.ROBOT)
-    rows = np.arange(len(b))
-    back = np.where(slot[act] >= 0, remap[act, orig[rows, np.maximum(slot[act], 0)]], act)
+    back = actions_back(slot, remap, planned[inverse.ravel()], orig, np.arange(len(b)))
     return {b.state(i): int(back[i]) for i in range(len(b))}
 
 

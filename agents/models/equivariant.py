@@ -62,6 +62,24 @@ def object_slots(world: World, agent: Agent) -> tuple[np.ndarray, np.ndarray]:
     return slot, remap
 
 
+def canonical_copy(packer: StatePacker, states: BatchState) -> tuple[BatchState, np.ndarray]:
+    """A copy of ``states`` relabelled into canonical form, and ``orig`` (:meth:`StatePacker.canonical`)."""
+    canon = BatchState(states.where.copy(), states.robot_at.copy(), states.offer_by.copy(), states.offer_obj.copy())
+    return canon, packer.canonical(canon)
+
+
+def actions_back(
+    slot: np.ndarray, remap: np.ndarray, actions: np.ndarray, orig: np.ndarray, rows: np.ndarray
+) -> np.ndarray:
+    """Each action of the canonical labelling, answered for row ``rows[i]``, on that row's own objects.
+
+    ``slot`` and ``remap`` are :func:`object_slots`' for the acting agent; an action that
+    names no object is its own.
+    """
+    named = slot[actions]
+    return np.where(named >= 0, remap[actions, orig[rows, np.maximum(named, 0)]], actions)
+
+
 class CanonicalAnswers:
     """Answers by canonical (state, representative seen) key; the live partner asked once per key."""
 
@@ -81,8 +99,7 @@ class CanonicalAnswers:
 
     def __call__(self, states: BatchState, seen: np.ndarray, check: Check) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(entries per state, actions, probabilities) of a batch, entries in index order per state."""
-        canon = BatchState(states.where.copy(), states.robot_at.copy(), states.offer_by.copy(), states.offer_obj.copy())
-        orig = self.packer.canonical(canon)
+        canon, orig = canonical_copy(self.packer, states)
         rep = self.rep[seen] if self.uses_robot_action else np.full(len(seen), -1, dtype=np.int64)
         keys = self.packer.pack(canon, rep)
         uniq, first, inv = np.unique(keys, return_index=True, return_inverse=True)
@@ -91,9 +108,7 @@ class CanonicalAnswers:
         start, size = self.starts[at], self.starts[at + 1] - self.starts[at]
         rows = np.repeat(np.arange(len(keys)), size)
         entry = np.repeat(start - np.concatenate([[0], np.cumsum(size)[:-1]]), size) + np.arange(len(rows))
-        act = self.actions[entry]
-        slot = self.slot[act]
-        back = np.where(slot >= 0, self.remap[act, orig[rows, np.maximum(slot, 0)]], act)
+        back = actions_back(self.slot, self.remap, self.actions[entry], orig, rows)
         order = np.lexsort((back, rows))  # the live partner lists a distribution in index order
         return size, back[order], self.probs[entry][order]
 

@@ -62,3 +62,11 @@ def test_within_the_budget_every_state_gets_its_own_cold_answer() -> None:
     plans = enumerate_plans(world)  # 845 states: within the default budget
     assert len(plans) == 845
     assert all(action == planner_action(world, state) for state, action in plans.items())
+
+
+def test_a_budget_of_exactly_the_states_still_gives_each_its_own_cold_answer() -> None:
+    """1,892 states and a budget of 1,892 cold plans: no relabelling (which would move the ties)."""
+    world = World("paper2015")
+    plans = enumerate_plans(world, max_states=1892)
+    assert len(plans) == 1892
+    assert all(action == planner_action(world, state) for state, action in plans.items())
