@@ -128,6 +128,9 @@ class Outcome:
     prejudged: int = 0
     """Mutants left out of the sample because ``equivalent.toml`` justifies them by their line alone."""
     survivors: list[dict[str, str | int]] = field(default_factory=list)
+    timed_out: list[dict[str, str | int]] = field(default_factory=list)
+    """Mutants whose tests ran out of time (counted as killed, as cosmic-ray does): each one costs
+    the whole timeout, so a test that fails fast on it shortens the stage."""
     baseline_s: float = 0.0
     wall_s: float = 0.0
     error: str = ""
@@ -495,6 +498,9 @@ def run_module(
                 out.run += 1
                 if result.output == "timeout":  # cosmic-ray counts a timed-out test run as killed
                     out.timeouts += 1
+                    removed, added = _diff_lines(result.diff or "")
+                    line, op = item.mutations[0].start_pos[0], item.mutations[0].operator_name
+                    out.timed_out.append({"line": line, "operator": op, "removed": removed, "added": added})
                 if result.test_outcome == TestOutcome.INCOMPETENT:  # the mutant cannot even be imported
                     out.incompetent += 1
                 if result.worker_outcome != WorkerOutcome.NORMAL or result.is_killed:
@@ -540,6 +546,9 @@ def report(outcomes: list[Outcome], target: float) -> None:
         for s in o.survivors:
             tag = f"equivalent: {s['equivalent']}" if s["equivalent"] else "SURVIVED"
             print(f"\n{o.path}:{s['line']} [{s['operator']}] {tag}\n  - {s['removed']}\n  + {s['added']}")
+        for s in o.timed_out:
+            where = f"{o.path}:{s['line']} [{s['operator']}]"
+            print(f"\n{where} killed by the timeout\n  - {s['removed']}\n  + {s['added']}")
         if o.error:
             print(f"\n{o.key}: {o.error}")
 

@@ -63,3 +63,78 @@ def test_the_replayed_body_comes_once_then_the_real_receive() -> None:
     first, second = asyncio.run(run())
     assert first == {"type": "http.request", "body": b"read before", "more_body": False}
     assert second == {"type": "http.disconnect"}
+
+
+class _Timer:
+    def __init__(self, delay: float, callback: Any, args: tuple[Any, ...]) -> None:
+        self.delay, self.callback, self.args, self.cancelled = delay, callback, args, False
+
+    def cancel(self) -> None:
+        self.cancelled = True
+
+
+class _Loop:
+    """The protocol's event loop, reduced to a list of the deadlines it was asked to keep."""
+
+    def __init__(self) -> None:
+        self.timers: list[_Timer] = []
+
+    def call_later(self, delay: float, callback: Any, *args: Any) -> _Timer:
+        self.timers.append(_Timer(delay, callback, args))
+        return self.timers[-1]
+
+    def live(self) -> list[tuple[float, tuple[Any, ...]]]:
+        return [(t.delay, t.args) for t in self.timers if not t.cancelled]
+
+
+class _Transport:
+    def __init__(self) -> None:
+        self.closed = False
+
+    def get_extra_info(self, name: str, default: Any = None) -> Any:
+        return default
+
+    def is_closing(self) -> bool:
+        return self.closed
+
+    def close(self) -> None:
+        self.closed = True
+
+
+def _connected(limits: Any) -> tuple[Any, _Loop, _Transport]:
+    """A :func:`timed_protocol` connection on a fake loop and transport, just opened."""
+    from uvicorn.config import Config
+    from uvicorn.server import ServerState
+
+    from hg_marl.training.play.server_limits import timed_protocol
+
+    async def app(scope: Any, receive: Any, send: Any) -> None:  # never reached: no request completes
+        raise AssertionError("no request should reach the app")
+
+    loop, transport = _Loop(), _Transport()
+    protocol = timed_protocol(limits)(Config(app=app), ServerState(), {}, _loop=loop)
+    protocol.connection_made(transport)
+    return protocol, loop, transport
+
+
+def test_a_request_line_begun_arms_the_header_deadline_which_closes_the_connection() -> None:
+    from hg_marl.training.play.server_limits import ServerLimits
+
+    protocol, loop, transport = _connected(ServerLimits(idle_timeout=1.0, header_timeout=2.0, body_timeout=3.0))
+    assert loop.live() == [(1.0, ())]  # just opened: uvicorn's idle timer, armed by our protocol
+    protocol.data_received(b"GET / HTTP/1.1\r\nHost: x\r\nX-Slow: a")  # headers begun, never ended
+    assert loop.live() == [(2.0, ("header",))]  # the idle timer gave way to the header deadline
+    (timer,) = [t for t in loop.timers if not t.cancelled]
+    timer.callback(*timer.args)
+    assert transport.closed
+
+
+def test_a_deadline_of_a_phase_already_left_closes_nothing() -> None:
+    from hg_marl.training.play.server_limits import ServerLimits
+
+    protocol, _, transport = _connected(ServerLimits(idle_timeout=1.0, header_timeout=2.0, body_timeout=3.0))
+    protocol.data_received(b"GET / HTTP/1.1\r\n")
+    protocol._expire("body")  # a stale body deadline: the client is in its headers
+    assert not transport.closed
+    protocol._expire("header")
+    assert transport.closed

@@ -38,7 +38,7 @@ def test_rerun_after_a_crash_equals_an_uninterrupted_sweep(
 
     monkeypatch.setattr(backends, "execute", crash_on_second)
     with pytest.raises(KeyboardInterrupt):
-        run_sweep(JOBS, tmp_path)
+        run_sweep(JOBS, tmp_path, workers=1)  # in this process, where the patched execute is seen
     monkeypatch.setattr(backends, "execute", real)
     again = run_sweep(JOBS, tmp_path)
     assert [s["job"]["seed"] for s in again] == [0, 1, 2]
