@@ -435,7 +435,111 @@ FRESH3 = (
 )
 
 
-ALL = BUGS + FRESH + FRESH2 + FRESH3
+# Fourth round: bugs written from the sources of the newest modules (not their tests), each
+# run against its module's gate tests from modules.toml (mutation/README.md, "Fresh planted bugs").
+FRESH4 = (
+    Bug(
+        "fresh4 compiled robot: a canonical class planned at its first state's own objects, not the canonical ones",
+        "agents/compiled_robot.py",
+        "planner_action(world, canon.state(int(i))) for i in bar",
+        "planner_action(world, b.state(int(i))) for i in bar",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh4 equivariant: probabilities left in canonical order while the actions are re-sorted",
+        "agents/models/equivariant.py",
+        "return size, back[order], self.probs[entry][order]",
+        "return size, back[order], self.probs[entry]",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh4 lazy: a transition's seconds without the robot's action",
+        "agents/models/lazy.py",
+        'tau = np.maximum(self.d_robot[pair_of], table.entries["d_human"][at])',
+        'tau = table.entries["d_human"][at]',
+        gate("model_lazy"),
+    ),
+    Bug(
+        "fresh4 chains: certain states grown through pairs that leak out of the alive set",
+        "agents/models/chains.py",
+        "states = pair_state[pairs[ok[pairs]]]",
+        "states = pair_state[pairs]",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh4 layouts: canonical deal probability without the (m - c)! of the free spots",
+        "agents/models/layouts.py",
+        "q *= math.prod(math.factorial(n) for n in comp) * math.factorial(m - c) / math.factorial(m)",
+        "q *= math.prod(math.factorial(n) for n in comp) / math.factorial(m)",
+        gate("model_layouts"),
+    ),
+    Bug(
+        "fresh4 solve: a pair's cost sums its transitions' seconds unweighted by their probabilities",
+        "agents/models/solve.py",
+        "weights=model.t_prob * model.t_tau",
+        "weights=model.t_tau",
+        gate("model_solve"),
+    ),
+    Bug(
+        "fresh4 batch: a failed take keeps the partner's offer",
+        "hg_marl/core/batch.py",
+        "lapse = (b.offer_by == 1 - agent) & ~(take_reply & ok)",
+        "lapse = (b.offer_by == 1 - agent) & ~take_reply",
+        gate("batch_rules"),
+    ),
+    Bug(
+        "fresh4 array partner: the reset capability declared under another name, so no partner is reset",
+        "hg_marl/envs/array_partner.py",
+        "    def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:",
+        "    def reset(self, rows: np.ndarray, rng: np.random.Generator) -> None:",
+        gate("array_partner"),
+    ),
+    Bug(
+        "fresh4 family-out: after-waits reads the pause one move late (this cycle's move and the one before)",
+        "agents/humans/family_out.py",
+        "self.robot_moves[-3] == self.robot_moves[-2] == wait_r",
+        "self.robot_moves[-2] == self.robot_moves[-1] == wait_r",
+        gate("family_out"),
+    ),
+    Bug(
+        "fresh4 recipes: fcp_init without its eps = 1.0 checkpoint",
+        "training/baselines/recipes.py",
+        "return NoisyPartner(world, members, FCP_INIT_LEVELS)",
+        "return NoisyPartner(world, members, FCP_LEVELS)",
+        gate("recipes"),
+    ),
+    Bug(
+        "fresh4 switching: recovery measured against the outgoing member's rate",
+        "training/switching.py",
+        'rate = rates[0] if names[k + 1] == "a" else rates[1]',
+        'rate = rates[0] if names[k] == "a" else rates[1]',
+        gate("switching"),
+    ),
+    Bug(
+        "fresh4 memory robot: history features seen from the human's seat",
+        "agents/robots/memory.py",
+        "self.tracker.features(Agent.ROBOT)[0]",
+        "self.tracker.features(Agent.HUMAN)[0]",
+        gate("memory_robot"),
+    ),
+    Bug(
+        "fresh4 relabel: the offered object mapped forward through orig, not back",
+        "hg_marl/core/relabel.py",
+        "offer_obj = orig.index(state.offer_obj) if state.offer_obj >= 0 else -1",
+        "offer_obj = orig[state.offer_obj] if state.offer_obj >= 0 else -1",
+        gate("relabel"),
+    ),
+    Bug(
+        "fresh4 generated scenario: default spots N + 1, not N + 2",
+        "hg_marl/core/scenario_generated.py",
+        "n_spots = objects + 2 if spots is None else spots",
+        "n_spots = objects + 1 if spots is None else spots",
+        gate("scenario_generated"),
+    ),
+)
+
+
+ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:

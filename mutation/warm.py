@@ -24,6 +24,7 @@ Usage (by ``mutation/run.py``)::
 from __future__ import annotations
 
 import contextlib
+import gc
 import importlib
 import json
 import os
@@ -48,7 +49,7 @@ PRELOAD = (
 
 
 def preload(package: str) -> None:
-    """Import :data:`PRELOAD`, then forget every module of ``package`` they imported.
+    """Import :data:`PRELOAD`, forget every module of ``package`` they imported, freeze the heap.
 
     A child must import ``package`` from disk, or it would test the code as it was when
     the server started instead of the mutant.
@@ -58,6 +59,12 @@ def preload(package: str) -> None:
             importlib.import_module(name)
     for name in [m for m in sys.modules if m == package or m.startswith(package + ".")]:
         del sys.modules[name]
+    gc.collect()
+    # Every object alive now moves to a generation the collector never scans: a child's
+    # collections (pytest runs two full ones at exit) then walk only what the child made,
+    # not the whole of torch; a full collection over the preloaded heap took 0.14 s, most
+    # of a small test file's run. The children also stop touching these objects' pages.
+    gc.freeze()
 
 
 def _child(args: list[str], log: str, root: str | None) -> None:

@@ -115,6 +115,28 @@ def test_the_warm_runner_sees_each_edit_on_disk_and_stops_a_hung_run(mutation, t
     assert warm.proc.returncode == 0
 
 
+def test_a_child_starts_with_the_servers_heap_frozen_and_collects_its_own_garbage(mutation, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    """The server freezes what it imported before forking (a child's full collections then
+    skip torch's objects); what the child itself makes is still collected."""
+    (tmp_path / "hg_marl").mkdir()
+    (tmp_path / "hg_marl" / "__init__.py").write_text("")
+    (tmp_path / "test_heap.py").write_text(
+        "import gc\n\n\n"
+        "def test_heap():\n"
+        "    assert gc.get_freeze_count() > 10_000  # numpy, pytest, torch... imported by the server\n"
+        "    cycle = []\n"
+        "    cycle.append(cycle)\n"
+        "    del cycle\n"
+        "    assert gc.collect() >= 1  # the child's own cycle\n"
+    )
+    warm = mutation.WarmRunner(mutation._env(None))
+    try:
+        code, timed_out, output = warm.run(["-q", "-p", "no:cacheprovider", "test_heap.py"], 600, tmp_path)
+    finally:
+        warm.close()
+    assert (code, timed_out) == (0, False), output
+
+
 def test_one_warm_server_tests_each_scratch_copy_in_its_own_folder(mutation, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
     """The pool keeps a server for every module a worker mutates, each module in its own
     copy: a run must import the copy its request names, work in it, and hand that copy

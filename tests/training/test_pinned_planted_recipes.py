@@ -54,3 +54,20 @@ def test_a_table_that_draws_no_cycle_is_left_as_it_was_and_one_cycle_is_one_cycl
         elif not world.is_clean(after[i]):
             assert after[i] in one_cycle(world, states[i]), i
     assert env._stale.all()
+
+
+def test_fcp_init_draws_the_random_checkpoint_too_and_fcp_does_not() -> None:
+    """FCP's pool holds each partner at its end, half way, early (eps 0, 0.3, 0.6); ``fcp_init``
+    adds its start, a uniformly random policy (eps 1.0). Each table draws one level per reset,
+    uniformly: drawn here from the same seed by hand."""
+    from hg_marl.training.baselines.recipes import recipe_partner
+
+    world = World("paper2015")
+    rows = np.arange(400)
+    expected = {"fcp": (0.0, 0.3, 0.6), "fcp_init": (0.0, 0.3, 0.6, 1.0)}
+    for recipe, levels in expected.items():
+        partner = recipe_partner(world, ("random",), recipe, None)
+        partner.reset_rows(rows, np.random.default_rng(5))
+        by_hand = np.array(levels)[np.random.default_rng(5).integers(len(levels), size=len(rows))]
+        assert partner.eps.tolist() == by_hand.tolist(), recipe
+        assert set(partner.eps.tolist()) == set(levels), recipe
