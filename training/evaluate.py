@@ -181,17 +181,17 @@ def headroom_of(store: Store, study: Study, scenario: str, progress: bool = Fals
     the study has no test group); see :mod:`hg_marl.agents.headroom`. ``progress`` shows
     the model's bars on stderr (on a large table the joint model takes minutes).
     """
-    import hashlib
-    import inspect
-
+    from hg_marl.agents import content
     from hg_marl.agents import headroom as module
-    from hg_marl.agents import oracle
+    from hg_marl.agents.humans.registry import HUMANS
 
     pool = [h for h in study.humans if stationary(h)]
     test = [h for h in pool if study.group(h.label) == "test"] or pool
     if not test:
         return None
-    code = hashlib.sha256((inspect.getsource(module) + inspect.getsource(oracle)).encode()).hexdigest()
+    # the code of the headroom, the models it builds and every partner's module (the store's
+    # own roots, the runner's, do not reach the headroom)
+    code = content.code_digest((module.__name__, *content.registry_targets(HUMANS)))
     fields = {
         "humans": [{"label": h.label, "name": h.name, "params": dict(h.params)} for h in test],
         "scenario": scenario_content(scenario),

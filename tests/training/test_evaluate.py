@@ -221,3 +221,40 @@ def test_the_headrooms_model_shows_its_progress_when_asked(
     (the CLI's) shows its bars on stderr, as it does each oracle's; without it, nothing."""
     evaluate(load_study(TINY).narrowed(seeds=1), tmp_path, progress=progress)
     assert ("headroom: policies" in capsys.readouterr().err) is progress
+
+
+def test_the_headrooms_cache_key_covers_the_models_and_every_partners_code(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A changed model builder, solver or partner module must compute the headroom again: the
+    key's code is the digest of every project module the headroom and the humans reach."""
+    from hg_marl.agents import content
+    from hg_marl.training.evaluate import headroom_of
+
+    asked: list[dict] = []
+
+    class Keys:
+        def cached(self, kind: str, fields: dict, compute: object) -> float:
+            asked.append(fields)
+            return 0.5  # nothing is computed: only the key is looked at
+
+    roots: list[tuple[str, ...]] = []
+    real = content.code_digest
+
+    def recording(given: tuple[str, ...]) -> str:
+        roots.append(tuple(given))
+        return real(given)
+
+    monkeypatch.setattr(content, "code_digest", recording)
+    assert headroom_of(Keys(), load_study(TINY), "paper2015") == 0.5  # type: ignore[arg-type]
+    (used,) = roots
+    assert asked[0]["code"] == real(used)
+    reached = content.code_modules(used)[0]
+    for module in (
+        "hg_marl.agents.headroom",
+        "hg_marl.agents.oracle",
+        "hg_marl.agents.models.builder",
+        "hg_marl.agents.models.chains",
+        "hg_marl.agents.humans.cooperative",
+        "hg_marl.agents.humans.lazy",
+        "hg_marl.core.batch",
+    ):
+        assert module in reached, module
