@@ -496,30 +496,26 @@ def run_module(
                 if result.worker_outcome == WorkerOutcome.SKIPPED:
                     continue
                 out.run += 1
+                mutation = item.mutations[0]
+                removed, added = _diff_lines(result.diff or "")
+                op = mutation.operator_name
+                where: dict[str, str | int] = {
+                    "line": mutation.start_pos[0],
+                    "operator": op,
+                    "removed": removed,
+                    "added": added,
+                }
                 if result.output == "timeout":  # cosmic-ray counts a timed-out test run as killed
                     out.timeouts += 1
-                    removed, added = _diff_lines(result.diff or "")
-                    line, op = item.mutations[0].start_pos[0], item.mutations[0].operator_name
-                    out.timed_out.append({"line": line, "operator": op, "removed": removed, "added": added})
+                    out.timed_out.append(where)
                 if result.test_outcome == TestOutcome.INCOMPETENT:  # the mutant cannot even be imported
                     out.incompetent += 1
                 if result.worker_outcome != WorkerOutcome.NORMAL or result.is_killed:
                     out.killed += 1
                     continue
-                removed, added = _diff_lines(result.diff or "")
-                mutation = item.mutations[0]
-                op = mutation.operator_name
                 why = next((e.why for e in equivalents if e.matches(module.key, op, removed, added)), "")
                 out.equivalent += bool(why)
-                out.survivors.append(
-                    {
-                        "line": mutation.start_pos[0],
-                        "operator": op,
-                        "removed": removed,
-                        "added": added,
-                        "equivalent": why,
-                    }
-                )
+                out.survivors.append({**where, "equivalent": why})
         out.survivors.sort(key=lambda s: int(s["line"]))
         out.wall_s = time.perf_counter() - start
         return out
@@ -543,12 +539,9 @@ def report(outcomes: list[Outcome], target: float) -> None:
             f"{o.score:>6.1%}  {o.wall_s:5.0f}s{flag}"
         )
     for o in outcomes:
-        for s in o.survivors:
-            tag = f"equivalent: {s['equivalent']}" if s["equivalent"] else "SURVIVED"
+        listed = [(s, f"equivalent: {s['equivalent']}" if s["equivalent"] else "SURVIVED") for s in o.survivors]
+        for s, tag in [*listed, *((s, "killed by the timeout") for s in o.timed_out)]:
             print(f"\n{o.path}:{s['line']} [{s['operator']}] {tag}\n  - {s['removed']}\n  + {s['added']}")
-        for s in o.timed_out:
-            where = f"{o.path}:{s['line']} [{s['operator']}]"
-            print(f"\n{where} killed by the timeout\n  - {s['removed']}\n  + {s['added']}")
         if o.error:
             print(f"\n{o.key}: {o.error}")
 

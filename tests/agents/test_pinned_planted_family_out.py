@@ -45,12 +45,11 @@ def test_bursts_phase_by_the_clock(clock: float, resting: bool) -> None:
     assert action == (wait_index(world) if resting else working)
 
 
-def _after_waits_answers(robot_moves: list[int]) -> list[int]:
-    """``fo_after_waits``'s answers, one turn per robot move, the robot offering object 0 throughout."""
+def _after_waits_answers(world: World, robot_moves: list[int]) -> list[int]:
+    """``fo_after_waits``'s answers on ``paper2015``, a turn per robot move, the robot offering object 0."""
     from hg_marl.agents.humans.family_out import AfterWaits
     from hg_marl.core import State
 
-    world = World("paper2015")
     # object 0 in the robot's hand (spot 7), offered to the human; the robot at the human's side
     offer = State(where=(7, 4, 2), robot_at=3, offer_by=int(Agent.ROBOT), offer_obj=0)
     human = AfterWaits()
@@ -62,7 +61,7 @@ def test_after_waits_takes_the_offer_made_right_after_two_waits() -> None:
     world = World("paper2015")
     wait, give0 = world.n_actions(Agent.ROBOT) - 1, 6  # robot action 6: GIVE object 0
     assert world.actions(Agent.ROBOT)[give0].kind == Kind.GIVE
-    answers = _after_waits_answers([wait, wait, give0])
+    answers = _after_waits_answers(world, [wait, wait, give0])
     took = world.actions(Agent.HUMAN)[answers[-1]]
     assert (took.kind, took.obj) == (Kind.TAKE, 0)  # wait, wait, then the offer: "this is for you"
 
@@ -70,5 +69,5 @@ def test_after_waits_takes_the_offer_made_right_after_two_waits() -> None:
 @pytest.mark.parametrize("moves", [[0, 6], [17, 6], [0, 17, 6], [17, 0, 6], [6, 17, 6]])
 def test_after_waits_leaves_an_offer_without_two_waits_just_before(moves: list[int]) -> None:
     world = World("paper2015")
-    answers = _after_waits_answers(moves)
+    answers = _after_waits_answers(world, moves)
     assert world.actions(Agent.HUMAN)[answers[-1]].kind != Kind.TAKE
