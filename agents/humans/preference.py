@@ -34,6 +34,7 @@ from dataclasses import dataclass
 
 from hg_marl.agents.humans.base import Distribution, StationaryHuman, check_p_idle, wait_index, with_idle
 from hg_marl.core import Agent, Kind, State, World
+from hg_marl.core.spec import format_spec, parse_spec
 
 _MEMO_LIMIT = 500_000
 _TIE = 1e-9
@@ -213,3 +214,17 @@ class PreferenceHuman(StationaryHuman):
             self._memo.clear()
         self._memo[state] = dist
         return dist
+
+
+def never_takes(spec: str) -> str:
+    """``spec`` as the same partner who never takes what the robot offers (``accept=0``).
+
+    The belief robot plans against a member this way once its partner has refused more
+    offers than the member's ``accept`` explains: the member's exact best response then
+    plans no handover to the partner. A spec of another human is returned unchanged (no
+    parameter of theirs says it).
+    """
+    parsed = parse_spec(spec)
+    if parsed.name != PreferenceHuman.name:
+        return spec
+    return format_spec(parsed.name, {**parsed.raw, "accept": "0.0"})

@@ -45,6 +45,13 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   belief cannot move), it plays the oracle robot's fallback:
   the planner's move, or a feasible non-wait move when the planner would wait as well;
   once stalled, the planner drives until the partner does something or a task is solved.
+- **Refused offers** (``refusals=True``, default). A member who takes offers now and then
+  explains each refusal, so the posterior cannot move and its best response keeps
+  offering to a partner who never takes. Each refusal is scored under the belief; once a
+  run of them is less likely than :data:`REFUSAL_LIKELIHOOD`, the robot plans against the
+  same members as partners who never take (``accept=0``, solved exactly and kept by
+  content like the members) until the partner takes or the verdict lapses
+  (:meth:`refuses_offers`).
 - **The progress guard** every robot obeys (:mod:`hg_marl.agents.progress`): when the
   state has not changed for ``K`` of its turns (a refused offer repeated while the belief
   keeps a member who accepts offers often enough to explain each refusal), it takes the
@@ -64,6 +71,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from hg_marl.agents.humans.preference import never_takes
 from hg_marl.agents.member_models import MemberModels
 from hg_marl.agents.oracle import OracleResult, OracleRobot
 from hg_marl.agents.partner import PartnerPosterior
@@ -72,8 +80,8 @@ from hg_marl.agents.planner.space import Relabel
 from hg_marl.agents.progress import ProgressGuard
 from hg_marl.agents.robots.base import Robot
 from hg_marl.agents.robots.planner import PlannerRobot
-from hg_marl.core import Agent, State, World
-from hg_marl.core.errors import RobotError
+from hg_marl.core import Agent, Kind, State, World
+from hg_marl.core.errors import RobotError, check_bool
 from hg_marl.policy import Decision, Turn
 
 HEDGES = ("qmdp", "map")
@@ -87,6 +95,14 @@ MIN_GAIN = 0.05
 """Nats a probe must tell beyond the best action's own reply."""
 STALL_LIKELIHOOD = 0.05
 """A run of shared waits less likely than this under the belief means the partner is stalled."""
+REFUSAL_LIKELIHOOD = 0.002
+"""A run of refused offers less likely than this under the belief means the partner refuses offers.
+
+A sequential likelihood-ratio test against "never takes": over a run's hundreds of offers a
+partner who takes as its member does would reach 0.05 by chance now and then (a 0.9 taker
+refusing twice); 1/500 needs three refusals in a row from it, thirteen from a 0.4 taker."""
+REFUSALS_WITHIN = 30
+"""Answers after the last offer for which "refuses offers" holds; then the robot may offer again."""
 
 
 class BeliefRobot(Robot):
@@ -106,6 +122,8 @@ class BeliefRobot(Robot):
             competes with the members').
         cache: a folder that keeps the members' solved models by content (empty:
             ``$HG_MARL_CACHE/oracle`` when set, else none), so a later robot reads them.
+        refusals: plan against the members as partners who never take once the partner
+            has refused more offers in a row than the belief explains (:meth:`refuses_offers`).
     """
 
     name = "belief"
@@ -121,6 +139,7 @@ class BeliefRobot(Robot):
         probe: float = 0.0,
         open_world: str = "uniform",
         cache: str = "",
+        refusals: bool = True,
     ) -> None:
         from hg_marl.agents.humans.population import load_population
 
@@ -158,6 +177,8 @@ class BeliefRobot(Robot):
         except ValueError as exc:
             raise RobotError(f"belief: {exc}") from None
         self.members = MemberModels(self.member_specs, cache)
+        self.refusals = check_bool(refusals, "belief.refusals", RobotError)
+        self._never_takes = MemberModels(tuple(never_takes(spec) for spec in self.member_specs), cache)
         self._fallback = OracleRobot(result=None)
         self._planner = PlannerRobot()
         self._prev: tuple[State, int] | None = None
@@ -168,6 +189,9 @@ class BeliefRobot(Robot):
         if self.agent is not Agent.ROBOT:
             raise RobotError("belief plays the robot seat only")
         self.members.reset(world)
+        self._never_takes.reset(world)
+        self._refusal_run = 1.0
+        self._since_offer = 0
         self._relabel = Relabel(world)
         self._wait = world.n_actions(Agent.ROBOT) - 1
         self._planner_mode = False
@@ -189,11 +213,59 @@ class BeliefRobot(Robot):
         state, robot_action = self._prev
         step = turn.world.step(state, Agent.ROBOT, robot_action)
         if turn.world.step(step.state, Agent.HUMAN, human_action).state == turn.state:
-            self.posterior.observe(turn.world, step.state, robot_action if step.ok else -1, human_action)
+            seen = robot_action if step.ok else -1  # what the partner saw the robot do
+            self._count_refusal(turn.world, step.state, seen, human_action)
+            self.posterior.observe(turn.world, step.state, seen, human_action)
+
+    def _count_refusal(self, world: World, mid: State, robot_action: int, human_action: int) -> None:
+        """Score the partner's answer to an offer under the belief, before the belief moves.
+
+        ``_refusal_run`` is the probability of the current run of refused offers under the
+        posterior mixture (each member's chance of not taking at the state, with the
+        posterior's ``epsilon`` slack); a take ends the run.
+        """
+        self._since_offer += 1
+        if mid.offer_by != int(Agent.ROBOT):
+            return
+        acts = world.actions(Agent.HUMAN)
+        feasible = world.feasible_indices(mid, Agent.HUMAN)
+        # One object is offered at a time, so at most one take answers it.
+        take = next((i for i in feasible if acts[i].kind is Kind.TAKE), -1)
+        if take < 0:
+            return  # the partner's hand is full: it could not take
+        self._since_offer = 0
+        if human_action == take:
+            self._refusal_run = 1.0
+            return
+        post = self.posterior.posterior()
+        eps, n = self.posterior.epsilon, len(feasible)
+        refuse = 0.0
+        for spec, human in zip(self.posterior.types, self.posterior.humans, strict=True):
+            # A human who does not look at the robot's action ignores it.
+            p_take = dict(human.distribution(world, mid, robot_action)).get(take, 0.0)
+            refuse += post[spec] * (1.0 - ((1.0 - eps) * p_take + eps / n))
+        self._refusal_run *= refuse
+
+    def refuses_offers(self) -> bool:
+        """Whether the members are planned against as partners who never take (``refusals``).
+
+        True while the run of refused offers is less likely than :data:`REFUSAL_LIKELIHOOD`
+        under the belief and the last offer is at most :data:`REFUSALS_WITHIN` answers old.
+        Why: a member who accepts offers now and then explains each refusal, so the
+        posterior cannot move and its best response keeps offering; a partner who refuses
+        more offers in a row than any believed member would is planned against as the same
+        members who never take (:func:`~hg_marl.agents.humans.preference.never_takes`),
+        each solved exactly and kept by content like the members. Once the robot stops
+        offering the partner has no chance to take, so the verdict lapses after
+        :data:`REFUSALS_WITHIN` answers and the robot offers again: a partner who has
+        changed is followed; one who has not refuses once more, and the verdict holds.
+        """
+        return self.refusals and self._refusal_run < REFUSAL_LIKELIHOOD and self._since_offer <= REFUSALS_WITHIN
 
     def q_values(self, world: World, state: State, member: int) -> dict[int, float]:
         """Member ``member``'s expected seconds to the next success after each feasible robot action."""
-        result, model = self.members.result(member), self.members.model(member)
+        members = self._never_takes if self.refuses_offers() else self.members
+        result, model = members.result(member), members.model(member)
         table = world.table
         out: dict[int, float] = {}
         for a in world.feasible_indices(state, Agent.ROBOT):
@@ -296,7 +368,7 @@ class BeliefRobot(Robot):
             why = "off every member's model: " if off_model else "partner stalled, the planner drives: "
             self.last_decision = replace(record, reason=why + record.reason, partner=best)
         else:
-            reason = ""
+            reason = "the partner refuses offers: its members planned as never taking" if self.refuses_offers() else ""
             if self.probe > 0 and max(weights) < PROBE_BELOW:
                 probe, gain = self._probe(world, state, weights, mixed, total)
                 if probe != action:
@@ -335,8 +407,7 @@ class BeliefRobot(Robot):
         mix = np.zeros(len(replies))
         inner = 0.0
         for w, human in kept:
-            seen = (action if ok else -1) if human.uses_robot_action else -1
-            dist = dict(human.distribution(world, mid, seen))
+            dist = dict(human.distribution(world, mid, action if ok else -1))  # ignored by who does not look
             p = np.array([(1.0 - eps) * dist.get(h, 0.0) + eps / n for h in replies])
             inner += w / total * float(-(p * np.log(p)).sum())
             mix += w / total * p

@@ -19,6 +19,16 @@ from hg_marl.core import Agent, World
 from hg_marl.policy import Turn
 
 
+def _members(tmp_path: Path, **specs: str) -> str:
+    """A paper2015 population file of ``train`` members ``name=spec``."""
+    path = tmp_path / "population.toml"
+    text = 'name = "t"\nscenario = "paper2015"\n'
+    for name, spec in specs.items():
+        text += f'\n[[members]]\nname = "{name}"\nsplit = "train"\nspec = "{spec}"\n'
+    path.write_text(text)
+    return str(path)
+
+
 def _robot(tmp_path: Path, world: World) -> BeliefRobot:
     path = tmp_path / "population.toml"
     members = '[[members]]\nname = "coop"\nsplit = "train"\nspec = "cooperative"\n'
@@ -75,3 +85,74 @@ def test_a_turn_without_a_human_action_is_no_evidence(tmp_path: Path) -> None:
     robot.posterior.observe = lambda *args: calls.append(1)  # type: ignore[method-assign]
     robot._observe(Turn(world, state, Agent.ROBOT, {}, last_actions=(robot._wait, -1)))
     assert calls == [] and list(robot.posterior.posterior()) == before
+
+
+def test_a_member_who_never_waits_there_makes_one_shared_wait_unexplained(tmp_path: Path) -> None:
+    """The member's answer at the state has no wait (p_wait = 0), so one shared wait has
+    probability eps / n < 0.05 under the belief: unexplained at once."""
+    world = World("paper2015")
+    robot = BeliefRobot(population=_members(tmp_path, busy="preference:p_idle=0.0"), splits="train", unknown=0.0)
+    robot._wait, robot._wait_run = world.n_actions(Agent.ROBOT) - 1, 1.0
+    state = world.initial_state(np.random.default_rng(0))
+    mid = world.step(state, Agent.ROBOT, robot._wait).state
+    human_wait = world.n_actions(Agent.HUMAN) - 1
+    assert dict(robot.posterior.humans[0].distribution(world, mid, -1)).get(human_wait, 0.0) == 0.0
+    n = len(world.feasible_indices(mid, Agent.HUMAN))
+    robot._prev = (state, robot._wait)
+    assert robot._unexplained_waits(Turn(world, state, Agent.ROBOT, {}), [1.0])
+    assert robot._wait_run == pytest.approx(0.05 / n)
+
+
+def test_a_failed_robot_action_is_counted_as_failed_by_the_learned_model(tmp_path: Path) -> None:
+    """The partner saw the robot fail: the learned model counts the answer under the
+    ``failed`` context (robot action -1), not under some robot action's kind."""
+    from hg_marl.agents.partner_model import FAILED
+
+    world = World("paper2015")
+    robot = BeliefRobot(population=_members(tmp_path, c="cooperative"), splits="train", open_world="learned")
+    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
+    state = world.initial_state(np.random.default_rng(0))
+    failing = next(a for a in range(world.n_actions(Agent.ROBOT)) if not world.step(state, Agent.ROBOT, a).ok)
+    human_wait = world.n_actions(Agent.HUMAN) - 1
+    after = world.step(world.step(state, Agent.ROBOT, failing).state, Agent.HUMAN, human_wait).state
+    robot._prev = (state, failing)
+    robot._observe(Turn(world, after, Agent.ROBOT, {}, last_actions=(failing, human_wait)))
+    learned = robot.posterior.learned
+    assert learned is not None
+    assert [ctx[3] for ctx in learned.counts] == [FAILED]
+
+
+def test_the_information_of_a_reply_reads_what_the_partner_saw_the_robot_do(tmp_path: Path) -> None:
+    """A member who mirrors the robot (``fo_mirror``) answers a failed robot action (-1) with a
+    wait: the information is the docstring's formula on the members' answers to -1,
+    which differ from their answers to any robot action index."""
+    world = World("paper2015")
+    robot = BeliefRobot(population=_members(tmp_path, m="fo_mirror", p="preference"), splits="train", unknown=0.0)
+    for human in robot.posterior.humans:
+        human.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    state = world.initial_state(np.random.default_rng(0))
+    failing = next(a for a in range(world.n_actions(Agent.ROBOT)) if not world.step(state, Agent.ROBOT, a).ok)
+    mid = world.table.successor(state, Agent.ROBOT, failing)[0]
+    replies = world.feasible_indices(mid, Agent.HUMAN)
+    mirror = robot.posterior.humans[0]
+    assert mirror.distribution(world, mid, -1) != mirror.distribution(world, mid, 1)
+    n = len(replies)
+    ps = [
+        np.array([0.95 * dict(h.distribution(world, mid, -1)).get(r, 0.0) + 0.05 / n for r in replies])
+        for h in robot.posterior.humans
+    ]
+    mix = 0.5 * ps[0] + 0.5 * ps[1]
+    expected = float(-(mix * np.log(mix)).sum()) - sum(0.5 * float(-(p * np.log(p)).sum()) for p in ps)
+    assert robot.information(world, state, failing, [0.5, 0.5]) == pytest.approx(expected, rel=1e-12)
+
+
+def test_a_probe_is_the_most_telling_action_within_the_budget(tmp_path: Path) -> None:
+    """Actions 1 and 2 cost 1 and 2 s more than the best (0) and tell 0.5 and 0.2 nats
+    (0 for the best): within a budget of 5 s the probe is action 1, the most telling one."""
+    world = World("paper2015")
+    robot = _robot(tmp_path, world)
+    robot.probe = 5.0
+    info = {0: 0.0, 1: 0.5, 2: 0.2}
+    robot.information = lambda w, s, a, weights: info[a]  # type: ignore[method-assign]
+    state = world.initial_state(np.random.default_rng(0))
+    assert robot._probe(world, state, [1.0], {0: 10.0, 1: 11.0, 2: 12.0}, 1.0) == (1, 0.5)
