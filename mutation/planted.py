@@ -539,7 +539,112 @@ FRESH4 = (
 )
 
 
-ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4
+# Fifth round: bugs written from the sources (not their tests), two in the belief robot's
+# refused-offer verdict and its never-taking members, the others in modules no earlier round
+# planted in, each run against its module's gate tests from modules.toml.
+FRESH5 = (
+    Bug(
+        "fresh5 belief: a take does not end the run of refused offers",
+        "agents/robots/belief.py",
+        "        if human_action == take:\n            self._refusal_run = 1.0\n            return\n",
+        "        if human_action == take:\n            return\n",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh5 preference: never_takes keeps a member's own accept",
+        "agents/humans/preference.py",
+        '{**parsed.raw, "accept": "0.0"}',
+        '{"accept": "0.0", **parsed.raw}',
+        gate("belief"),
+    ),
+    Bug(
+        "fresh5 habit: the normalised step leaves out the bias's + 1",
+        "agents/habit.py",
+        "step /= float(phi @ phi) + 1.0",
+        "step /= float(phi @ phi)",
+        gate("habit"),
+    ),
+    Bug(
+        "fresh5 meta cost: a planner call charged its nodes only, not the base",
+        "agents/meta/cost.py",
+        "self.planner_base + self.planner_per_node * nodes",
+        "self.planner_per_node * nodes",
+        gate("meta_cost"),
+    ),
+    Bug(
+        "fresh5 learning state: the habit acts only after more than min_visits updates",
+        "agents/meta/learning_state.py",
+        "habit.visits >= self.min_visits",
+        "habit.visits > self.min_visits",
+        gate("learning_state"),
+    ),
+    Bug(
+        "fresh5 entropy and cost: the cost weight from the habit's normalised entropy, not its bits",
+        "agents/meta/entropy_cost.py",
+        "weight = math.exp(-self.kappa * h_mf_bits)",
+        "weight = math.exp(-self.kappa * h_habit)",
+        gate("entropy_cost"),
+    ),
+    Bug(
+        "fresh5 aggregate: generalisation gap test minus train",
+        "training/aggregate.py",
+        "return np.stack([a, b, a - b], axis=-1)",
+        "return np.stack([a, b, b - a], axis=-1)",
+        gate("aggregate"),
+    ),
+    Bug(
+        "fresh5 report: one reference row per human, not per (human, scenario)",
+        "training/report.py",
+        'frame.drop_duplicates(["human", "scenario"])',
+        'frame.drop_duplicates(["human"])',
+        gate("report"),
+    ),
+    Bug(
+        "fresh5 stalls: a task marked at the decision before the one that solved it",
+        "training/stalls.py",
+        "zip(times[1:], solved[:-1], solved[1:], strict=True)",
+        "zip(times[:-1], solved[:-1], solved[1:], strict=True)",
+        gate("stalls"),
+    ),
+    Bug(
+        "fresh5 headroom report: a population's headroom over every member, not the held-out",
+        "training/headroom.py",
+        "[m.name for m in pop.held_out]",
+        "[m.name for m in pop.members()]",
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh5 store: run key without charge_decision_time",
+        "training/store.py",
+        '            "charge_decision_time": self.charge_decision_time,\n',
+        "",
+        gate("store"),
+    ),
+    Bug(
+        "fresh5 oracle: the robot keeps its policy when reset on another scenario",
+        "agents/oracle.py",
+        "if self.result is None or self.result.scenario != world.scenario.name:",
+        "if self.result is None:",
+        gate("oracle"),
+    ),
+    Bug(
+        "fresh5 world: the robot's and the human's offering facts swapped",
+        "hg_marl/core/world.py",
+        "out[n_fixed + state.offer_by * self.n_objects + state.offer_obj] = 1",
+        "out[n_fixed + (1 - state.offer_by) * self.n_objects + state.offer_obj] = 1",
+        gate("world"),
+    ),
+    Bug(
+        "fresh5 planner costs: the search's idle term counts the robot's idle seconds",
+        "agents/planner/costs.py",
+        "w_idle * (dt - e_h)",
+        "w_idle * (dt - e_r)",
+        gate("planner_costs"),
+    ),
+)
+
+
+ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:

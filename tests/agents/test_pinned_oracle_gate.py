@@ -68,3 +68,15 @@ def test_off_model_decision_records_the_planners_answer_and_time(
     assert decision.expected_human_action == (2 if success else -1)
     assert decision.planning_time == pytest.approx(0.25)
     assert robot.off_model == 1
+
+
+def test_a_robot_reset_on_another_scenario_solves_that_scenario() -> None:
+    """The policy belongs to the table it was solved on: after paper2015, a reset on
+    forced_coordination solves forced_coordination (its rate is that table's oracle rate)."""
+    robot = OracleRobot(human="cooperative")
+    robot.reset(World("paper2015"), Agent.ROBOT, np.random.default_rng(0))
+    assert robot.result is not None and robot.result.scenario == "paper2015"
+    robot.reset(World("forced_coordination"), Agent.ROBOT, np.random.default_rng(0))
+    assert robot.result.scenario == "forced_coordination"
+    assert robot.result.rate_per_hour == pytest.approx(oracle_rate("forced_coordination", "cooperative").rate_per_hour)
+    assert robot.result.rate_per_hour != pytest.approx(oracle_rate("paper2015", "cooperative").rate_per_hour)

@@ -196,3 +196,25 @@ def test_write_outputs_without_any_score_draws_no_profile(tmp_path: Path) -> Non
     frame["score"] = float("nan")
     write_outputs(_study(), frame, tmp_path, {"ran": 2, "reused": 0})
     assert sorted(p.name for p in tmp_path.iterdir()) == ["aggregate.json", "crossplay.png", "report.md", "scores.csv"]
+
+
+def test_the_reference_table_has_a_row_per_human_and_scenario() -> None:
+    """One human on two scenarios has two references (its exact rate differs per table): two rows."""
+    frame = pd.DataFrame(
+        {
+            "robot": ["A", "A", "A", "A"],
+            "human": ["k", "k", "h", "h"],
+            "scenario": ["paper2015", "scenarios/big.toml", "paper2015", "scenarios/big.toml"],
+            "score": [0.5, 0.6, 0.7, 0.8],
+            "oracle_rate": [100.0, 40.0, 90.0, np.nan],
+            "reference": ["oracle", "oracle", "oracle", "best robot"],
+        }
+    )
+    lines = crossplay_table(frame).splitlines()
+    refs = lines[lines.index("| human | scenario | reference rate (tasks/h) | reference |") + 2 :]
+    assert refs == [
+        "| k | paper2015 | 100.00 | oracle |",
+        "| k | big.toml | 40.00 | oracle |",
+        "| h | paper2015 | 90.00 | oracle |",
+        "| h | big.toml | - | best robot |",
+    ]
