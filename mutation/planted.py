@@ -644,7 +644,111 @@ FRESH5 = (
 )
 
 
-ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5
+# Sixth round: bugs written from the sources (not their tests), in fourteen gated modules no
+# earlier round planted in, each run against its module's gate tests from modules.toml.
+FRESH6 = (
+    Bug(
+        "fresh6 meta controller: the planner leads while the habit has exactly min_visits",
+        "agents/meta/controller.py",
+        "if plan is not None and habit.visits < crit.min_visits:",
+        "if plan is not None and habit.visits <= crit.min_visits:",
+        gate("meta_controller"),
+    ),
+    Bug(
+        "fresh6 planner steps: the agent's own offer lapses, the partner's stays",
+        "agents/planner/steps.py",
+        "if by >= 0 and by != agent:",
+        "if by >= 0 and by == agent:",
+        gate("planner_steps"),
+    ),
+    Bug(
+        "fresh6 exact sums: fields sized for one object's value, not the sum over objects",
+        "agents/planner/exactsum.py",
+        "self.width = (top * max(n_objects, 1)).bit_length() + 1",
+        "self.width = top.bit_length() + 1",
+        gate("planner_exactsum"),
+    ),
+    Bug(
+        "fresh6 planner tables: a give is a candidate wherever the robot stands",
+        "agents/planner/tables.py",
+        "if table.give_ok[at]:\n                                entries.append((kind, i, None, -1))",
+        "entries.append((kind, i, None, -1))",
+        gate("planner_tables"),
+    ),
+    Bug(
+        "fresh6 planner bound: the empty-handed move given back only at a handover next to a spot",
+        "agents/planner/space.py",
+        "if handover or not spots.isdisjoint(where):",
+        "if handover and not spots.isdisjoint(where):",
+        gate("planner_bound"),
+    ),
+    Bug(
+        "fresh6 packing: one state's key packs the offered object without its + 1",
+        "agents/models/packing.py",
+        "digits = (*state.where, state.robot_at, state.offer_by + 1, state.offer_obj + 1)",
+        "digits = (*state.where, state.robot_at, state.offer_by + 1, state.offer_obj)",
+        gate("model_packing"),
+    ),
+    Bug(
+        "fresh6 server limits: a silent new connection closed after the header timeout, not the idle one",
+        "training/play/server_limits.py",
+        "self.timeout_keep_alive_task = self.loop.call_later(limits.idle_timeout, self.timeout_keep_alive_handler)",
+        "self.timeout_keep_alive_task = self.loop.call_later(limits.header_timeout, self.timeout_keep_alive_handler)",
+        gate("server_limits"),
+    ),
+    Bug(
+        "fresh6 memory numpy: the GRU's update gate weights the new and the old state the wrong way round",
+        "agents/memory_numpy.py",
+        "h = (1.0 - z) * n + z * h",
+        "h = z * n + (1.0 - z) * h",
+        gate("memory_numpy"),
+    ),
+    Bug(
+        "fresh6 memory policy: the hidden state kept at an episode's start and cleared elsewhere",
+        "agents/memory_policy.py",
+        "h = h * (~start).unsqueeze(1).to(h.dtype)",
+        "h = h * start.unsqueeze(1).to(h.dtype)",
+        gate("memory_policy"),
+    ),
+    Bug(
+        "fresh6 model limits: the SB3 budget counts no biases",
+        "agents/model_limits.py",
+        "weights = sum((a + 1) * b for net in nets",
+        "weights = sum(a * b for net in nets",
+        gate("model_limits"),
+    ),
+    Bug(
+        "fresh6 vector envs: the human seat's max_cycles and time_budget swapped",
+        "agents/vector_envs.py",
+        "        continuing,\n        max_cycles,\n        time_budget,\n",
+        "        continuing,\n        time_budget,\n        max_cycles,\n",
+        gate("vector_envs"),
+    ),
+    Bug(
+        "fresh6 scenario model: layouts counted with unordered spots",
+        "hg_marl/core/scenario_model.py",
+        "math.perm(len(group.spots), group.count)",
+        "math.comb(len(group.spots), group.count)",
+        gate("scenario_model"),
+    ),
+    Bug(
+        "fresh6 batched: the seat's idle column reports the partner's idle time",
+        "hg_marl/envs/batched.py",
+        '"idle": self.idle[rows, me],',
+        '"idle": self.idle[rows, 1 - me],',
+        gate("batched"),
+    ),
+    Bug(
+        "fresh6 recurrent ppo sb3: greedy play keeps the LSTM state across a truncated episode",
+        "training/baselines/recurrent_ppo_sb3.py",
+        "starts = np.asarray(term) | np.asarray(trunc)",
+        "starts = np.asarray(term)",
+        gate("recurrent_ppo_sb3"),
+    ),
+)
+
+
+ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:
