@@ -29,11 +29,9 @@ def _members(tmp_path: Path, **specs: str) -> str:
     return str(path)
 
 
-def _robot(tmp_path: Path, world: World) -> BeliefRobot:
-    path = tmp_path / "population.toml"
-    members = '[[members]]\nname = "coop"\nsplit = "train"\nspec = "cooperative"\n'
-    path.write_text(f'name = "t"\nscenario = "paper2015"\n\n{members}')
-    robot = BeliefRobot(population=str(path), splits="train", unknown=0.0)
+def _robot(tmp_path: Path, world: World, spec: str = "cooperative") -> BeliefRobot:
+    """A closed-world belief robot with one member, its partner reset, its wait run fresh."""
+    robot = BeliefRobot(population=_members(tmp_path, coop=spec), splits="train", unknown=0.0)
     for human in robot.posterior.humans:
         human.reset(world, Agent.HUMAN, np.random.default_rng(0))
     robot._wait = world.n_actions(Agent.ROBOT) - 1
@@ -91,8 +89,7 @@ def test_a_member_who_never_waits_there_makes_one_shared_wait_unexplained(tmp_pa
     """The member's answer at the state has no wait (p_wait = 0), so one shared wait has
     probability eps / n < 0.05 under the belief: unexplained at once."""
     world = World("paper2015")
-    robot = BeliefRobot(population=_members(tmp_path, busy="preference:p_idle=0.0"), splits="train", unknown=0.0)
-    robot._wait, robot._wait_run = world.n_actions(Agent.ROBOT) - 1, 1.0
+    robot = _robot(tmp_path, world, "preference:p_idle=0.0")
     state = world.initial_state(np.random.default_rng(0))
     mid = world.step(state, Agent.ROBOT, robot._wait).state
     human_wait = world.n_actions(Agent.HUMAN) - 1
