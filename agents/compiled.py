@@ -160,8 +160,8 @@ class CompiledHuman:
 
         Each entry's outcome is computed by ``BatchedRules`` on the whole table at once.
         """
-        keys, starts, actions = table.keys, table.starts, table.entries["actions"]
-        probs = table.entries["probs"]
+        keys, starts, entries = table.compact()
+        actions, probs = entries["actions"], entries["probs"]
         sizes = np.diff(starts)
         cum = np.empty(len(actions))
         for size in np.unique(sizes).tolist():  # per segment: cumsum / sum, last one exactly 1

@@ -46,6 +46,7 @@ from tqdm import tqdm
 from hg_marl.agents.models import AnswerTable, Model, StatePacker, build_model
 from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.chains import Chain, certain_states, policy_rate, transitions
+from hg_marl.agents.models.solve import TIE, without_self_loops
 from hg_marl.agents.oracle import (
     DEFAULT_MEMORY,
     DEFAULT_SECONDS,
@@ -56,9 +57,6 @@ from hg_marl.agents.oracle import (
 from hg_marl.core import Agent, Scenario, State, World
 from hg_marl.core.cycle import cycle_length
 from hg_marl.core.scenario import layout_count
-
-TIE = 1e-6
-"""Actions whose expected seconds are within this of the best are tied (lowest index wins)."""
 
 COOPERATIVE = "cooperative"
 """The assumed partner of the headroom number: the model the fixed-model planner plans with."""
@@ -228,9 +226,10 @@ class JointModel:
     def optimal_policy(self, i: int, tolerance: float = 1e-9, max_iterations: int = 200_000) -> np.ndarray:
         """The pair index chosen at every state by the policy optimal against human ``i``.
 
-        Value iteration from 0; each sweep sums a pair's transitions in their order (one
-        CSR product), as ``np.bincount`` over the transitions did, so the values are the
-        same floats as the Python joint model's.
+        Value iteration from 0 with self-loops solved in closed form (the oracle's sweeps,
+        :mod:`hg_marl.agents.models.solve`); the policy is greedy on the plain operator's
+        ``q`` from the converged values. Each product sums a pair's transitions in their
+        order (one CSR product), so the Python joint model gets the same floats.
         """
         chain = self.chain(i)
         n = self.n
@@ -244,9 +243,20 @@ class JointModel:
             q += cost
             return np.where(ok, np.where(self.terminal, 0.0, q), np.inf)
 
+        fast, fast_cost, looping = without_self_loops(
+            self.pair_state, chain.t_start, chain.t_next, chain.t_prob, cost, n
+        )  # the sweeps' operator (agents/models/solve.py): the same fixed point, fewer sweeps
+        fast_ok = ok & ~looping
+
+        def sweep(v: np.ndarray) -> np.ndarray:
+            q = fast @ np.where(alive, v, 0.0)
+            q += fast_cost
+            q = np.where(fast_ok, np.where(self.terminal, 0.0, q), np.inf)
+            return np.where(alive, np.minimum.reduceat(q, self.starts), 0.0)
+
         if alive.any():
             for it in range(1, max_iterations + 1):
-                new = np.where(alive, np.minimum.reduceat(q_of(values), self.starts), 0.0)
+                new = sweep(values)
                 delta = float(np.max(np.abs(new - values)))
                 values = new
                 if it % 64 == 0:
@@ -372,8 +382,11 @@ def headroom(
         policies = {}
         for label in tqdm(list(rows), desc="headroom: policies", disable=not progress, file=sys.stderr):
             policies[label] = model.optimal_policy(labels.index(label))
-        rates = np.array([[model.rate(policies[a], j) for j in col] for a in rows])
-        optimum = np.array([model.rate(policies[label], labels.index(label)) for label, _ in true])
+        rates = np.zeros((len(rows), len(col)))
+        for t, j in enumerate(col):  # partner by partner: its table's positions are read once (Model.gather)
+            for a, label in enumerate(rows):
+                rates[a, t] = model.rate(policies[label], j)
+        optimum = np.array([rates[list(rows).index(label), t] for t, (label, _) in enumerate(true)])
     return HeadroomResult(
         scenario=world.scenario.name,
         assumed=tuple(rows),

@@ -20,6 +20,7 @@ import numpy as np
 from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.equivariant import canonical_answers
+from hg_marl.agents.models.keyed import SegmentTable
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.models.partners import Answers, batch_answers
 from hg_marl.core import Agent, State, World
@@ -31,8 +32,8 @@ CHECK_EVERY = 4
 """Live answers computed between two budget readings (one answer may cost a planner search; the
 time budget's timer, ``Budget.deadline``, interrupts a long one anyway)."""
 
-FIELDS = ("actions", "probs", "next", "canonical", "d_human")
-"""Per-entry arrays (entries of key ``i`` are ``starts[i]:starts[i + 1]``)."""
+FIELDS = {"actions": np.int64, "probs": np.float64, "next": np.int64, "canonical": np.int64, "d_human": np.float64}
+"""Per-entry arrays (a key's entries are contiguous, at :meth:`AnswerTable.lookup`'s positions)."""
 
 
 class AnswerTable:
@@ -60,15 +61,7 @@ class AnswerTable:
         self.budget = budget
         self.rules = BatchedRules(world)
         self.uses_robot_action = bool(getattr(human, "uses_robot_action", False))
-        self.keys = np.zeros(0, dtype=np.int64)
-        self.starts = np.zeros(1, dtype=np.int64)
-        self.entries: dict[str, np.ndarray] = {
-            "actions": np.zeros(0, dtype=np.int64),
-            "probs": np.zeros(0, dtype=np.float64),
-            "next": np.zeros(0, dtype=np.int64),
-            "canonical": np.zeros(0, dtype=np.int64),
-            "d_human": np.zeros(0, dtype=np.float64),
-        }
+        self.table = SegmentTable(FIELDS)
         self.batch = batch or (batch_answers(world, human) if arrays else None)
         """The human's answers on arrays (``agents/models/partners.py``), None to ask it live."""
         self.canonical = canonical_answers(world, human, packer) if arrays and self.batch is None else None
@@ -80,18 +73,27 @@ class AnswerTable:
         table: a model without symmetry reduction never reads it); None: computed."""
         self.phase = "answers"
 
+    @property
+    def keys(self) -> np.ndarray:
+        """The keys answered, sorted."""
+        return self.table.keys
+
+    @property
+    def entries(self) -> dict[str, np.ndarray]:
+        """Per-entry arrays by :data:`FIELDS` name (positions from :meth:`lookup`)."""
+        return self.table.entries
+
     def lookup(self, keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(first entry, entry count) per key; every key must be known (see :meth:`ensure`)."""
-        idx = np.searchsorted(self.keys, keys)
-        return self.starts[idx], self.starts[idx + 1] - self.starts[idx]
+        return self.table.lookup(keys)
+
+    def compact(self) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
+        """(keys, starts, entries), key ``i``'s entries at ``starts[i]:starts[i + 1]``: as compiled partners store."""
+        return self.table.compact()
 
     def ensure(self, keys: np.ndarray) -> None:
         """Answer the distinct sorted ``keys`` the table lacks with the live human, and store them."""
-        if len(self.keys):
-            idx = np.minimum(np.searchsorted(self.keys, keys), len(self.keys) - 1)
-            missing = keys[self.keys[idx] != keys]
-        else:
-            missing = keys
+        missing = self.table.missing(keys)
         if not len(missing):
             return
         states, seen = self.packer.unpack(missing)
@@ -143,19 +145,7 @@ class AnswerTable:
             "canonical": nxt if self.relabelled is False else self.packer.pack(b),
             "d_human": d_human,
         }
-        self._merge(missing, size, new)
-
-    def _merge(self, keys: np.ndarray, sizes: np.ndarray, new: dict[str, np.ndarray]) -> None:
-        n_old = len(self.entries["actions"])
-        all_keys = np.concatenate([self.keys, keys])
-        all_sizes = np.concatenate([np.diff(self.starts), sizes])
-        first = np.concatenate([self.starts[:-1], n_old + np.concatenate([[0], np.cumsum(sizes)[:-1]])])
-        order = np.argsort(all_keys, kind="stable")
-        sizes_sorted = all_sizes[order]
-        starts = np.concatenate([[0], np.cumsum(sizes_sorted)]).astype(np.int64)
-        gather = np.repeat(first[order] - starts[:-1], sizes_sorted) + np.arange(starts[-1])
-        self.keys, self.starts = all_keys[order], starts
-        self.entries = {k: np.concatenate([self.entries[k], new[k]])[gather] for k in FIELDS}
+        self.table.add(missing, size, new)
 
 
 def stationary_human(human: Any, world: World) -> Any:

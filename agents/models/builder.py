@@ -4,7 +4,7 @@ States are packed into int64 keys (:class:`~hg_marl.agents.models.packing.StateP
 A level of the breadth-first search is a batch of robot-turn states: the robot's
 options are read from :meth:`BatchedRules.masks` (every feasible action, in index order,
 then the first infeasible one standing for them all, as the oracle models them), stepped
-with :meth:`BatchedRules.step`; the distinct mid-cycle keys (``np.unique``) get the
+with :meth:`BatchedRules.step`; the distinct mid-cycle keys (hashed: ``keyed.py``) get the
 partner's answers from an :class:`~hg_marl.agents.models.answers.AnswerTable` (arrays,
 grown by the live human for keys it lacks), which are stepped again; the next states'
 keys are deduplicated against the sorted known keys with ``searchsorted``. Nothing here
@@ -30,6 +30,7 @@ from tqdm import tqdm
 
 from hg_marl.agents.models.answers import AnswerTable
 from hg_marl.agents.models.budget import Budget
+from hg_marl.agents.models.keyed import first_unique, positions, unique, unique_inverse
 from hg_marl.agents.models.lazy import TableTransitions, ranges, starts_of
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.core import Agent, State, World
@@ -192,16 +193,10 @@ class _Index:
 
     def id_of(self, keys: np.ndarray) -> np.ndarray:
         """Ids of known keys."""
-        return self.ids[np.searchsorted(self.sorted, keys)]
+        return self.ids[positions(self.sorted, keys)]
 
     def keys(self) -> np.ndarray:
         return np.concatenate(self.by_id) if self.by_id else np.zeros(0, dtype=np.int64)
-
-
-def _first_unique(keys: np.ndarray) -> np.ndarray:
-    """The distinct keys in order of first occurrence."""
-    _, first = np.unique(keys, return_index=True)
-    return keys[np.sort(first)]
 
 
 class _Answered:
@@ -226,7 +221,7 @@ def _regen(
     wait = world.table.wait[Agent.ROBOT]
     table.phase = "first answers"
     mid = table.packer.pack(lay, np.full(len(lay), wait if table.uses_robot_action else -1, dtype=np.int64))
-    u, inv = np.unique(mid, return_inverse=True)
+    u, inv = unique_inverse(mid)
     first = _Answered(table, u, canonical)
     count = first.size[inv]
     rows = np.repeat(np.arange(len(lay)), count)
@@ -273,7 +268,7 @@ def build_model(
             raise ValueError("an answer table filled without canonical keys cannot serve a reduced model")
     regen = [_regen(world, t, lay, lay_p, canonical) for t in tables]
     index = _Index()
-    index.add(_first_unique(np.concatenate([packer.pack(lay), *(r[0] for r in regen)])))
+    index.add(first_unique(np.concatenate([packer.pack(lay), *(r[0] for r in regen)])))
     budget.check("explore", 0, unit=f"states explored ({index.n:,} known)", states=index.n)
     for t in tables:
         t.phase = "explore: partner answers"
@@ -315,7 +310,7 @@ def build_model(
                     parts[name].append(keyed)
                 parts["d_robot"].append(d_robot)
             for t in tables:
-                u, inv = np.unique(mids[0 if t.uses_robot_action else 1], return_inverse=True)
+                u, inv = unique_inverse(mids[0 if t.uses_robot_action else 1])
                 ans = _Answered(t, u, canonical)
                 if not keep:
                     found.append(ans.next)
@@ -329,14 +324,14 @@ def build_model(
                 entry += np.arange(len(pair_of))
                 outcomes.append((tcount, pair_of, ans, entry))
             if not keep:  # the same states: every answer of a distinct key is some pair's transition
-                index.add(np.unique(np.concatenate(found)))
+                index.add(unique(np.concatenate(found)))
                 parts["size"].append(np.bincount(ps, minlength=hi - lo))
                 parts["action"].append(pa)
                 parts["terminal"].append(terminal)
                 bar.update(hi - lo)
                 lo = hi
                 continue
-            uniq, inv = np.unique(np.concatenate([o[2].next[o[3]] for o in outcomes]), return_inverse=True)
+            uniq, inv = unique_inverse(np.concatenate([o[2].next[o[3]] for o in outcomes]))
             index.add(uniq)  # sorted: new states get ids in key order
             ids = index.id_of(uniq)[inv]
             at = 0

@@ -26,6 +26,7 @@ from scipy import sparse
 from scipy.sparse.linalg import spsolve
 
 from hg_marl.agents.models.builder import Dynamics
+from hg_marl.agents.models.keyed import unique
 
 HOUR = 3600.0
 
@@ -64,7 +65,7 @@ def certain_states(n: int, pair_state: np.ndarray, terminal: np.ndarray, chain: 
         while len(frontier):
             pairs = _spread(frontier, reverse)
             states = pair_state[pairs[ok[pairs]]]
-            frontier = np.unique(states[~reach[states]])
+            frontier = unique(states[~reach[states]])
             reach[frontier] = True
         if (reach == alive).all():
             return alive, ok
@@ -80,11 +81,11 @@ def transitions(chain: Chain, n: int, weights: np.ndarray | None = None) -> spar
 def forward(graph: sparse.csr_matrix, seeds: np.ndarray) -> np.ndarray:
     """States reachable from the ``seeds`` indices along ``graph``'s edges (the seeds included)."""
     found = np.zeros(graph.shape[0], dtype=bool)
-    frontier = np.unique(seeds)
+    frontier = unique(seeds)
     found[frontier] = True
     while len(frontier):
         hit = _spread(frontier, graph)
-        frontier = np.unique(hit[~found[hit]])
+        frontier = unique(hit[~found[hit]])
         found[frontier] = True
     return found
 

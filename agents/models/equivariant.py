@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from hg_marl.agents.models.keyed import SegmentTable, known, unique_first_inverse
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.core import Agent, Kind, State, World
 from hg_marl.core.relabel import Relabel
@@ -90,10 +91,8 @@ class CanonicalAnswers:
         self.rep = np.array([*reps, -1], dtype=np.int64)
         """``rep[seen]``: the representative of the robot action seen (``seen = -1``: -1)."""
         self.slot, self.remap = object_slots(world, Agent.HUMAN)
-        self.keys = np.zeros(0, dtype=np.int64)
-        self.starts = np.zeros(1, dtype=np.int64)
-        self.actions = np.zeros(0, dtype=np.int64)
-        self.probs = np.zeros(0, dtype=np.float64)
+        self.table = SegmentTable({"actions": np.int64, "probs": np.float64})
+        """The partner's answers by canonical key (actions in canonical labelling)."""
         self.live_calls = 0
         """Distributions asked of the live partner (one per canonical key)."""
 
@@ -102,23 +101,20 @@ class CanonicalAnswers:
         canon, orig = canonical_copy(self.packer, states)
         rep = self.rep[seen] if self.uses_robot_action else np.full(len(seen), -1, dtype=np.int64)
         keys = self.packer.pack(canon, rep)
-        uniq, first, inv = np.unique(keys, return_index=True, return_inverse=True)
+        uniq, first, inv = unique_first_inverse(keys)
         self._ask(uniq, first, canon, rep, check)
-        at = np.searchsorted(self.keys, uniq)[inv]
-        start, size = self.starts[at], self.starts[at + 1] - self.starts[at]
+        start, size = self.table.lookup(uniq)
+        start, size = start[inv], size[inv]
         rows = np.repeat(np.arange(len(keys)), size)
         entry = np.repeat(start - np.concatenate([[0], np.cumsum(size)[:-1]]), size) + np.arange(len(rows))
-        back = actions_back(self.slot, self.remap, self.actions[entry], orig, rows)
+        entries = self.table.entries
+        back = actions_back(self.slot, self.remap, entries["actions"][entry], orig, rows)
         order = np.lexsort((back, rows))  # the live partner lists a distribution in index order
-        return size, back[order], self.probs[entry][order]
+        return size, back[order], entries["probs"][entry][order]
 
     def _ask(self, uniq: np.ndarray, first: np.ndarray, canon: BatchState, rep: np.ndarray, check: Check) -> None:
         """Ask the live partner for the canonical keys of ``uniq`` not known yet, and store them."""
-        if len(self.keys):
-            pos = np.minimum(np.searchsorted(self.keys, uniq), len(self.keys) - 1)
-            new = np.flatnonzero(self.keys[pos] != uniq)
-        else:
-            new = np.arange(len(uniq))
+        new = np.flatnonzero(~known(self.table.keys, uniq))
         if not len(new):
             return
         rows = first[new].tolist()
@@ -136,12 +132,5 @@ class CanonicalAnswers:
                     probs.append(p)
                     sizes[i] += 1
         self.live_calls += len(rows)
-        keys = np.concatenate([self.keys, uniq[new]])
-        size = np.concatenate([np.diff(self.starts), np.array(sizes, dtype=np.int64)])
-        first_entry = np.concatenate([self.starts[:-1], len(self.actions) + np.cumsum([0, *sizes[:-1]])])
-        actions = np.concatenate([self.actions, np.array(acts, dtype=np.int64)])
-        all_probs = np.concatenate([self.probs, np.array(probs, dtype=np.float64)])
-        order = np.argsort(keys, kind="stable")
-        self.starts = np.concatenate([[0], np.cumsum(size[order])]).astype(np.int64)
-        gather = np.repeat(first_entry[order] - self.starts[:-1], size[order]) + np.arange(self.starts[-1])
-        self.keys, self.actions, self.probs = keys[order], actions[gather], all_probs[gather]
+        answers = {"actions": np.array(acts, dtype=np.int64), "probs": np.array(probs, dtype=np.float64)}
+        self.table.add(uniq[new], np.array(sizes, dtype=np.int64), answers)

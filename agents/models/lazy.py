@@ -41,6 +41,29 @@ class TableTransitions:
         self.tables, self.index, self.canonical = tables, index, canonical
         self.mid_seen, self.mid_plain, self.d_robot, self.regen = mid_seen, mid_plain, d_robot, regen
         self._ids: dict[int, np.ndarray] = {}
+        self._order: dict[bool, np.ndarray] = {}
+        self._last: tuple[int, np.ndarray, np.ndarray] | None = None
+
+    def entries_of(self, partner: int, terminal: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(first entry, entry count) of every pair in ``partner``'s table (0 entries: the completing ``wait``).
+
+        Every pair's key is looked up at once, in sorted order (one sort per kind of key,
+        kept), and the last partner's positions are kept: the headroom asks one partner for
+        the transitions of many policies in a row.
+        """
+        if self._last is not None and self._last[0] == partner:
+            return self._last[1], self._last[2]
+        table = self.tables[partner]
+        keys = self.mid_seen if table.uses_robot_action else self.mid_plain
+        order = self._order.get(table.uses_robot_action)
+        if order is None:
+            live = np.flatnonzero(~terminal)
+            order = self._order[table.uses_robot_action] = live[np.argsort(keys[live], kind="stable")]
+        first = np.zeros(len(keys), dtype=np.int64)
+        size = np.zeros(len(keys), dtype=np.int64)
+        first[order], size[order] = table.lookup(keys[order])
+        self._last = (partner, first, size)
+        return first, size
 
     def gather(
         self, partner: int, pairs: np.ndarray, terminal: np.ndarray
@@ -50,13 +73,8 @@ class TableTransitions:
         ids = self._ids.get(partner)
         if ids is None:  # every entry's next state is known: each answer was some pair's transition
             ids = self._ids[partner] = self.index.id_of(table.entries["canonical" if self.canonical else "next"])
-        live = ~terminal[pairs]
-        keys = (self.mid_seen if table.uses_robot_action else self.mid_plain)[pairs[live]]
-        start, count = table.lookup(keys)
-        size = np.zeros(len(pairs), dtype=np.int64)
-        size[live] = count
-        lo = np.zeros(len(pairs), dtype=np.int64)
-        lo[live] = start
+        first, count = self.entries_of(partner, terminal)
+        lo, size = first[pairs], count[pairs]
         at = ranges(lo, size)
         pair_of = np.repeat(pairs, size)
         tau = np.maximum(self.d_robot[pair_of], table.entries["d_human"][at])

@@ -16,6 +16,17 @@ stopping rule as the Python oracle's (``max |delta| < tolerance``) gives the sam
 Each sweep is one CSR matrix-vector product ``P @ V`` over (pair, next state) and one
 ``np.minimum.reduceat`` over each state's pairs. States from which no policy completes
 with probability 1 are found first (almost-sure reachability fixpoint) and get ``V = inf``.
+
+Self-loops solved in closed form. A pair that returns to its own state with probability
+``p`` (an offer refused, both agents waiting) makes plain sweeps approach its value one
+factor ``p`` at a time: a partner who refuses 4 times in 5 needs about a hundred sweeps
+for 1e-9. The sweeps therefore use the equivalent operator ``min_a (c_a + sum_{s' != s}
+p_a(s') V(s')) / (1 - p_a(s))`` (:func:`without_self_loops`; Bertsekas' transformation
+of a stochastic shortest path): at the fixed point ``V(s) = q_a`` for the chosen pair
+under both operators, and ``q_a > V(s)`` under one exactly when under the other, so the
+values and the policy are the same; a pair that only returns is never optimal where
+completion is certain. The reported ``q`` is computed with the plain operator from the
+converged values: the expected seconds after each pair, which the belief robot mixes.
 """
 
 from __future__ import annotations
@@ -28,6 +39,11 @@ from scipy import sparse
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.builder import Model
 
+TIE = 1e-6
+"""Pairs whose expected seconds are within this of a state's best are tied; the first in option
+order wins. Why a tolerance: actions that are equally good reach their values by different
+sums of floats, and which of them came out a few ulps lower would otherwise pick the policy."""
+
 
 @dataclass(frozen=True)
 class Solution:
@@ -38,7 +54,7 @@ class Solution:
     q: np.ndarray
     """(pairs,) seconds after each (state, action) (inf: not certain)."""
     best_pair: np.ndarray
-    """(n,) the first pair reaching the state's minimum."""
+    """(n,) the first pair within :data:`TIE` of the state's minimum."""
     iterations: int
     converged: bool
     seconds_per_task: float
@@ -66,6 +82,28 @@ def certain_states(model: Model, transitions: sparse.csr_matrix) -> tuple[np.nda
         if (reach == alive).all():
             return alive, ok
         alive = reach
+
+
+def without_self_loops(
+    pair_state: np.ndarray, t_start: np.ndarray, t_next: np.ndarray, t_prob: np.ndarray, cost: np.ndarray, n: int
+) -> tuple[sparse.csr_matrix, np.ndarray, np.ndarray]:
+    """The sweeps' operator with self-loops solved (module docstring): (pairs, states) CSR, cost, looping pairs.
+
+    Row ``a`` holds ``a``'s transitions to other states divided by their total probability
+    ``1 - p_a(s)`` (summed from those transitions, not as one minus the loop's: no
+    cancellation), the cost is ``cost / (1 - p_a(s))``; ``looping`` marks the pairs with
+    transitions that all return to their state (their value is infinite).
+    """
+    n_pairs = len(t_start) - 1
+    t_pair = np.repeat(np.arange(n_pairs), np.diff(t_start))
+    leave = t_next != pair_state[t_pair]
+    out = np.bincount(t_pair[leave], weights=t_prob[leave], minlength=n_pairs)
+    looping = (out == 0) & (np.diff(t_start) > 0)
+    scale = 1.0 / np.where(out > 0, out, 1.0)
+    counts = np.bincount(t_pair[leave], minlength=n_pairs)
+    starts = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
+    matrix = sparse.csr_matrix((t_prob[leave] * scale[t_pair[leave]], t_next[leave], starts), shape=(n_pairs, n))
+    return matrix, cost * scale, looping
 
 
 def solve(
@@ -97,10 +135,23 @@ def solve(
         q[inf_at] = np.inf
         return q
 
+    fast, fast_cost, looping = without_self_loops(
+        model.pair_state(), model.t_start, model.t_next, model.t_prob, cost, n
+    )
+    fast_inf = np.flatnonzero(~ok | looping)
+
+    def sweep(v: np.ndarray) -> np.ndarray:
+        q = fast @ v
+        q += fast_cost
+        q[zero_at] = 0.0
+        q[fast_inf] = np.inf
+        new = np.minimum.reduceat(q, starts)
+        new[dead] = 0.0
+        return new
+
     if alive.any():
         for iterations in range(1, max_iterations + 1):
-            new = np.minimum.reduceat(q_of(values), starts)
-            new[dead] = 0.0
+            new = sweep(values)
             delta = float(np.max(np.abs(new - values)))
             values = new
             if iterations % 64 == 0:
@@ -113,7 +164,7 @@ def solve(
     best = np.minimum.reduceat(q, starts) if n else np.zeros(0)
     pair_state = model.pair_state()
     first = np.full(n, n_pairs, dtype=np.int64)
-    at_min = np.flatnonzero(q == best[pair_state])
+    at_min = np.flatnonzero(q <= best[pair_state] + TIE)
     np.minimum.at(first, pair_state[at_min], at_min)
     inf_state = ~np.isfinite(best)
     first[inf_state] = starts[inf_state]  # argmin of all-inf picks the first pair

@@ -80,7 +80,10 @@ def reference_oracle(
     q = cost + np.bincount(t_pair, weights=t_prob * np.where(alive[t_next], values[t_next], 0.0), minlength=n_pairs)
     q = np.where(ok, np.where(terminal, 0.0, q), np.inf)
     ends = [*model.pair_start[1:], n_pairs]
-    best = [int(model.pair_action[starts[s] + int(np.argmin(q[starts[s] : ends[s]]))]) for s in range(n)]
+    best = []  # the first action in option order within 1e-6 s of the state's lowest (equal ones are ties)
+    for s in range(n):
+        row = q[starts[s] : ends[s]]
+        best.append(int(model.pair_action[starts[s] + next(i for i, x in enumerate(row) if x <= min(row) + 1e-6)]))
     expected = sum(p * (tau + values[model.index[model.canonical(s)]]) for s, p, tau in regen)
     transitions: dict[tuple[State, int], dict[tuple[State, float], float]] = {}
     for pair, a in enumerate(model.pair_action):

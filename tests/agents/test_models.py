@@ -380,3 +380,7 @@ def test_transitions_read_from_the_answer_tables_are_the_kept_ones(scenario: str
         pairs = np.sort(rng.choice(kept.n_pairs, size=50, replace=False))
         for x, y in zip(kept.gather(i, pairs), lazy.gather(i, pairs), strict=True):
             assert np.array_equal(x, y)
+    for i in (0, 3, 0):  # partners asked out of turn, pairs in no order and repeated
+        pairs = rng.choice(kept.n_pairs, size=5000)
+        for x, y in zip(kept.gather(i, pairs), lazy.gather(i, pairs), strict=True):
+            assert np.array_equal(x, y)

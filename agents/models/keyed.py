@@ -1,0 +1,133 @@
+"""Packed int64 keys: deduplicated by hashing, looked up in sorted order, and tables of segments per key.
+
+Why hashing: ``np.unique`` sorts the whole batch, and numpy 2's hash-based ``np.unique``
+without an inverse is slower still on these keys; ``pandas.factorize`` (a hash table)
+finds the distinct keys in one pass, and only the distinct ones are sorted. Why sorted
+queries: ``searchsorted`` with queries in random order misses the cache at every probe
+of a large table; sorting the queries first and scattering the answers back gives the
+same positions many times faster on the headroom's tables of millions of keys. Every
+function here returns exactly what its ``numpy`` counterpart returns (a test compares
+them on random keys), so a model built with them is the same, bit for bit.
+
+:class:`SegmentTable` is the answer tables' layout: sorted keys, each with a segment of
+entries. Entries are appended, never moved (arrays grown by doubling); only the keys and
+their segment positions are kept sorted. Merging a batch into a table therefore costs
+the keys, not the entries; :meth:`SegmentTable.compact` gives the contiguous layout
+(``starts``) that the compiled partners store.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+import pandas as pd
+
+SORT_QUERIES = 4096
+"""Queries above this many are sorted before a ``searchsorted`` (below it the sort costs more than it saves)."""
+
+
+def unique(keys: np.ndarray) -> np.ndarray:
+    """``np.unique(keys)``: the distinct keys, sorted."""
+    return np.sort(pd.unique(keys))
+
+
+def first_unique(keys: np.ndarray) -> np.ndarray:
+    """The distinct keys in order of first occurrence."""
+    return np.asarray(pd.unique(keys))
+
+
+def unique_inverse(keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(keys, return_inverse=True)``: the distinct keys sorted, and each key's position among them."""
+    codes, found = pd.factorize(keys)
+    order = np.argsort(found, kind="stable")
+    rank = np.empty(len(order), dtype=np.int64)
+    rank[order] = np.arange(len(order))
+    return np.asarray(found)[order], rank[codes]
+
+
+def unique_first_inverse(keys: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``np.unique(keys, return_index=True, return_inverse=True)`` (the index is each key's first occurrence)."""
+    codes, found = pd.factorize(keys)
+    # factorize numbers keys in order of first occurrence: a position is a first one
+    # exactly where its code exceeds every code before it.
+    seen = np.maximum.accumulate(np.concatenate([[-1], codes[:-1]])) if len(codes) else codes
+    first = np.flatnonzero(codes > seen)
+    order = np.argsort(found, kind="stable")
+    rank = np.empty(len(order), dtype=np.int64)
+    rank[order] = np.arange(len(order))
+    return np.asarray(found)[order], first[order], rank[codes]
+
+
+def positions(sorted_keys: np.ndarray, queries: np.ndarray) -> np.ndarray:
+    """``np.searchsorted(sorted_keys, queries)``, with large unsorted queries probed in sorted order."""
+    if len(queries) <= SORT_QUERIES or bool(np.all(queries[1:] >= queries[:-1])):
+        return np.searchsorted(sorted_keys, queries)
+    order = np.argsort(queries, kind="stable")
+    found = np.empty(len(queries), dtype=np.int64)
+    found[order] = np.searchsorted(sorted_keys, queries[order])
+    return found
+
+
+def known(sorted_keys: np.ndarray, queries: np.ndarray) -> np.ndarray:
+    """Whether each query is among ``sorted_keys``."""
+    if not len(sorted_keys):
+        return np.zeros(len(queries), dtype=bool)
+    at = np.minimum(positions(sorted_keys, queries), len(sorted_keys) - 1)
+    return sorted_keys[at] == queries
+
+
+class SegmentTable:
+    """Sorted distinct keys, each with a segment of entries in append-only arrays.
+
+    Args:
+        fields: the entries' arrays by name, with their dtypes.
+    """
+
+    def __init__(self, fields: Mapping[str, type | np.dtype]) -> None:
+        self.keys = np.zeros(0, dtype=np.int64)
+        """(k,) sorted."""
+        self.first = np.zeros(0, dtype=np.int64)
+        """(k,) position of each key's first entry in the entry arrays."""
+        self.size = np.zeros(0, dtype=np.int64)
+        """(k,) entries of each key."""
+        self._buffers = {name: np.zeros(0, dtype=dtype) for name, dtype in fields.items()}
+        self.n_entries = 0
+
+    @property
+    def entries(self) -> dict[str, np.ndarray]:
+        """The entry arrays (in order of insertion; a key's entries are contiguous, in its given order)."""
+        return {name: buf[: self.n_entries] for name, buf in self._buffers.items()}
+
+    def lookup(self, keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(first entry, entry count) per key; every key must be in the table."""
+        at = positions(self.keys, keys)
+        return self.first[at], self.size[at]
+
+    def missing(self, keys: np.ndarray) -> np.ndarray:
+        """The keys of ``keys`` not in the table (in their order)."""
+        return keys[~known(self.keys, keys)]
+
+    def add(self, keys: np.ndarray, sizes: np.ndarray, new: Mapping[str, np.ndarray]) -> None:
+        """Store distinct ``keys`` not in the table; key ``i``'s entries are the next ``sizes[i]`` of ``new``."""
+        total = int(sizes.sum())
+        end = self.n_entries + total
+        for name, buf in self._buffers.items():
+            if end > len(buf):  # doubling: each entry is copied O(1) times over the table's life
+                grown = np.empty(max(end, 2 * len(buf), 1024), dtype=buf.dtype)
+                grown[: self.n_entries] = buf[: self.n_entries]
+                buf = self._buffers[name] = grown
+            buf[self.n_entries : end] = new[name]
+        first = self.n_entries + np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
+        self.n_entries = end
+        order = np.argsort(keys, kind="stable")
+        at = np.searchsorted(self.keys, keys[order])
+        self.keys = np.insert(self.keys, at, keys[order])
+        self.first = np.insert(self.first, at, first[order])
+        self.size = np.insert(self.size, at, sizes[order].astype(np.int64))
+
+    def compact(self) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
+        """(keys, starts, entries) with each key's entries at ``starts[i]:starts[i + 1]``, keys sorted."""
+        starts = np.concatenate([[0], np.cumsum(self.size)]).astype(np.int64)
+        gather = np.repeat(self.first - starts[:-1], self.size) + np.arange(starts[-1])
+        return self.keys, starts, {name: values[gather] for name, values in self.entries.items()}
