@@ -64,8 +64,7 @@ class Solution:
 def certain_states(model: Model, transitions: sparse.csr_matrix) -> tuple[np.ndarray, np.ndarray]:
     """States from which some policy completes with probability 1, and the pairs it may use."""
     n, pair_state, terminal = model.n, model.pair_state(), model.pair_terminal
-    structure = transitions.copy()
-    structure.data = np.ones_like(structure.data)
+    structure = transitions  # every stored probability is positive: a product is > 0 where an edge is
     alive = np.ones(n, dtype=bool)
     while True:
         leaks = (structure @ (~alive).astype(np.float64)) > 0
@@ -95,14 +94,16 @@ def without_self_loops(
     transitions that all return to their state (their value is infinite).
     """
     n_pairs = len(t_start) - 1
-    t_pair = np.repeat(np.arange(n_pairs), np.diff(t_start))
-    leave = t_next != pair_state[t_pair]
-    out = np.bincount(t_pair[leave], weights=t_prob[leave], minlength=n_pairs)
-    looping = (out == 0) & (np.diff(t_start) > 0)
+    counts = np.diff(t_start)
+    t_pair = np.repeat(np.arange(n_pairs), counts)
+    # a self-loop keeps its place in the rows with probability 0: the products add exact
+    # zeros in the same order, and the transitions' index arrays are shared, not copied
+    leaving = np.where(t_next == pair_state[t_pair], 0.0, t_prob)
+    out = np.bincount(t_pair, weights=leaving, minlength=n_pairs)
+    looping = (out == 0) & (counts > 0)
     scale = 1.0 / np.where(out > 0, out, 1.0)
-    counts = np.bincount(t_pair[leave], minlength=n_pairs)
-    starts = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
-    matrix = sparse.csr_matrix((t_prob[leave] * scale[t_pair[leave]], t_next[leave], starts), shape=(n_pairs, n))
+    leaving *= scale[t_pair]
+    matrix = sparse.csr_matrix((leaving, t_next, t_start), shape=(n_pairs, n))
     return matrix, cost * scale, looping
 
 
