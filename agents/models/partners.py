@@ -72,7 +72,6 @@ def _preference(world: World, h: Any) -> Answers:
     m, n = t.n_spots, t.n_objects
     hand = t.hand[Agent.HUMAN]
     spot_human = np.array(t.spot_human, dtype=bool)
-    spots = np.arange(m)
     throw_to = rules.throw_to[Agent.HUMAN]
     pick_cost = [h.haste * specs[pick + o].duration for o in range(n)]
     bonus_colour = [h.colour_bonus if colour_match[o] else 0.0 for o in range(n)]
@@ -95,13 +94,11 @@ def _preference(world: World, h: Any) -> Answers:
             best = np.full(size, -np.inf)
             best = np.where(throw_to[b.robot_at, o] >= 0, np.maximum(best, held[throw + o]), best)
             best = np.where(rules.give_ok[b.robot_at], np.maximum(best, held[give + o]), best)
-            # the best place among the spots at once (a maximum: the order it is taken in is immaterial)
-            ok = spot_human[None, :] & ~occupied[:, :m] & (origin[:, None] != spots[None, :])
-            ok &= robot_reaches[None, :m] != side[:, None]
-            best = np.maximum(
-                best,
-                np.where(ok, held[place + o * m : place + o * m + m][None, :], -np.inf).max(axis=1, initial=-np.inf),
-            )
+            for s in range(m):
+                if not spot_human[s] or held[place + o * m + s] == -np.inf:
+                    continue  # a spot the human cannot place on: never better (skipped, not computed)
+                ok = ~occupied[:, s] & (origin != s) & (robot_reaches[s] != side)
+                best = np.where(ok, np.maximum(best, held[place + o * m + s]), best)
             bonus = np.where(side, h.robot_side, 0.0) + bonus_colour[o]
             value = (best + bonus) - pick_cost[o]
             score[:, pick + o] = np.where(can & np.isfinite(best), value, -np.inf)
