@@ -46,7 +46,7 @@ from tqdm import tqdm
 from hg_marl.agents.models import AnswerTable, Model, StatePacker, build_model
 from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.chains import Chain, certain_states, policy_rate, transitions
-from hg_marl.agents.models.solve import TIE, without_self_loops
+from hg_marl.agents.models.solve import TIE, sweeps
 from hg_marl.agents.oracle import (
     DEFAULT_MEMORY,
     DEFAULT_SECONDS,
@@ -236,33 +236,26 @@ class JointModel:
         cost = transitions(chain, n, chain.t_prob * chain.t_tau) @ np.ones(n)
         alive, ok = certain_states(n, self.pair_state, self.terminal, chain)
         matrix = transitions(chain, n)
-        values = np.zeros(n)
 
         def q_of(v: np.ndarray) -> np.ndarray:
             q = matrix @ np.where(alive, v, 0.0)
             q += cost
             return np.where(ok, np.where(self.terminal, 0.0, q), np.inf)
 
-        fast, fast_cost, looping = without_self_loops(
-            self.pair_state, chain.t_start, chain.t_next, chain.t_prob, cost, n
-        )  # the sweeps' operator (agents/models/solve.py): the same fixed point, fewer sweeps
-        fast_ok = ok & ~looping
-
-        def sweep(v: np.ndarray) -> np.ndarray:
-            q = fast @ np.where(alive, v, 0.0)
-            q += fast_cost
-            q = np.where(fast_ok, np.where(self.terminal, 0.0, q), np.inf)
-            return np.where(alive, np.minimum.reduceat(q, self.starts), 0.0)
-
-        if alive.any():
-            for it in range(1, max_iterations + 1):
-                new = sweep(values)
-                delta = float(np.max(np.abs(new - values)))
-                values = new
-                if it % 64 == 0:
-                    self.budget.check("solve", it, unit="sweeps", memory=it % 4096 == 0)
-                if delta < tolerance:
-                    break
+        values, _, _ = sweeps(
+            self.pair_state,
+            chain.t_start,
+            chain.t_next,
+            chain.t_prob,
+            cost,
+            self.terminal,
+            alive,
+            ok,
+            self.starts,
+            tolerance=tolerance,
+            max_iterations=max_iterations,
+            budget=self.budget,
+        )  # the oracle's sweeps (agents/models/solve.py): self-loops in closed form
         q = q_of(values)
         best = np.minimum.reduceat(q, self.starts)
         tied = (q <= best[self.pair_state] + TIE) | ~np.isfinite(best[self.pair_state])  # nothing certain: all tied

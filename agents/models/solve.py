@@ -107,6 +107,50 @@ def without_self_loops(
     return matrix, cost * scale, looping
 
 
+def sweeps(
+    pair_state: np.ndarray,
+    t_start: np.ndarray,
+    t_next: np.ndarray,
+    t_prob: np.ndarray,
+    cost: np.ndarray,
+    terminal: np.ndarray,
+    alive: np.ndarray,
+    ok: np.ndarray,
+    starts: np.ndarray,
+    *,
+    tolerance: float,
+    max_iterations: int,
+    budget: Budget,
+) -> tuple[np.ndarray, int, bool]:
+    """Value iteration from 0 with self-loops in closed form: (values, sweeps, converged).
+
+    The one sweep loop of the oracle and the headroom's policies. ``values`` is 0 on the
+    states that cannot complete (``~alive``); the pairs that may leave them (``~ok``) and
+    the pairs that only return are infinite; the completing ``wait`` is 0. The budget is
+    read every 64 sweeps, the memory every 4,096.
+    """
+    n = len(alive)
+    values = np.zeros(n)
+    if not alive.any():
+        return values, 0, False
+    fast, fast_cost, looping = without_self_loops(pair_state, t_start, t_next, t_prob, cost, n)
+    zero_at, inf_at, dead = np.flatnonzero(terminal & ok), np.flatnonzero(~ok | looping), np.flatnonzero(~alive)
+    for iteration in range(1, max_iterations + 1):
+        q = fast @ values
+        q += fast_cost
+        q[zero_at] = 0.0
+        q[inf_at] = np.inf
+        new = np.minimum.reduceat(q, starts)
+        new[dead] = 0.0
+        delta = float(np.max(np.abs(new - values)))
+        values = new
+        if iteration % 64 == 0:
+            budget.check("solve", iteration, unit="sweeps", memory=iteration % 4096 == 0)
+        if delta < tolerance:
+            return values, iteration, True
+    return values, max_iterations, False
+
+
 def solve(
     model: Model,
     *,
@@ -123,10 +167,7 @@ def solve(
     alive, ok = certain_states(model, transitions)
     starts = model.pair_start[:-1]
     terminal = model.pair_terminal
-    values = np.zeros(n)
-    iterations, converged = 0, False
-
-    zero_at, inf_at, dead = np.flatnonzero(terminal & ok), np.flatnonzero(~ok), np.flatnonzero(~alive)
+    zero_at, inf_at = np.flatnonzero(terminal & ok), np.flatnonzero(~ok)
 
     def q_of(v: np.ndarray) -> np.ndarray:
         """Seconds after each pair given ``v`` (``v`` is 0 on the states that cannot complete)."""
@@ -136,30 +177,20 @@ def solve(
         q[inf_at] = np.inf
         return q
 
-    fast, fast_cost, looping = without_self_loops(
-        model.pair_state(), model.t_start, model.t_next, model.t_prob, cost, n
+    values, iterations, converged = sweeps(
+        model.pair_state(),
+        model.t_start,
+        model.t_next,
+        model.t_prob,
+        cost,
+        terminal,
+        alive,
+        ok,
+        starts,
+        tolerance=tolerance,
+        max_iterations=max_iterations,
+        budget=budget,
     )
-    fast_inf = np.flatnonzero(~ok | looping)
-
-    def sweep(v: np.ndarray) -> np.ndarray:
-        q = fast @ v
-        q += fast_cost
-        q[zero_at] = 0.0
-        q[fast_inf] = np.inf
-        new = np.minimum.reduceat(q, starts)
-        new[dead] = 0.0
-        return new
-
-    if alive.any():
-        for iterations in range(1, max_iterations + 1):
-            new = sweep(values)
-            delta = float(np.max(np.abs(new - values)))
-            values = new
-            if iterations % 64 == 0:
-                budget.check("solve", iterations, unit="sweeps", memory=iterations % 4096 == 0)
-            if delta < tolerance:
-                converged = True
-                break
     q = q_of(np.where(alive, values, 0.0))
     values = np.where(alive, values, np.inf)
     best = np.minimum.reduceat(q, starts) if n else np.zeros(0)
