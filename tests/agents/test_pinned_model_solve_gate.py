@@ -52,28 +52,35 @@ def test_the_solver_reads_memory_first_and_every_4096_sweeps() -> None:
     assert [d for d, memory in budget.readings if memory] == [0, 4096]
 
 
-def _looping_model(p_back: float) -> Model:
-    """Two states by hand. State 0 has one pair: 5 s, then back to 0 with ``p_back``, else to 1.
-    State 1 has the completing wait (terminal) and a pair that only returns to 1 (3 s).
-    The re-drawn table is state 0 (probability 1, 2 s)."""
+def _model(t_start: list[int], t_next: list[int], t_prob: list[float], t_tau: list[float], pairs: int) -> Model:
+    """Two states (10 and 11), ``pairs`` pairs at state 0 and the rest at state 1, the last
+    pair the completing wait; the re-drawn table is state 0 (probability 1, the first pair's
+    re-draw seconds: 2 s)."""
     dynamics = Dynamics(
-        t_start=np.array([0, 2, 2, 3]),
-        t_next=np.array([0, 1, 1]),
-        t_prob=np.array([p_back, 1.0 - p_back, 1.0]),
-        t_tau=np.array([5.0, 5.0, 3.0]),
+        t_start=np.array(t_start),
+        t_next=np.array(t_next),
+        t_prob=np.array(t_prob),
+        t_tau=np.array(t_tau),
         regen_next=np.array([0]),
         regen_prob=np.array([1.0]),
         regen_tau=np.array([2.0]),
     )
+    n_pairs = len(t_start) - 1
     return Model(
         packer=None,  # type: ignore[arg-type]
         keys=np.array([10, 11]),
-        pair_start=np.array([0, 1, 3]),
-        pair_action=np.array([0, 5, 6]),
-        pair_terminal=np.array([False, True, False]),
+        pair_start=np.array([0, pairs, n_pairs]),
+        pair_action=np.arange(n_pairs) + 2,
+        pair_terminal=np.arange(n_pairs) == n_pairs - 1,
         dynamics=[dynamics],
         n_layouts=1,
     )
+
+
+def _looping_model(p_back: float) -> Model:
+    """State 0 has one pair: 5 s, then back to 0 with ``p_back``, else to 1. State 1 has a
+    pair that only returns to 1 (3 s) and the completing wait."""
+    return _model([0, 2, 3, 3], [0, 1, 1], [p_back, 1.0 - p_back, 1.0], [5.0, 5.0, 3.0], pairs=1)
 
 
 def test_a_self_loop_is_solved_in_closed_form_in_two_sweeps() -> None:
@@ -85,46 +92,29 @@ def test_a_self_loop_is_solved_in_closed_form_in_two_sweeps() -> None:
     assert solution.iterations == 2 and solution.converged
     assert solution.values.tolist() == pytest.approx([25.0, 0.0], abs=1e-12)  # 1 / (1 - 0.8) is not 5 in floats
     # q is the plain operator's: the looping pair at state 1 costs 3 s and returns to V(1) = 0.
-    assert solution.q.tolist() == pytest.approx([25.0, 0.0, 3.0], abs=1e-12)
-    assert solution.best_pair.tolist() == [0, 1]
+    assert solution.q.tolist() == pytest.approx([25.0, 3.0, 0.0], abs=1e-12)
+    assert solution.best_pair.tolist() == [0, 2]
     assert solution.seconds_per_task == pytest.approx(27.0, abs=1e-12)  # 2 s for the re-draw, then 25
 
 
 def test_the_closed_form_divides_by_the_leaving_probability_summed_not_one_minus_the_loop() -> None:
     model = _looping_model(0.8)
-    cost = np.array([5.0, 0.0, 3.0])
+    cost = np.array([5.0, 3.0, 0.0])
     matrix, scaled, looping = without_self_loops(
         model.pair_state(), model.t_start, model.t_next, model.t_prob, cost, model.n
     )
     # pair 0 leaves with 1 - 0.8 (as a float: 0.19999999999999996), the only transition it keeps
     leave = 1.0 - 0.8
     assert matrix.toarray().tolist() == [[0.0, leave / leave], [0.0, 0.0], [0.0, 0.0]]
-    assert scaled.tolist() == [5.0 * (1.0 / leave), 0.0, 3.0]
-    assert looping.tolist() == [False, False, True]
+    assert scaled.tolist() == [5.0 * (1.0 / leave), 3.0, 0.0]
+    assert looping.tolist() == [False, True, False]
 
 
 @pytest.mark.parametrize(("extra", "chosen"), [(1e-9, 0), (5e-7, 0), (2e-6, 1)])
 def test_pairs_within_a_microsecond_of_the_best_are_tied_and_the_first_wins(extra: float, chosen: int) -> None:
     # State 0: pair 0 takes 4 s + extra to state 1, pair 1 takes 4 s to state 1; state 1 completes.
     # Within 1e-6 s the two are tied and the first in option order is chosen; beyond it, the faster.
-    dynamics = Dynamics(
-        t_start=np.array([0, 1, 2, 2]),
-        t_next=np.array([1, 1]),
-        t_prob=np.array([1.0, 1.0]),
-        t_tau=np.array([4.0 + extra, 4.0]),
-        regen_next=np.array([0]),
-        regen_prob=np.array([1.0]),
-        regen_tau=np.array([1.0]),
-    )
-    model = Model(
-        packer=None,  # type: ignore[arg-type]
-        keys=np.array([10, 11]),
-        pair_start=np.array([0, 2, 3]),
-        pair_action=np.array([2, 3, 9]),
-        pair_terminal=np.array([False, False, True]),
-        dynamics=[dynamics],
-        n_layouts=1,
-    )
+    model = _model([0, 1, 2, 2], [1, 1], [1.0, 1.0], [4.0 + extra, 4.0], pairs=2)
     solution = solve(model)
     assert solution.best_pair.tolist() == [chosen, 2]
     assert solution.values[0] == 4.0  # the value is the minimum, whichever pair is chosen
