@@ -13,7 +13,7 @@ from __future__ import annotations
 import inspect
 import re
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import pytest
@@ -210,3 +210,51 @@ def test_the_headroom_model_keeps_no_partner_transitions(monkeypatch: pytest.Mon
     np.testing.assert_allclose(result.optimum, [3600 / 17.5, 3600 / 8])  # the same matrix
     (model,) = built
     assert model.dynamics == [] and model.lazy is not None
+
+
+class ExploreSpy(SpyBudget):
+    """Also records the Python enumeration's explore readings: (states explored, memory read)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.explore_checks: list[tuple[int, bool]] = []
+
+    def check(self, phase: str, done: int, total: int | None = None, unit: str = "states", **kw: Any) -> None:
+        if phase == "explore":
+            self.explore_checks.append((done, bool(kw.get("memory", False))))
+        super().check(phase, done, total, unit, **kw)
+
+
+class BarSpy:
+    """A stand-in progress bar that records its count after each update."""
+
+    counts: ClassVar[list[int]] = []
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        self.n = 0
+        BarSpy.counts = []
+
+    def update(self, k: int) -> None:
+        self.n += k
+        BarSpy.counts.append(self.n)
+
+    def close(self) -> None:
+        pass
+
+
+def test_the_python_enumeration_reads_the_budget_per_state_memory_every_2048_and_shows_every_64th(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # Stated, not read from the code: one budget reading before each state is explored,
+    # the resident memory at states 0, 2048, 4096, ...; the bar moves at every 64th state
+    # and once more at the end with the whole count.
+    import hg_marl.agents.headroom as module
+
+    monkeypatch.setattr(module, "tqdm", BarSpy)
+    world = World("asymmetric_advantages")
+    budget = ExploreSpy()
+    model = JointModel(world, [stationary_human("random", world)], budget=budget)
+    n = model.n
+    assert n > 4096  # enough states for three memory readings
+    assert budget.explore_checks == [(k, k % 2048 == 0) for k in range(n)]
+    assert BarSpy.counts == [*range(0, n, 64), n]

@@ -117,3 +117,23 @@ def test_the_canonical_deal_count_by_hand(scenario: str, deals: int) -> None:
     world = World(scenario)
     assert canonical_layout_count(world) == deals
     assert len(canonical_layouts(world)) == deals  # one class: each deal is its own table
+
+
+def test_canonical_answers_read_the_budget_every_fourth_answer_and_the_memory_first() -> None:
+    # The cooperative human is asked once per canonical key (a planner search each): a
+    # reading before its answers 0, 4, 8, ... of the step, the memory read at answer 0 only
+    # (every 4096th: this step has fewer).
+    world = World("roboergosum")
+    human = make_human("cooperative")
+    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    packer = StatePacker(world)
+    states = [s for s, _ in layout_distribution(world)][:60]
+    keys = np.unique(packer.pack(BatchState.of(states), np.full(len(states), -1)))
+    budget = RecordingBudget()
+    table = AnswerTable(world, human, packer, budget=budget)
+    assert table.canonical is not None  # the path under test
+    table.ensure(keys)
+    asked = table.live_calls
+    assert 9 <= asked < len(keys)  # some keys share a canonical one; enough for three readings
+    unit = "partner answers of this step"
+    assert budget.readings == [("answers", i, asked, unit, i == 0) for i in range(0, asked, 4)]

@@ -16,11 +16,13 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+import pytest
 
 from hg_marl.agents.models import StatePacker
 from hg_marl.agents.models.answers import stationary_human
-from hg_marl.agents.models.equivariant import CanonicalAnswers, canonical_answers
+from hg_marl.agents.models.equivariant import CanonicalAnswers, actions_back, canonical_answers, object_slots
 from hg_marl.core import Agent, State, World
+from hg_marl.core.relabel import Relabel
 from hg_marl.envs.batched import BatchState
 from tests.agents.ragged import per_state
 from tests.agents.test_models import mid_states
@@ -97,3 +99,19 @@ def test_a_partner_that_does_not_read_the_robot_action_is_shown_none() -> None:
     for s, answers in zip(states, listed(table, states, seen), strict=True):
         assert answers == uniform(world, s), s
     assert partner.seen_asked == {-1}  # as StationaryHuman.act shows it: -1 unless it reads the robot's action
+
+
+@pytest.mark.parametrize("agent", [Agent.ROBOT, Agent.HUMAN])
+def test_object_slots_map_every_action_back_as_the_relabelling_does(agent: Agent) -> None:
+    # The reference is the relabelling's own scalar rule (Relabel.action_back), applied to
+    # whole permutations: the robot's moves to an object's place name that object too.
+    world = World("roboergosum")
+    relabel = Relabel(world)
+    slot, remap = object_slots(world, agent)
+    n = world.table.n_objects
+    rng = np.random.default_rng(0)
+    actions = np.arange(world.n_actions(agent))
+    for _ in range(10):
+        orig = tuple(rng.permutation(n).tolist())
+        got = actions_back(slot, remap, actions, np.array([orig]), np.zeros(len(actions), dtype=np.int64))
+        assert got.tolist() == [relabel.action_back(int(agent), a, orig) for a in actions.tolist()]

@@ -118,3 +118,17 @@ def test_pairs_within_a_microsecond_of_the_best_are_tied_and_the_first_wins(extr
     solution = solve(model)
     assert solution.best_pair.tolist() == [chosen, 2]
     assert solution.values[0] == 4.0  # the value is the minimum, whichever pair is chosen
+
+
+def test_a_model_where_nothing_completes_takes_no_sweep() -> None:
+    # State 0's only pair returns to 0 for ever; state 1 completes but is never reached from
+    # the re-drawn table (state 0): no state of the re-draw completes, so the time is infinite.
+    # State 1 is certain (its wait completes), so the sweeps run; with it unreachable too
+    # (below), nothing is certain and no sweep is made.
+    solution = solve(_model([0, 1, 1], [0], [1.0], [5.0], pairs=1))
+    assert solution.seconds_per_task == np.inf and solution.best_pair.tolist() == [0, 1]
+    nothing = _model([0, 1, 2], [0, 1], [1.0, 1.0], [5.0, 5.0], pairs=1)
+    nothing.pair_terminal[:] = False  # state 1's pair now loops too: nothing completes anywhere
+    solution = solve(nothing)
+    assert solution.iterations == 0 and not solution.converged
+    assert solution.values.tolist() == [np.inf, np.inf]
