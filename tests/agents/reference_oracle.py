@@ -31,8 +31,16 @@ class Reference:
     n_transitions: int
     policy: dict[State, int]
     values: dict[State, float]
-    transitions: dict[tuple[State, int], dict[tuple[State, float], float]]
-    """(state, robot action) -> (next state, seconds) -> summed probability; terminal pairs map to {}."""
+    states: list[State]
+    """The states by id (canonical when the symmetry reduction is on)."""
+    pair_state: np.ndarray
+    """Per (state, robot action) pair: its state's id, and (below) the action; pairs contiguous per state."""
+    pair_action: np.ndarray
+    t_pair: np.ndarray
+    """Per transition: its pair, next state's id, seconds and probability (terminal pairs have none)."""
+    t_next: np.ndarray
+    t_tau: np.ndarray
+    t_prob: np.ndarray
     regen: dict[State, float]
     """Re-drawn states (canonical) with their summed probability."""
 
@@ -85,13 +93,6 @@ def reference_oracle(
         row = q[starts[s] : ends[s]]
         best.append(int(model.pair_action[starts[s] + next(i for i, x in enumerate(row) if x <= min(row) + 1e-6)]))
     expected = sum(p * (tau + values[model.index[model.canonical(s)]]) for s, p, tau in regen)
-    transitions: dict[tuple[State, int], dict[tuple[State, float], float]] = {}
-    for pair, a in enumerate(model.pair_action):
-        transitions[(model.states[int(pair_state[pair])], a)] = {}
-    for pair, nxt, p, tau in zip(t_pair.tolist(), t_next.tolist(), t_prob.tolist(), t_tau.tolist(), strict=True):
-        out = transitions[(model.states[int(pair_state[pair])], model.pair_action[pair])]
-        key = (model.states[nxt], tau)
-        out[key] = out.get(key, 0.0) + p
     regen_p: dict[State, float] = {}
     for s, p, _ in regen:
         c = model.canonical(s)
@@ -102,6 +103,12 @@ def reference_oracle(
         n_transitions=len(t_pair),
         policy=dict(zip(model.states, best, strict=True)),
         values=dict(zip(model.states, values.tolist(), strict=True)),
-        transitions=transitions,
+        states=list(model.states),
+        pair_state=pair_state,
+        pair_action=np.array(model.pair_action, dtype=np.int64),
+        t_pair=t_pair,
+        t_next=t_next,
+        t_tau=t_tau,
+        t_prob=t_prob,
         regen=regen_p,
     )

@@ -37,32 +37,53 @@ def array_model(world: World, human: Any, symmetry: bool | None = None) -> tuple
     return build_model(world, answers, layouts, canonical=canonical), canonical
 
 
-def as_dicts(model: Any) -> tuple[dict[tuple[State, int], dict[tuple[State, float], float]], dict[State, float]]:
-    states = model.states()
-    pair_state = model.pair_state()
-    transitions: dict[tuple[State, int], dict[tuple[State, float], float]] = {}
-    for pair, a in enumerate(model.pair_action.tolist()):
-        out = transitions.setdefault((states[pair_state[pair]], a), {})
-        for t in range(model.t_start[pair], model.t_start[pair + 1]):
-            key = (states[model.t_next[t]], float(model.t_tau[t]))
-            out[key] = out.get(key, 0.0) + float(model.t_prob[t])
-    regen: dict[State, float] = {}
-    for s, p in zip(model.regen_next.tolist(), model.regen_prob.tolist(), strict=True):
-        regen[states[s]] = regen.get(states[s], 0.0) + p
-    return transitions, regen
+def grouped(
+    keys: np.ndarray,
+    pair_state: np.ndarray,
+    pair_action: np.ndarray,
+    t_pair: np.ndarray,
+    t_next: np.ndarray,
+    t_tau: np.ndarray,
+    t_prob: np.ndarray,
+) -> tuple[tuple[np.ndarray, ...], tuple[np.ndarray, ...], np.ndarray]:
+    """A model as sorted arrays, whatever its state ids: the pairs (state key, action); the
+    transitions' distinct (state key, action, next key, seconds); their summed probability."""
+    s_key = keys[pair_state]
+    order = np.lexsort((pair_action, s_key))
+    pairs = (s_key[order], pair_action[order])
+    cols = (s_key[t_pair], pair_action[t_pair], keys[t_next], t_tau)
+    order = np.lexsort(cols[::-1])  # stable: equal rows keep their order, so sums add alike
+    cols = tuple(c[order] for c in cols)
+    prob = t_prob[order]
+    if not len(prob):
+        return pairs, cols, prob
+    new = np.ones(len(prob), dtype=bool)
+    new[1:] = np.logical_or.reduce([c[1:] != c[:-1] for c in cols])
+    at = np.flatnonzero(new)
+    return pairs, tuple(c[at] for c in cols), np.add.reduceat(prob, at)
 
 
 def assert_same(model: Any, ref: Reference) -> None:
-    transitions, regen = as_dicts(model)
+    """The same states, (state, action) pairs, (state, action, next state, seconds) transitions
+    with probabilities equal to 1e-12, and the same re-draw, compared as sorted packed keys."""
     assert model.n == ref.n_states and len(model.t_next) == ref.n_transitions
-    assert transitions.keys() == ref.transitions.keys()
-    for pair, out in ref.transitions.items():
-        assert out.keys() == transitions[pair].keys(), pair
-        for key, p in out.items():
-            assert transitions[pair][key] == pytest.approx(p, rel=1e-12), (pair, key)
-    assert regen.keys() == ref.regen.keys()
-    for s, p in ref.regen.items():
-        assert regen[s] == pytest.approx(p, rel=1e-12)
+    ref_keys = model.packer.pack(BatchState.of(ref.states))
+    assert np.array_equal(np.sort(model.keys), np.sort(ref_keys))
+    got = grouped(
+        model.keys, model.pair_state(), model.pair_action, model.t_pair(), model.t_next, model.t_tau, model.t_prob
+    )
+    want = grouped(ref_keys, ref.pair_state, ref.pair_action, ref.t_pair, ref.t_next, ref.t_tau, ref.t_prob)
+    for a, b in zip((*got[0], *got[1]), (*want[0], *want[1]), strict=True):
+        assert np.array_equal(a, b)
+    np.testing.assert_allclose(got[2], want[2], rtol=1e-12, atol=0.0)
+    regen_keys = model.packer.pack(BatchState.of(list(ref.regen)))
+    want_regen = dict(zip(regen_keys.tolist(), ref.regen.values(), strict=True))
+    got_regen: dict[int, float] = {}
+    for k, p in zip(model.keys[model.regen_next].tolist(), model.regen_prob.tolist(), strict=True):
+        got_regen[k] = got_regen.get(k, 0.0) + p
+    assert got_regen.keys() == want_regen.keys()
+    for k, p in want_regen.items():
+        assert got_regen[k] == pytest.approx(p, rel=1e-12)
 
 
 @pytest.mark.parametrize("scenario", SMALL)
