@@ -2,8 +2,8 @@
 
 A robot-turn or mid-cycle state (and, for partners who see it, the robot's action of the
 cycle) is a tuple of small integers; packed as mixed-radix digits (the compiled partners'
-layout, ``agents/compiled.py``) a batch of them is one int64 array, deduplicated with
-``np.unique`` and looked up with ``searchsorted``.
+layout, ``agents/compiled.py``) a batch of them is one int64 array, deduplicated and
+looked up with the helpers of :mod:`hg_marl.agents.models.keyed`.
 """
 
 from __future__ import annotations
