@@ -63,19 +63,26 @@ class RecordingBudget(Budget):
         self.readings.append((phase, done, total, unit, memory))
 
 
+def _answered(human_name: str, layouts: int, arrays: bool) -> tuple[AnswerTable, RecordingBudget, int]:
+    """A table for ``human_name`` on roboergosum's first ``layouts`` layouts, before and after
+    answering them under a recording budget: (table, budget, distinct keys)."""
+    world = World("roboergosum")
+    human = make_human(human_name)
+    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    packer = StatePacker(world)
+    states = [s for s, _ in layout_distribution(world)][:layouts]
+    keys = np.unique(packer.pack(BatchState.of(states), np.full(len(states), -1)))
+    budget = RecordingBudget()
+    table = AnswerTable(world, human, packer, budget=budget, arrays=arrays)
+    table.ensure(keys)
+    return table, budget, len(keys)
+
+
 def test_live_answers_read_the_budget_every_fourth_answer_and_the_memory_every_4096th() -> None:
     # 4097 live answers (the lazy human, asked live with arrays=False): readings before
     # answers 0, 4, ..., 4096 (1025 of them), the memory read at 0 and 4096 alone
-    world = World("roboergosum")
-    human = make_human("lazy")
-    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
-    packer = StatePacker(world)
-    states = [s for s, _ in layout_distribution(world)][:4097]
-    keys = np.unique(packer.pack(BatchState.of(states), np.full(len(states), -1)))
-    assert len(keys) == 4097
-    budget = RecordingBudget()
-    table = AnswerTable(world, human, packer, budget=budget, arrays=False)
-    table.ensure(keys)
+    table, budget, n_keys = _answered("lazy", 4097, arrays=False)
+    assert n_keys == 4097
     assert table.live_calls == 4097
     unit = "partner answers of this step"
     expected = [("answers", i, 4097, unit, i in (0, 4096)) for i in range(0, 4097, 4)]
@@ -123,17 +130,9 @@ def test_canonical_answers_read_the_budget_every_fourth_answer_and_the_memory_fi
     # The cooperative human is asked once per canonical key (a planner search each): a
     # reading before its answers 0, 4, 8, ... of the step, the memory read at answer 0 only
     # (every 4096th: this step has fewer).
-    world = World("roboergosum")
-    human = make_human("cooperative")
-    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
-    packer = StatePacker(world)
-    states = [s for s, _ in layout_distribution(world)][:60]
-    keys = np.unique(packer.pack(BatchState.of(states), np.full(len(states), -1)))
-    budget = RecordingBudget()
-    table = AnswerTable(world, human, packer, budget=budget)
+    table, budget, n_keys = _answered("cooperative", 60, arrays=True)
     assert table.canonical is not None  # the path under test
-    table.ensure(keys)
     asked = table.live_calls
-    assert 9 <= asked < len(keys)  # some keys share a canonical one; enough for three readings
+    assert 9 <= asked < n_keys  # some keys share a canonical one; enough for three readings
     unit = "partner answers of this step"
     assert budget.readings == [("answers", i, asked, unit, i == 0) for i in range(0, asked, 4)]
