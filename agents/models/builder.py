@@ -30,8 +30,8 @@ from tqdm import tqdm
 
 from hg_marl.agents.models.answers import AnswerTable
 from hg_marl.agents.models.budget import Budget
-from hg_marl.agents.models.keyed import first_unique, positions, unique, unique_inverse
-from hg_marl.agents.models.lazy import TableTransitions, ranges, starts_of
+from hg_marl.agents.models.keyed import first_unique, positions, ranges, starts_of, unique, unique_inverse
+from hg_marl.agents.models.lazy import TableTransitions
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules, BatchState

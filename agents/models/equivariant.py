@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from hg_marl.agents.models.keyed import SegmentTable, known, unique_first_inverse
+from hg_marl.agents.models.keyed import SegmentTable, known, ranges, unique_first_inverse
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.core import Agent, Kind, State, World
 from hg_marl.core.relabel import Relabel
@@ -106,7 +106,7 @@ class CanonicalAnswers:
         start, size = self.table.lookup(uniq)
         start, size = start[inv], size[inv]
         rows = np.repeat(np.arange(len(keys)), size)
-        entry = np.repeat(start - np.concatenate([[0], np.cumsum(size)[:-1]]), size) + np.arange(len(rows))
+        entry = ranges(start, size)
         entries = self.table.entries
         back = actions_back(self.slot, self.remap, entries["actions"][entry], orig, rows)
         order = np.lexsort((back, rows))  # the live partner lists a distribution in index order

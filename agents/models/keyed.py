@@ -27,6 +27,24 @@ SORT_QUERIES = 4096
 """Queries above this many are sorted before a ``searchsorted`` (below it the sort costs more than it saves)."""
 
 
+def starts_of(size: np.ndarray) -> np.ndarray:
+    """Segment starts of consecutive segments of ``size`` entries each (``len(size) + 1``, from 0)."""
+    return np.concatenate([[0], np.cumsum(size)]).astype(np.int64)
+
+
+def ranges(lo: np.ndarray, size: np.ndarray) -> np.ndarray:
+    """The positions ``lo[i]:lo[i] + size[i]`` of every ``i``, concatenated."""
+    return np.repeat(lo - np.concatenate([[0], np.cumsum(size)[:-1]]).astype(np.int64), size) + np.arange(size.sum())
+
+
+def _sorted(codes: np.ndarray, found: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``factorize``'s distinct keys sorted, the order that sorts them, and each code's rank among them."""
+    order = np.argsort(found, kind="stable")
+    rank = np.empty(len(order), dtype=np.int64)
+    rank[order] = np.arange(len(order))
+    return np.asarray(found)[order], order, rank[codes]
+
+
 def unique(keys: np.ndarray) -> np.ndarray:
     """``np.unique(keys)``: the distinct keys, sorted."""
     return np.sort(pd.unique(keys))
@@ -39,11 +57,8 @@ def first_unique(keys: np.ndarray) -> np.ndarray:
 
 def unique_inverse(keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``np.unique(keys, return_inverse=True)``: the distinct keys sorted, and each key's position among them."""
-    codes, found = pd.factorize(keys)
-    order = np.argsort(found, kind="stable")
-    rank = np.empty(len(order), dtype=np.int64)
-    rank[order] = np.arange(len(order))
-    return np.asarray(found)[order], rank[codes]
+    uniq, _, inverse = _sorted(*pd.factorize(keys))
+    return uniq, inverse
 
 
 def unique_first_inverse(keys: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -52,11 +67,8 @@ def unique_first_inverse(keys: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.n
     # factorize numbers keys in order of first occurrence: a position is a first one
     # exactly where its code exceeds every code before it.
     seen = np.maximum.accumulate(np.concatenate([[-1], codes[:-1]])) if len(codes) else codes
-    first = np.flatnonzero(codes > seen)
-    order = np.argsort(found, kind="stable")
-    rank = np.empty(len(order), dtype=np.int64)
-    rank[order] = np.arange(len(order))
-    return np.asarray(found)[order], first[order], rank[codes]
+    uniq, order, inverse = _sorted(codes, found)
+    return uniq, np.flatnonzero(codes > seen)[order], inverse
 
 
 def positions(sorted_keys: np.ndarray, queries: np.ndarray) -> np.ndarray:
@@ -118,7 +130,7 @@ class SegmentTable:
                 grown[: self.n_entries] = buf[: self.n_entries]
                 buf = self._buffers[name] = grown
             buf[self.n_entries : end] = new[name]
-        first = self.n_entries + np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
+        first = self.n_entries + starts_of(sizes)[:-1]
         self.n_entries = end
         order = np.argsort(keys, kind="stable")
         at = np.searchsorted(self.keys, keys[order])
@@ -128,6 +140,5 @@ class SegmentTable:
 
     def compact(self) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
         """(keys, starts, entries) with each key's entries at ``starts[i]:starts[i + 1]``, keys sorted."""
-        starts = np.concatenate([[0], np.cumsum(self.size)]).astype(np.int64)
-        gather = np.repeat(self.first - starts[:-1], self.size) + np.arange(starts[-1])
-        return self.keys, starts, {name: values[gather] for name, values in self.entries.items()}
+        gather = ranges(self.first, self.size)
+        return self.keys, starts_of(self.size), {name: values[gather] for name, values in self.entries.items()}

@@ -14,15 +14,7 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.models.answers import AnswerTable
-
-
-def ranges(lo: np.ndarray, size: np.ndarray) -> np.ndarray:
-    """The positions ``lo[i]:lo[i] + size[i]`` of every ``i``, concatenated."""
-    return np.repeat(lo - np.concatenate([[0], np.cumsum(size)[:-1]]).astype(np.int64), size) + np.arange(size.sum())
-
-
-def starts_of(size: np.ndarray) -> np.ndarray:
-    return np.concatenate([[0], np.cumsum(size)]).astype(np.int64)
+from hg_marl.agents.models.keyed import ranges, starts_of
 
 
 class TableTransitions:

@@ -64,15 +64,14 @@ class Solution:
 def certain_states(model: Model, transitions: sparse.csr_matrix) -> tuple[np.ndarray, np.ndarray]:
     """States from which some policy completes with probability 1, and the pairs it may use."""
     n, pair_state, terminal = model.n, model.pair_state(), model.pair_terminal
-    structure = transitions  # every stored probability is positive: a product is > 0 where an edge is
     alive = np.ones(n, dtype=bool)
-    while True:
-        leaks = (structure @ (~alive).astype(np.float64)) > 0
+    while True:  # every stored probability is positive: a product is > 0 exactly where an edge is
+        leaks = (transitions @ (~alive).astype(np.float64)) > 0
         ok = terminal | ~leaks
         reach = np.zeros(n, dtype=bool)
         reach[pair_state[ok & terminal]] = True
         while True:
-            hits = (structure @ reach.astype(np.float64)) > 0
+            hits = (transitions @ reach.astype(np.float64)) > 0
             grown = reach.copy()
             grown[pair_state[ok & hits]] = True
             if (grown == reach).all():
@@ -167,6 +166,7 @@ def solve(
     alive, ok = certain_states(model, transitions)
     starts = model.pair_start[:-1]
     terminal = model.pair_terminal
+    pair_state = model.pair_state()
     zero_at, inf_at = np.flatnonzero(terminal & ok), np.flatnonzero(~ok)
 
     def q_of(v: np.ndarray) -> np.ndarray:
@@ -178,7 +178,7 @@ def solve(
         return q
 
     values, iterations, converged = sweeps(
-        model.pair_state(),
+        pair_state,
         model.t_start,
         model.t_next,
         model.t_prob,
@@ -194,7 +194,6 @@ def solve(
     q = q_of(np.where(alive, values, 0.0))
     values = np.where(alive, values, np.inf)
     best = np.minimum.reduceat(q, starts) if n else np.zeros(0)
-    pair_state = model.pair_state()
     first = np.full(n, n_pairs, dtype=np.int64)
     at_min = np.flatnonzero(q <= best[pair_state] + TIE)
     np.minimum.at(first, pair_state[at_min], at_min)

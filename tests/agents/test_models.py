@@ -405,3 +405,17 @@ def test_transitions_read_from_the_answer_tables_are_the_kept_ones(scenario: str
         pairs = rng.choice(kept.n_pairs, size=5000)
         for x, y in zip(kept.gather(i, pairs), lazy.gather(i, pairs), strict=True):
             assert np.array_equal(x, y)
+
+
+def test_a_reduced_models_transitions_read_from_the_answer_tables_are_the_kept_ones() -> None:
+    """With the symmetry reduction the next states are the entries' canonical keys, as the kept model's."""
+    world = World("paper2015")
+    models = []
+    for keep in (True, False):
+        table = AnswerTable(world, stationary_human("cooperative", world), StatePacker(world))
+        models.append(build_model(world, table, canonical_layouts(world), canonical=True, keep=keep))
+    kept, lazy = models
+    assert np.array_equal(kept.keys, lazy.keys)
+    a, b = kept.chain(0), lazy.chain(0)
+    for field in ("t_start", "t_next", "t_prob", "t_tau", "regen_next", "regen_prob", "regen_tau"):
+        assert np.array_equal(getattr(a, field), getattr(b, field)), field

@@ -33,13 +33,14 @@ def listed(table: CanonicalAnswers, states: list[State], seen: np.ndarray) -> li
     return per_state(*table(BatchState.of(states), seen, lambda i, n: None))
 
 
-def test_a_batch_with_known_and_new_keys_is_answered_as_the_live_partner_answers() -> None:
+@pytest.mark.parametrize("spec", ["cooperative", "cooperative:p_idle=1.0"])  # the second lists its plan at 0
+def test_a_batch_with_known_and_new_keys_is_answered_as_the_live_partner_answers(spec: str) -> None:
     world = World("paper2015")
     states = mid_states(world, 600)
     seen = np.random.default_rng(5).integers(-1, world.n_actions(Agent.ROBOT), size=len(states))
-    table = canonical_answers(world, stationary_human("cooperative", world), StatePacker(world))
+    table = canonical_answers(world, stationary_human(spec, world), StatePacker(world))
     assert table is not None
-    fresh = stationary_human("cooperative", world)
+    fresh = stationary_human(spec, world)
     first, second = slice(0, 300), slice(150, len(states))  # the second batch: half known, the rest new
     listed(table, states[first], seen[first])
     asked = table.live_calls
