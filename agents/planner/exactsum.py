@@ -69,7 +69,24 @@ class ExactSums:
     def sums(self, offer: bool, at: int, statuses: Sequence[int]) -> list[float] | None:
         """Per mixing weight, ``fsum`` of the objects' values (None: some value is infinite)."""
         assert self.packed is not None
-        total = sum(map(getitem, self.packed[offer][at], statuses))
+        return self._decode(sum(map(getitem, self.packed[offer][at], statuses)))
+
+    def of_places(self, offer: bool, at: int, where: Sequence[int], obj: int, status: int) -> list[float] | None:
+        """:meth:`sums` of the statuses ``where`` with object ``obj`` (if ``obj >= 0``) in ``status``.
+
+        The search's states give places, and at most one object's status differs from its
+        place (the offered one): its term is swapped in the integer sum, which is exact,
+        instead of building a list of statuses.
+        """
+        assert self.packed is not None
+        row = self.packed[offer][at]
+        total = sum(map(getitem, row, where))
+        if obj >= 0:
+            values = row[obj]
+            total += values[status] - values[where[obj]]
+        return self._decode(total)
+
+    def _decode(self, total: int) -> list[float] | None:
         if total >= self.flag:
             return None
         width, mask, exp = self.width, self.mask, self.exp

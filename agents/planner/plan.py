@@ -8,6 +8,7 @@ derived from it with the scenario's durations, so the two views cannot disagree.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import NamedTuple
 
 import numpy as np
@@ -59,10 +60,25 @@ class Plan:
     """Who acts first."""
     terms: tuple[Terms, ...]
     """Raw cost terms of each cycle."""
-    streams: tuple[tuple[Step, ...], tuple[Step, ...]]
-    """The robot's and the human's steps with start and end times (seconds from now)."""
-    links: tuple[Link, ...]
-    """Handover and waiting dependencies between the streams."""
+    world: World = field(compare=False, repr=False)
+    """The rules the streams are read with."""
+    durations: tuple[tuple[float, float], ...] = field(compare=False, repr=False)
+    """Per cycle, the robot's and the human's action durations as replayed."""
+
+    @cached_property
+    def streams(self) -> tuple[tuple[Step, ...], tuple[Step, ...]]:
+        """The robot's and the human's steps with start and end times (seconds from now).
+
+        Derived on first use: the search's callers (the robot's next action, the humans'
+        intents) read the cycles and terms only, and naming the steps costs more than the
+        search on small tables.
+        """
+        return _streams(self.world, self.cycles, self.durations, self.terms)
+
+    @cached_property
+    def links(self) -> tuple[Link, ...]:
+        """Handover and waiting dependencies between the streams."""
+        return _links(self.world, *self.streams)
 
     @property
     def duration(self) -> float:
@@ -140,7 +156,7 @@ def build_plan(
     cycles: list[tuple[int, int]],
     robot_part: tuple[float, int] = (0.0, NO_ACTION),
 ) -> Plan:
-    """Replay ``cycles`` from ``root`` with the rule table and derive times, terms and links.
+    """Replay ``cycles`` from ``root`` with the rule table: states, durations and terms (streams and links on use).
 
     Args:
         world: the rules.
@@ -152,27 +168,40 @@ def build_plan(
     """
     hand_h = world.hand[Agent.HUMAN]
     wait_h = world.n_actions(Agent.HUMAN) - 1
-    robot_acts, human_acts = world.actions(Agent.ROBOT), world.actions(Agent.HUMAN)
-    names = world.action_names
     successor = world.table.successor  # what ``World.step`` returns, without its events
-    states, terms = [root], []
-    streams: tuple[list[Step], list[Step]] = ([], [])
-    clock, state = 0.0, root
-    for k, (ar, ah) in enumerate(cycles):
+    states, terms, durations = [root], [], []
+    state = root
+    for ar, ah in cycles:
         if ar == NO_ACTION:
             d_r, r_act = robot_part
         else:
             state, _, d_r = successor(state, Agent.ROBOT, ar)
             r_act = ar
-            streams[0].append(Step(Agent.ROBOT, ar, names[0][ar], k, clock, clock + d_r, robot_acts[ar].obj, ""))
         state, _, d_h = successor(state, Agent.HUMAN, ah)
-        streams[1].append(Step(Agent.HUMAN, ah, names[1][ah], k, clock, clock + d_h, human_acts[ah].obj, ""))
-        t = cycle_terms(d_r, robot_active(world, r_act, ah), d_h, ah != wait_h, hand_h in state.where)
-        terms.append(t)
-        clock += t.time
+        terms.append(cycle_terms(d_r, robot_active(world, r_act, ah), d_h, ah != wait_h, hand_h in state.where))
         states.append(state)
-    robot, human = _label_methods(world, streams)
-    return Plan(tuple(cycles), tuple(states), first_to_move, tuple(terms), (robot, human), _links(world, robot, human))
+        durations.append((d_r, d_h))
+    return Plan(tuple(cycles), tuple(states), first_to_move, tuple(terms), world, tuple(durations))
+
+
+def _streams(
+    world: World,
+    cycles: tuple[tuple[int, int], ...],
+    durations: tuple[tuple[float, float], ...],
+    terms: tuple[Terms, ...],
+) -> tuple[tuple[Step, ...], tuple[Step, ...]]:
+    """Each agent's steps of a replayed plan, timed by its cycles' terms, with their methods named."""
+    robot_acts, human_acts = world.actions(Agent.ROBOT), world.actions(Agent.HUMAN)
+    names = world.action_names
+    streams: tuple[list[Step], list[Step]] = ([], [])
+    clock = 0.0
+    for k, (ar, ah) in enumerate(cycles):
+        d_r, d_h = durations[k]
+        if ar != NO_ACTION:
+            streams[0].append(Step(Agent.ROBOT, ar, names[0][ar], k, clock, clock + d_r, robot_acts[ar].obj, ""))
+        streams[1].append(Step(Agent.HUMAN, ah, names[1][ah], k, clock, clock + d_h, human_acts[ah].obj, ""))
+        clock += terms[k].time
+    return _label_methods(world, streams)
 
 
 def _label_methods(world: World, streams: tuple[list[Step], list[Step]]) -> tuple[tuple[Step, ...], tuple[Step, ...]]:

@@ -136,7 +136,11 @@ class Space:
         self.symmetric = len(set(self.spot_class)) < len(self.spot_class) or len(set(self.object_class)) < len(
             self.object_class
         )
-        self._codes = [[code * len(accept) + c for code in self.place_code] for c in self.object_class]
+        width = max(world.n_objects, 1).bit_length()
+        self._codes = [[1 << ((code * len(accept) + c) * width) for code in self.place_code] for c in self.object_class]
+        """Per object and place, its term of the canonical key: one bit field per (place code,
+        object class), wide enough to count every object without a carry, so the sum over
+        the objects is the multiset of their codes and equal sums are equal multisets."""
         del n_codes
         a = weights.time + weights.human_idle
         b = weights.human_effort - weights.human_idle
@@ -238,10 +242,15 @@ class Space:
         """:meth:`sums` memoised by canonical key (symmetric states have the same sums)."""
         out = self._sums.get(key, 0)
         if out == 0:
-            if len(self._sums) > _CACHE_LIMIT:
-                self._sums.clear()
-            out = self._sums[key] = self.sums(state)
+            return self._new_sums(state, key)
         return out  # type: ignore[return-value]
+
+    def _new_sums(self, state: State, key: object) -> tuple[float, ...] | None:
+        """:meth:`sums` stored under a key the memo does not hold (the successors look it up first)."""
+        if len(self._sums) > _CACHE_LIMIT:
+            self._sums.clear()
+        out = self._sums[key] = self.sums(state)
+        return out
 
     def robot_edges(self, state: State) -> tuple[RobotEdge, ...]:
         """The robot's candidates at ``state`` applied (dead ends left out), memoised.
@@ -295,7 +304,7 @@ class Space:
     def _successors(self, state: State, agent: int, actions: tuple[int, ...]) -> list[Successor]:
         """``actions`` applied with their canonical keys and sums (:meth:`.Steps.successors`)."""
         codes = self._codes if self.symmetric else None
-        return self.steps.successors(state, agent, actions, self.key, self.cached_sums, codes, self._sums)
+        return self.steps.successors(state, agent, actions, self.key, self._new_sums, codes, self._sums)
 
     def allowed(self, state: State) -> tuple[int, ...]:
         """The human replies a deterministic model allows at ``state`` (its candidates, filtered)."""
@@ -316,17 +325,17 @@ class Space:
         (:attr:`offer_tables`), in the middle of a cycle.
         """
         d = self.domain
-        at = state.robot_at
-        where = state.where
-        statuses = list(where)
-        if state.offer_obj >= 0:
-            statuses[state.offer_obj] = d.human_offer if state.offer_by == 1 else d.robot_offer
+        where, at, by, obj = state
         if self._exact.packed is not None:  # ``fsum``'s value by one integer sum
-            vals = self._exact.sums(state.offer_by == 0, at, statuses)
+            status = d.human_offer if by == 1 else d.robot_offer
+            vals = self._exact.of_places(by == 0, at, where, obj, status)
             if vals is None:
                 return None
         else:
-            tabs = self.tables if state.offer_by != 0 else self.offer_tables
+            statuses = list(where)
+            if obj >= 0:
+                statuses[obj] = d.human_offer if by == 1 else d.robot_offer
+            tabs = self.tables if by != 0 else self.offer_tables
             vals = [fsum(map(getitem, tab[at], statuses)) for tab in tabs]  # exactly rounded: order-free
             if math.inf in vals:
                 return None
@@ -355,7 +364,7 @@ class Space:
         """Canonical transposition key: equal for states equal up to object/spot symmetry."""
         if not self.symmetric:
             return state
-        return (tuple(sorted(map(getitem, self._codes, state.where))), state.robot_at, state.offer_by)
+        return (sum(map(getitem, self._codes, state.where)), state.robot_at, state.offer_by)
 
     # ---- candidates --------------------------------------------------------------
     def candidates(self, state: State, agent: int) -> tuple[int, ...]:

@@ -75,8 +75,8 @@ class Steps:
     ) -> list[Successor]:
         """The feasible ``actions`` applied to ``state``, dead ends (no sums) left out.
 
-        With ``codes`` (the space's place codes per object) the canonical key is computed
-        here, as :meth:`.Space.key` does for a symmetric space, and ``sums`` (the space's
+        With ``codes`` (the space's key terms per object and place) the canonical key is
+        computed here, as :meth:`.Space.key` does for a symmetric space, and ``sums`` (the space's
         memo by key) is looked up before ``sums_of`` is called; without them ``key_of``
         and ``sums_of`` are asked.
         """
@@ -92,22 +92,29 @@ class Steps:
         memo = sums if sums is not None else {}
         missing = memo  # a sentinel no value can be
         out: list[Successor] = []
+        # with ``codes`` the key's multiset is an integer sum (see :meth:`.Space.key`), so a
+        # successor's is the parent's with one object's term replaced
+        parent = sum(map(getitem, codes, where)) if codes is not None else 0
         for a in actions:
             code, o, x, d = rows[a]
-            w, a2, b, ob = where, at, by, obj
-            if code == SET:
-                w = (*where[:o], x, *where[o + 1 :])
-            elif code == TAKE:
-                w = (*where[:o], x, *where[o + 1 :])
-                b = ob = -1
-            elif code == THROW:
-                w = (*where[:o], throw_to[o], *where[o + 1 :])
+            w, a2, b, ob, m = where, at, by, obj, parent
+            if code <= THROW:  # SET, TAKE, THROW: one object moves
+                if code == THROW:
+                    x = throw_to[o]
+                elif code == TAKE:
+                    b = ob = -1
+                moved = list(where)
+                moved[o] = x
+                w = tuple(moved)
+                if codes is not None:
+                    row = codes[o]
+                    m = parent - row[where[o]] + row[x]
             elif code == GIVE:
                 b, ob = x, o
             elif code == GOTO:
                 a2 = goto_obj[where[x]] if x < n else goto_static[x - n]
             s: State = _new(State, (w, a2, b, ob))
-            key = (tuple(sorted(map(getitem, codes, w))), a2, b) if codes is not None else key_of(s)
+            key = (m, a2, b) if codes is not None else key_of(s)
             sm = memo.get(key, missing)
             if sm is missing:
                 sm = sums_of(s, key)

@@ -62,10 +62,12 @@ def test_packed_sums_equal_fsum(scenario: str, weights: CostWeights) -> None:
             tabs = space.tables if state.offer_by != 0 else space.offer_tables
             expected = [math.fsum(tab[state.robot_at][o][st] for o, st in enumerate(statuses)) for tab in tabs]
             got = space._exact.sums(state.offer_by == 0, state.robot_at, statuses)
+            status = statuses[state.offer_obj] if state.offer_obj >= 0 else 0
+            places = space._exact.of_places(state.offer_by == 0, state.robot_at, state.where, state.offer_obj, status)
             if math.inf in expected:
-                assert got is None
+                assert got is None and places is None
             else:
-                assert got == expected, state
+                assert got == expected == places, state
             assert d.n_status > max(statuses)
 
 
@@ -79,6 +81,46 @@ def test_packed_sums_are_exactly_rounded_on_a_hand_made_table() -> None:
     two = ExactSums([[[[0.1], [0.2], [0.3]]]], [[[[0.1], [0.2], [0.3]]]], 3)
     assert two.sums(False, 0, [0, 0, 0]) == [0.6]
     assert two.sums(True, 0, [0, 0, 0]) == [0.6]
+
+
+def test_the_places_form_swaps_the_offered_objects_term_exactly() -> None:
+    # two objects, statuses 0..2; object 1 offered (status 2) instead of at its place (0):
+    # 0.1 + 0.3 exactly rounded; an infinite place swapped out is no dead end, one swapped in is
+    tabs = [[[[0.1, 0.2, 0.7], [0.25, math.inf, 0.3]]]]
+    exact = ExactSums(tabs, tabs, 2)
+    assert exact.of_places(False, 0, (0, 0), 1, 2) == [math.fsum([0.1, 0.3])]
+    assert exact.of_places(False, 0, (1, 1), 1, 2) == [math.fsum([0.2, 0.3])]
+    assert exact.of_places(False, 0, (1, 1), -1, 2) is None
+    assert exact.of_places(False, 0, (2, 0), 0, 1) == [math.fsum([0.2, 0.25])]
+
+
+@pytest.mark.parametrize("scenario", [*SCENARIOS, "generated:objects=8,bins=2"])
+def test_canonical_keys_are_equal_exactly_for_states_equal_up_to_symmetry(scenario: str) -> None:
+    # the symmetry, stated from its definition: objects of one bin class are interchangeable,
+    # and so are spots of one reach class; a state up to symmetry is the multiset of
+    # (reach class of the place, bin class of the object), with the robot's place and the offerer
+    world = World(scenario)
+    space = Planner(world).space
+    assert space.symmetric
+    seen: dict[object, object] = {}
+    for seed in range(6):
+        for state in walk(world, seed, 40):
+            classes = sorted((space.place_code[p], space.object_class[o]) for o, p in enumerate(state.where))
+            up_to_symmetry = (tuple(classes), state.robot_at, state.offer_by)
+            assert seen.setdefault(space.key(state), up_to_symmetry) == up_to_symmetry, state
+    assert len(set(seen.values())) == len(seen) > 20
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_the_search_keys_successors_as_the_space_does(scenario: str) -> None:
+    world = World(scenario)
+    space = Planner(world).space
+    for seed in range(3):
+        for state in walk(world, seed, 20):
+            for agent in Agent:
+                acts = tuple(int(a) for a in world.feasible_indices(state, agent))
+                for _, nxt, _, key, _ in space._successors(state, int(agent), acts):
+                    assert key == space.key(nxt)
 
 
 def test_negative_values_keep_to_fsum() -> None:
