@@ -34,6 +34,23 @@ def test_streams_times_and_links() -> None:
             assert world.actions(dst.agent)[dst.action].kind is Kind.TAKE
 
 
+def test_a_plan_from_the_humans_turn_times_its_streams_from_the_robot_action_under_way() -> None:
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(2))
+    first = Planner(world).plan(state).plan
+    assert first is not None
+    robot_action = first.cycles[0][0]
+    step = world.step(state, Agent.ROBOT, robot_action)
+    plan = Planner(world).plan(step.state, Agent.HUMAN, robot_action=robot_action).plan
+    assert plan is not None
+    robot, human = plan.streams
+    assert len(human) == len(plan.cycles) and len(robot) == len(plan.cycles) - 1  # no robot step in cycle 0
+    d_human = world.step(step.state, Agent.HUMAN, human[0].action).duration
+    assert (human[0].start, human[0].end) == (0.0, d_human)
+    assert robot[0].cycle == human[1].cycle == 1
+    assert robot[0].start == human[1].start == max(step.duration, d_human)  # the first cycle lasts its longer action
+
+
 def test_waits_for_link_when_the_robot_waits_for_the_human() -> None:
     world = World("generated:objects=1,seed=0,human_only=1.0")
     result = Planner(world).plan(world.initial_state(np.random.default_rng(0)))
