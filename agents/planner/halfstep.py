@@ -58,7 +58,7 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
     weights = space.weights.vector
     wait_r, wait_h = space.wait
     key_of = space.key
-    done = space.table.done
+    is_clean = space.table.is_clean
     gives = space.robot_gives
     final_cost = cycle_cost(weights, world.durations.wait, False, world.durations.wait, False, False)
     sums = space.cached_sums
@@ -117,7 +117,7 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
         if expanded >= budget:
             return SearchOutcome(None, math.inf, expanded, "budget")
         expanded += 1
-        if all(p in done[o] for o, p in enumerate(s.where)):
+        if is_clean(s.where):
             g2 = g + final_cost
             push(heap, (g2, -g2, len(nodes)))
             new_node((s, node, wait_h, None, 2, 0.0, False))

@@ -28,6 +28,7 @@ action kind means: a :class:`~hg_marl.core.Kind` member, its ground actions in
 
 from __future__ import annotations
 
+from operator import contains
 from typing import NamedTuple
 
 from hg_marl.core.durations import Durations
@@ -150,8 +151,7 @@ class RuleTable:
     # ---- state questions -----------------------------------------------------------
     def is_clean(self, where: tuple[int, ...]) -> bool:
         """Every object is in a bin that accepts it."""
-        done = self.done
-        return all(p in done[o] for o, p in enumerate(where))
+        return all(map(contains, self.done, where))
 
     def solves(self, state: State, agent: int, index: int) -> bool:
         """Whether ``agent``'s action ``index`` completes the task in ``state``: the robot waits on a clean table.
