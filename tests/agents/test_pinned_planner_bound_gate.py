@@ -12,9 +12,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 
-from hg_marl.agents.planner import Planner
+from hg_marl.agents.planner import CostWeights, Planner, PlannerConfig
 from hg_marl.core import Agent, State, World
 from tests.agents.test_planner_hand import DURATIONS, ONE_TAPE
 
@@ -39,3 +40,20 @@ def test_bound_is_the_exact_cost_to_go_with_a_half_second_move(
     names = planner.world.action_names[Agent.ROBOT]
     edges = {names[edge.action]: edge.h for edge in planner.space.robot_edges(State((where,), at))}
     assert edges[action] == pytest.approx(to_go)
+
+
+def test_the_humans_holding_weight_raises_the_bound_where_every_method_has_the_human_hold() -> None:
+    # every term of the bound is a nonnegative weight times a nonnegative work, so the bound
+    # cannot fall as the holding weight grows; it rises where some object can only be
+    # disposed of by the human carrying it (paper2015: the objects out of the robot's reach)
+    world = World("paper2015")
+    light = Planner(world, PlannerConfig(weights=CostWeights(human_holding=0.0))).space
+    heavy = Planner(world, PlannerConfig(weights=CostWeights(human_holding=1.0))).space
+    rng = np.random.default_rng(0)
+    rose = 0
+    for _ in range(40):
+        state = world.initial_state(rng)
+        low, high = light.bound(state), heavy.bound(state)
+        assert high >= low, state
+        rose += high > low
+    assert rose > 0

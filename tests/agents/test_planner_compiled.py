@@ -71,6 +71,27 @@ def test_packed_sums_equal_fsum(scenario: str, weights: CostWeights) -> None:
             assert d.n_status > max(statuses)
 
 
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_the_fsum_path_gives_the_packed_sums(scenario: str) -> None:
+    # two implementations of one number: fsum over the tables (the path for tables that do
+    # not pack) and the packed integer sum; besides the walks' states, each agent offering
+    # the first object from its hand
+    world = World(scenario)
+    packed = Planner(world).space
+    fallback = Planner(World(scenario)).space  # a space of its own (spaces are per world)
+    fallback._exact.packed = None
+    checked = 0
+    for seed in range(6):
+        for state in walk(world, seed, 40):
+            offered = [
+                State((world.hand[agent], *state.where[1:]), state.robot_at, int(agent), 0) for agent in Agent
+            ]
+            for s in (state, *offered):
+                assert fallback.sums(s) == packed.sums(s), s
+                checked += packed.sums(s) is not None
+    assert checked > 200
+
+
 def test_packed_sums_are_exactly_rounded_on_a_hand_made_table() -> None:
     # one location, three objects with one status each; 0.1 + 0.2 + 0.3 is 0.6000000000000001
     # summed left to right, 0.6 exactly rounded (what fsum gives)
@@ -112,15 +133,19 @@ def test_canonical_keys_are_equal_exactly_for_states_equal_up_to_symmetry(scenar
 
 
 @pytest.mark.parametrize("scenario", SCENARIOS)
-def test_the_search_keys_successors_as_the_space_does(scenario: str) -> None:
+def test_the_search_keys_and_sums_successors_as_the_space_does(scenario: str) -> None:
+    # twice over the same states: the second pass reads the sums from the memo
     world = World(scenario)
     space = Planner(world).space
-    for seed in range(3):
-        for state in walk(world, seed, 20):
-            for agent in Agent:
-                acts = tuple(int(a) for a in world.feasible_indices(state, agent))
-                for _, nxt, _, key, _ in space._successors(state, int(agent), acts):
-                    assert key == space.key(nxt)
+    fresh = Planner(World(scenario)).space  # no memo shared with ``space``
+    for _ in range(2):
+        for seed in range(3):
+            for state in walk(world, seed, 20):
+                for agent in Agent:
+                    acts = tuple(int(a) for a in world.feasible_indices(state, agent))
+                    for _, nxt, _, key, sums in space._successors(state, int(agent), acts):
+                        assert key == space.key(nxt)
+                        assert sums == fresh.sums(nxt)
 
 
 def test_negative_values_keep_to_fsum() -> None:
