@@ -83,9 +83,7 @@ def test_the_fsum_path_gives_the_packed_sums(scenario: str) -> None:
     checked = 0
     for seed in range(6):
         for state in walk(world, seed, 40):
-            offered = [
-                State((world.hand[agent], *state.where[1:]), state.robot_at, int(agent), 0) for agent in Agent
-            ]
+            offered = [State((world.hand[agent], *state.where[1:]), state.robot_at, int(agent), 0) for agent in Agent]
             for s in (state, *offered):
                 assert fallback.sums(s) == packed.sums(s), s
                 checked += packed.sums(s) is not None
