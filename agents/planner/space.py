@@ -58,6 +58,8 @@ LAMBDAS: tuple[float, ...] = (0.0, 0.25, 0.5, 0.75, 1.0)
 """Mixing weights of robot and human work tried by the bound (five: the edges unroll them)."""
 
 _CACHE_LIMIT = 500_000
+_PICK, _TAKE, _PLACE, _HUMAN = Kind.PICK, Kind.TAKE, Kind.PLACE, int(Agent.HUMAN)
+"""Read once: an enum member read through its class costs a look-up per call in the inner loop."""
 _new = tuple.__new__
 """Builds the edges' ``NamedTuple`` s without their Python-level ``__new__`` (same values)."""
 
@@ -287,8 +289,8 @@ class Space:
         out = self._human_edges.get(state)
         if out is None:
             base = self.base
-            hand_h = self.table.hand[Agent.HUMAN]
-            wait_h = self.wait[Agent.HUMAN]
+            hand_h = self.table.hand[_HUMAN]
+            wait_h = self.wait[_HUMAN]
             takes = self.human_takes
             out = tuple(
                 [
@@ -311,7 +313,7 @@ class Space:
         out = self._allowed.get(state)
         if out is None:
             out = ()
-            for _, choice in self.domain.human_model.choices(self.world, state, self.candidates(state, Agent.HUMAN)):
+            for _, choice in self.domain.human_model.choices(self.world, state, self.candidates(state, _HUMAN)):
                 out += tuple(choice)
             if len(self._allowed) > _CACHE_LIMIT:
                 self._allowed.clear()
@@ -388,7 +390,7 @@ class Space:
         empty = hand not in where
         partner_offer = by >= 0 and by != agent
         rows = self._entries[agent][at]
-        pick, take, place = Kind.PICK, Kind.TAKE, Kind.PLACE
+        pick, take, place = _PICK, _TAKE, _PLACE
         seen: set[object] = set()
         out: list[int] = []
         for o, st in enumerate(statuses):
