@@ -352,7 +352,11 @@ class OracleRobot:
         reason = "off model: the planner's move"
         if self.progress.stalled:
             action = self.progress.move(world, state)
-            reason = "off model: nothing changed for K turns; the progress guard's move"
+            reason = (
+                "off model: nothing moved for P turns; waiting patiently"
+                if self.progress.waiting
+                else "off model: nothing changed for K turns; the progress guard's move"
+            )
         self.last_decision = Decision(
             "planner",
             int(action),

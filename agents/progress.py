@@ -27,6 +27,22 @@ use it: ``planner``, ``hybrid``, ``belief``, ``memory`` and the ``oracle`` off i
   throws, offers or takes), which is what a partner who reacts to the state needs.
 - So a robot repeats a move that changes nothing at most ``K`` times in a row.
 
+**Patience.** A partner may also answer only a robot that keeps still: one who helps once
+the robot has waited for a while, or stayed at one place. A robot that stalls against it
+changes the state at every turn (it walks between two places, or waits and then moves on
+when its plan finds nothing), so the rule above never sees it. What such stalls share is
+that **no object moves and no offer changes**, whatever the robot does. So the guard also
+counts ``quiet``, the consecutive robot turns at which the objects' places and the pending
+offer equal those at the previous robot turn (the robot's own place ignored); when
+``quiet >= P`` the robot waits patiently: it plays ``wait`` until the partner has let
+``W`` of its turns in a row pass without moving anything (while the partner works, the
+robot keeps waiting). A spell in which the partner moved nothing doubles ``W`` for the next
+one (up to :data:`PATIENCE_MAX`), so a partner who needs the robot still for any time is
+met after a few spells. A spell in which it moved something shows that this partner works
+when the robot keeps still: ``W`` is kept, and from then on a spell begins as soon as
+nothing has moved for :data:`PATIENCE_AGAIN` turns. ``quiet`` and ``unchanged`` start again
+after a spell.
+
 Deterministic on purpose: the guard draws no random number, so a robot whose guard never
 fires (the paper's planner and hybrid against the paper's cooperative human, measured in
 ``docs/adaptation.md``) keeps its random stream and its published trajectory.
@@ -37,6 +53,14 @@ the adaptation experiment) is 10 turns, in the paper's random mix against the co
 human (the habit's infeasible proposals meet the human's waits); with K = 12 the guard never
 fires there, so the reproduction's table does not move (with K = 4 it fires and the random
 mix gains 0.8 tasks), and against a partner who refuses every offer a stall costs 12 cycles.
+
+``P`` = :data:`PATIENCE_AFTER` = 100 and ``W`` = :data:`PATIENCE_WAIT` = 40 turns, measured
+(``docs/adaptation.md``): the longest quiet run of the planner, hybrid and belief robots
+over the four bundled scenarios and 15 partners (the family-out ones, the paper's, an idler)
+is 61 turns (``fo_slow_start``, who watches the robot for 120 s), so no spell begins in any
+measured run and each stays as it was (the adversarial human, who hides every object, is
+the exception: nothing can be solved there, spells or not); ``W`` = 40 turns of ``wait``
+is 40 s at the bundled durations.
 """
 
 from __future__ import annotations
@@ -50,6 +74,14 @@ from hg_marl.core import Agent, State, World
 
 PROGRESS_AFTER = 12
 """``K``: robot turns in a row at an unchanged state after which the guard takes a move."""
+PATIENCE_AFTER = 200
+"""``P``: robot turns in a row with no object moved and no offer changed after which the robot waits patiently."""
+PATIENCE_WAIT = 40
+"""``W``'s first value: the robot's turns the partner may let pass without moving anything before a spell ends."""
+PATIENCE_MAX = 8 * PATIENCE_WAIT
+"""The longest ``W``: spells in which the partner moved nothing double it up to here."""
+PATIENCE_AGAIN = 8
+"""``P`` once a spell has seen the partner move something: it works when the robot keeps still."""
 
 
 def guard_option(
@@ -85,29 +117,71 @@ class ProgressGuard:
         self.reset()
 
     def reset(self) -> None:
-        """A new run: no previous state, no guard move taken."""
+        """A new run: no previous state, no guard move taken, no spell of patience."""
         self._last: State | None = None
         self.unchanged = 0
         self.moves = 0
         """Guard moves taken in this run."""
+        self.quiet = 0
+        """Consecutive robot turns with no object moved and no offer changed."""
+        self.waiting = False
+        """Whether the robot is in a spell of patience."""
+        self.patience = PATIENCE_WAIT
+        """``W``: turns the partner may let pass without moving anything before the spell ends."""
+        self.spells = 0
+        """Spells of patience begun in this run."""
+        self.answered = False
+        """Whether a spell has seen the partner move something (then spells begin after ``PATIENCE_AGAIN``)."""
+        self._still = 0
+        self._helped = False
 
     def observe(self, state: State) -> bool:
-        """Count the robot turn at ``state``; return whether the guard fires (``unchanged >= K``)."""
-        self.unchanged = self.unchanged + 1 if state == self._last else 0
+        """Count the robot turn at ``state``; return whether the guard decides it (a spell, or ``unchanged >= K``)."""
+        last = self._last
+        self.unchanged = self.unchanged + 1 if state == last else 0
+        moved = last is None or (state.where, state.offer_by, state.offer_obj) != (
+            last.where,
+            last.offer_by,
+            last.offer_obj,
+        )
+        self.quiet = 0 if moved else self.quiet + 1
         self._last = state
+        if self.waiting:
+            self._helped = self._helped or moved
+            self._still = 0 if moved else self._still + 1
+            if self._still >= self.patience:  # the partner let W turns pass: the robot acts again
+                self.answered = self.answered or self._helped
+                if not self._helped:
+                    self.patience = min(2 * self.patience, PATIENCE_MAX)
+                self.waiting = False
+                self.quiet = self.unchanged = 0
+        elif self.quiet >= (PATIENCE_AGAIN if self.answered else PATIENCE_AFTER):
+            self.waiting, self._still, self._helped = True, 0, False
+            self.spells += 1
         return self.stalled
 
     @property
     def stalled(self) -> bool:
-        """Whether the state has not changed for ``K`` robot turns in a row."""
-        return self.unchanged >= self.after
+        """Whether the guard decides this turn: a spell of patience, or ``K`` unchanged robot turns in a row."""
+        return self.waiting or self.unchanged >= self.after
+
+    @property
+    def reason(self) -> str:
+        """What a decision of the guard's is logged with: ``patience`` or ``no_progress``."""
+        return "patience" if self.waiting else "no_progress"
 
     def move(
         self, world: World, state: State, agent: Agent = Agent.ROBOT, prefer: Sequence[float] | None = None
     ) -> int:
-        """The guard's move at ``state`` (counted when it is not ``wait``); ``prefer``: :func:`guard_option`."""
+        """The guard's move at ``state``: ``wait`` in a spell, else the rotation move (counted).
+
+        ``prefer``: :func:`guard_option`.
+        """
+        wait = world.n_actions(agent) - 1
+        if self.waiting:
+            return wait
         action = guard_option(world, state, self.moves, agent, prefer)
-        self.moves += int(action != world.n_actions(agent) - 1)
+        self.moves += int(action != wait)
         return action
 
 
@@ -140,9 +214,21 @@ class ArrayProgressGuard:
         self.moves = np.zeros(0, dtype=np.int64)
         """Per table, the guard moves taken since its reset."""
         self.fired = np.zeros(0, dtype=bool)
-        """Per table, whether its last robot move was a guard move."""
+        """Per table, whether its last robot move was the guard's (a rotation move or a patient wait)."""
         self.moves_taken = 0
-        """Guard moves over all tables."""
+        """Guard rotation moves over all tables."""
+        self.quiet = np.zeros(0, dtype=np.int64)
+        """Per table, the consecutive robot turns with no object moved and no offer changed."""
+        self.waiting = np.zeros(0, dtype=bool)
+        """Per table, whether its robot is in a spell of patience."""
+        self.patience = np.zeros(0, dtype=np.int64)
+        """Per table, ``W``."""
+        self.spells = np.zeros(0, dtype=np.int64)
+        """Per table, the spells of patience begun since its reset."""
+        self.answered = np.zeros(0, dtype=bool)
+        """Per table, whether a spell has seen the partner move something."""
+        self._still = np.zeros(0, dtype=np.int64)
+        self._helped = np.zeros(0, dtype=bool)
 
     def grow(self, size: int) -> None:
         """Make room for tables ``0..size-1``."""
@@ -156,14 +242,28 @@ class ArrayProgressGuard:
         self.unchanged = np.concatenate([self.unchanged, np.zeros(extra, dtype=np.int64)])
         self.moves = np.concatenate([self.moves, np.zeros(extra, dtype=np.int64)])
         self.fired = np.concatenate([self.fired, np.zeros(extra, dtype=bool)])
+        self.quiet = np.concatenate([self.quiet, np.zeros(extra, dtype=np.int64)])
+        self.waiting = np.concatenate([self.waiting, np.zeros(extra, dtype=bool)])
+        self.patience = np.concatenate([self.patience, np.full(extra, PATIENCE_WAIT, dtype=np.int64)])
+        self.spells = np.concatenate([self.spells, np.zeros(extra, dtype=np.int64)])
+        self.answered = np.concatenate([self.answered, np.zeros(extra, dtype=bool)])
+        self._still = np.concatenate([self._still, np.zeros(extra, dtype=np.int64)])
+        self._helped = np.concatenate([self._helped, np.zeros(extra, dtype=bool)])
 
     def reset_rows(self, rows: np.ndarray) -> None:
-        """Tables ``rows`` start afresh: no previous state, no guard move taken."""
+        """Tables ``rows`` start afresh: no previous state, no guard move taken, no spell of patience."""
         self.grow(int(rows.max(initial=-1)) + 1)
         self._known[rows] = False
         self.unchanged[rows] = 0
         self.moves[rows] = 0
         self.fired[rows] = False
+        self.quiet[rows] = 0
+        self.waiting[rows] = False
+        self.patience[rows] = PATIENCE_WAIT
+        self.spells[rows] = 0
+        self.answered[rows] = False
+        self._still[rows] = 0
+        self._helped[rows] = False
 
     def apply(self, batch: object, proposed: np.ndarray) -> np.ndarray:
         """Count this batch of robot turns; ``proposed`` with the guard's move where it fires.
@@ -176,16 +276,36 @@ class ArrayProgressGuard:
         rows = np.asarray(batch.rows, dtype=np.int64)
         self.grow(int(rows.max(initial=-1)) + 1)
         out = np.array(proposed, dtype=np.int64, copy=True)
-        same = (
+        still = (
             self._known[rows]
             & (self._where[rows] == batch.where).all(axis=1)
-            & (self._at[rows] == batch.robot_at)
             & (self._offer[rows, 0] == batch.offer_by)
             & (self._offer[rows, 1] == batch.offer_obj)
         )
+        same = still & (self._at[rows] == batch.robot_at)
         self.unchanged[rows] = np.where(same, self.unchanged[rows] + 1, 0)
-        fire = self.unchanged[rows] >= self.after
-        self.fired[rows] = fire
+        self.quiet[rows] = np.where(still, self.quiet[rows] + 1, 0)
+        # spells of patience, as ProgressGuard.observe: the partner's stillness ends one
+        waiting = self.waiting[rows]
+        self._helped[rows] |= waiting & ~still
+        self._still[rows] = np.where(waiting, np.where(still, self._still[rows] + 1, 0), self._still[rows])
+        end = waiting & (self._still[rows] >= self.patience[rows])
+        helped = self._helped[rows]
+        self.answered[rows] |= end & helped
+        doubled = np.minimum(2 * self.patience[rows], PATIENCE_MAX)
+        self.patience[rows] = np.where(end & ~helped, doubled, self.patience[rows])
+        self.quiet[rows] = np.where(end, 0, self.quiet[rows])
+        self.unchanged[rows] = np.where(end, 0, self.unchanged[rows])
+        after = np.where(self.answered[rows], PATIENCE_AGAIN, PATIENCE_AFTER)
+        begin = ~waiting & (self.quiet[rows] >= after)
+        waiting = (waiting & ~end) | begin
+        self.waiting[rows] = waiting
+        self._still[rows] = np.where(begin, 0, self._still[rows])
+        self._helped[rows] &= ~begin
+        self.spells[rows] += begin
+        out[waiting] = self.wait
+        fire = ~waiting & (self.unchanged[rows] >= self.after)
+        self.fired[rows] = fire | waiting
         if fire.any():
             sel = np.flatnonzero(fire)
             part = BatchState(batch.where[sel], batch.robot_at[sel], batch.offer_by[sel], batch.offer_obj[sel])

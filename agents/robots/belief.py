@@ -314,7 +314,7 @@ class BeliefRobot(Robot):
             # whatever the belief says, the move it keeps choosing does not work with this partner.
             action = self.progress.move(world, state)
             partner = self.member_names[int(np.argmax(weights))]
-            self.last_decision = Decision("guard", action, reason="no_progress", partner=partner)
+            self.last_decision = Decision("guard", action, reason=self.progress.reason, partner=partner)
             self._prev = (state, action)
             return action
         order = [int(np.argmax(weights))] if self.hedge == "map" else list(range(len(weights)))

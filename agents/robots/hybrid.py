@@ -151,7 +151,7 @@ class HybridRobot(LearningRobot):
                 habit_action=habit_action,
                 decision_time=view.cost,
                 weight_amplitude=habit.weight_amplitude,
-                reason="no_progress" if guarded else "partner_stalled",
+                reason=self.progress.reason if guarded else "partner_stalled",
                 partner=self.partnering.estimate,
             )
             return move

@@ -116,7 +116,7 @@ class MemoryRobot(Robot):
             prefer[int(np.argmax(scores))] = -np.inf
             action = self.progress.move(turn.world, turn.state, self.agent, prefer=prefer)
             wall = time.perf_counter() - t0
-            self._record("guard", action, reason="no_progress", decision_time=self.cost.habit_cost(wall))
+            self._record("guard", action, reason=self.progress.reason, decision_time=self.cost.habit_cost(wall))
             return action
         if self.deterministic:
             action = int(np.argmax(scores))

@@ -67,7 +67,7 @@ class PlannerRobot(Robot):
         if self.progress.observe(turn.state):
             action = self.progress.move(turn.world, turn.state, self.agent)
             self.partnering.acted(turn.state, action)
-            self._record("guard", action, reason="no_progress", partner=self.partnering.estimate)
+            self._record("guard", action, reason=self.progress.reason, partner=self.partnering.estimate)
             return action
         if self.partnering.monitor.stalled:
             action = stall_move(turn, self.rng)
