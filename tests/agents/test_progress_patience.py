@@ -137,3 +137,16 @@ def test_a_planner_meets_a_partner_who_helps_only_a_robot_that_keeps_still() -> 
     reasons = result.log["reason"].astype(str)
     assert (reasons == "patience").sum() >= PATIENCE_WAIT
     assert result.summary["tasks_solved"] > 0
+
+
+def test_reset_rows_makes_room_for_every_table_it_names() -> None:
+    world = World("paper2015")
+    a, _ = _walking(world)
+    for n in (1, 2, 4):
+        guard = ArrayProgressGuard(world)
+        guard.reset_rows(np.arange(n))
+        assert len(guard.waiting) == len(guard.patience) == n and set(guard.patience) == {PATIENCE_WAIT}
+        batch = BatchState(
+            np.array([a.where] * n), np.full(n, a.robot_at), np.full(n, a.offer_by), np.full(n, a.offer_obj)
+        )
+        assert list(guard.apply(batch, np.zeros(n, dtype=int))) == [0] * n
