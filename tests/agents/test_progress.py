@@ -103,6 +103,17 @@ def test_a_robot_that_ranks_its_moves_gets_them_in_its_order() -> None:
     assert guard_option(world, state, 0, prefer=alone) == by_index[0]
 
 
+def batch_of(states: list[State]) -> BatchState:
+    """One batch of tables, table ``i`` at ``states[i]``."""
+    return BatchState(
+        np.array([s.where for s in states]),
+        np.array([s.robot_at for s in states]),
+        np.array([s.offer_by for s in states]),
+        np.array([s.offer_obj for s in states]),
+        rows=np.arange(len(states)),
+    )
+
+
 def test_array_guard_chooses_as_the_scalar_one() -> None:
     world = World("paper2015")
     rng = np.random.default_rng(3)
@@ -114,14 +125,7 @@ def test_array_guard_chooses_as_the_scalar_one() -> None:
     array.reset_rows(np.arange(3))
     wait = world.n_actions(Agent.ROBOT) - 1
     for row in script:
-        batch = BatchState(
-            np.array([s.where for s in row]),
-            np.array([s.robot_at for s in row]),
-            np.array([s.offer_by for s in row]),
-            np.array([s.offer_obj for s in row]),
-            rows=np.arange(3),
-        )
-        out = array.apply(batch, np.full(3, wait))
+        out = array.apply(batch_of(row), np.full(3, wait))
         for i, (g, s) in enumerate(zip(scalars, row, strict=True)):
             expected = g.move(world, s) if g.observe(s) else wait
             assert out[i] == expected

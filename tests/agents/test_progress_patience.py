@@ -24,9 +24,9 @@ from hg_marl.agents.progress import (
 )
 from hg_marl.agents.robots import make_robot
 from hg_marl.core import Agent, State, World
-from hg_marl.envs.batched import BatchState
 from hg_marl.policy import Turn
 from hg_marl.training.runner import RunConfig, run
+from tests.agents.test_progress import batch_of
 
 
 def test_the_patience_values_are_the_documented_ones() -> None:
@@ -88,14 +88,7 @@ def test_the_array_guard_waits_as_the_scalar_one() -> None:
     array.reset_rows(np.arange(3))
     waited = np.zeros(3, dtype=int)
     for row in script:
-        batch = BatchState(
-            np.array([s.where for s in row]),
-            np.array([s.robot_at for s in row]),
-            np.array([s.offer_by for s in row]),
-            np.array([s.offer_obj for s in row]),
-            rows=np.arange(3),
-        )
-        out = array.apply(batch, np.full(3, 0))
+        out = array.apply(batch_of(row), np.full(3, 0))
         for i, (g, s) in enumerate(zip(scalars, row, strict=True)):
             expected = g.move(world, s) if g.observe(s) else 0
             assert out[i] == expected
@@ -146,7 +139,4 @@ def test_reset_rows_makes_room_for_every_table_it_names() -> None:
         guard = ArrayProgressGuard(world)
         guard.reset_rows(np.arange(n))
         assert len(guard.waiting) == len(guard.patience) == n and set(guard.patience) == {PATIENCE_WAIT}
-        batch = BatchState(
-            np.array([a.where] * n), np.full(n, a.robot_at), np.full(n, a.offer_by), np.full(n, a.offer_obj)
-        )
-        assert list(guard.apply(batch, np.zeros(n, dtype=int))) == [0] * n
+        assert list(guard.apply(batch_of([a] * n), np.zeros(n, dtype=int))) == [0] * n
