@@ -328,15 +328,15 @@ class Space:
         """
         d = self.domain
         where, at, by, obj = state
+        status = d.human_offer if by == 1 else d.robot_offer  # the offered object's, if any
         if self._exact.packed is not None:  # ``fsum``'s value by one integer sum
-            status = d.human_offer if by == 1 else d.robot_offer
             vals = self._exact.of_places(by == 0, at, where, obj, status)
             if vals is None:
                 return None
         else:
             statuses = list(where)
             if obj >= 0:
-                statuses[obj] = d.human_offer if by == 1 else d.robot_offer
+                statuses[obj] = status
             tabs = self.tables if by != 0 else self.offer_tables
             vals = [fsum(map(getitem, tab[at], statuses)) for tab in tabs]  # exactly rounded: order-free
             if math.inf in vals:
