@@ -186,6 +186,27 @@ class ProgressGuard:
         return action
 
 
+_PER_TABLE: dict[str, int | bool] = {
+    "_where": 0,
+    "_at": 0,
+    "_offer": 0,
+    "_known": False,
+    "unchanged": 0,
+    "moves": 0,
+    "fired": False,
+    "quiet": 0,
+    "waiting": False,
+    "patience": PATIENCE_WAIT,
+    "spells": 0,
+    "answered": False,
+    "_still": 0,
+    "_helped": False,
+}
+"""The array guard's per-table arrays and a fresh table's value in each."""
+_RESET = tuple(name for name in _PER_TABLE if name not in ("_where", "_at", "_offer"))
+"""What :meth:`ArrayProgressGuard.reset_rows` sets afresh (the last state is unknown, so it is not read)."""
+
+
 class ArrayProgressGuard:
     """The array form: one counter per table of a batch (the compiled robot's seat).
 
@@ -232,39 +253,19 @@ class ArrayProgressGuard:
         self._helped = np.zeros(0, dtype=bool)
 
     def grow(self, size: int) -> None:
-        """Make room for tables ``0..size-1``."""
-        if len(self._at) >= size:
-            return
+        """Make room for tables ``0..size-1``, each as :meth:`reset_rows` leaves it."""
         extra = size - len(self._at)
-        self._where = np.concatenate([self._where, np.zeros((extra, self._where.shape[1]), dtype=np.int64)])
-        self._at = np.concatenate([self._at, np.zeros(extra, dtype=np.int64)])
-        self._offer = np.concatenate([self._offer, np.zeros((extra, 2), dtype=np.int64)])
-        self._known = np.concatenate([self._known, np.zeros(extra, dtype=bool)])
-        self.unchanged = np.concatenate([self.unchanged, np.zeros(extra, dtype=np.int64)])
-        self.moves = np.concatenate([self.moves, np.zeros(extra, dtype=np.int64)])
-        self.fired = np.concatenate([self.fired, np.zeros(extra, dtype=bool)])
-        self.quiet = np.concatenate([self.quiet, np.zeros(extra, dtype=np.int64)])
-        self.waiting = np.concatenate([self.waiting, np.zeros(extra, dtype=bool)])
-        self.patience = np.concatenate([self.patience, np.full(extra, PATIENCE_WAIT, dtype=np.int64)])
-        self.spells = np.concatenate([self.spells, np.zeros(extra, dtype=np.int64)])
-        self.answered = np.concatenate([self.answered, np.zeros(extra, dtype=bool)])
-        self._still = np.concatenate([self._still, np.zeros(extra, dtype=np.int64)])
-        self._helped = np.concatenate([self._helped, np.zeros(extra, dtype=bool)])
+        if extra <= 0:
+            return
+        for name, fresh in _PER_TABLE.items():
+            have = getattr(self, name)
+            setattr(self, name, np.concatenate([have, np.full((extra, *have.shape[1:]), fresh, dtype=have.dtype)]))
 
     def reset_rows(self, rows: np.ndarray) -> None:
         """Tables ``rows`` start afresh: no previous state, no guard move taken, no spell of patience."""
         self.grow(int(rows.max(initial=-1)) + 1)
-        self._known[rows] = False
-        self.unchanged[rows] = 0
-        self.moves[rows] = 0
-        self.fired[rows] = False
-        self.quiet[rows] = 0
-        self.waiting[rows] = False
-        self.patience[rows] = PATIENCE_WAIT
-        self.spells[rows] = 0
-        self.answered[rows] = False
-        self._still[rows] = 0
-        self._helped[rows] = False
+        for name in _RESET:
+            getattr(self, name)[rows] = _PER_TABLE[name]
 
     def apply(self, batch: object, proposed: np.ndarray) -> np.ndarray:
         """Count this batch of robot turns; ``proposed`` with the guard's move where it fires.

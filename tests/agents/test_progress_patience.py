@@ -140,3 +140,7 @@ def test_reset_rows_makes_room_for_every_table_it_names() -> None:
         guard.reset_rows(np.arange(n))
         assert len(guard.waiting) == len(guard.patience) == n and set(guard.patience) == {PATIENCE_WAIT}
         assert list(guard.apply(batch_of([a] * n), np.zeros(n, dtype=int))) == [0] * n
+    grown = ArrayProgressGuard(world)
+    grown.reset_rows(np.arange(3))
+    grown.reset_rows(np.arange(5, 7))  # more tables later: room for 0..6, the new ones fresh
+    assert len(grown.waiting) == len(grown._where) == 7 and set(grown.patience) == {PATIENCE_WAIT}
