@@ -748,7 +748,111 @@ FRESH6 = (
 )
 
 
-ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6
+# Seventh round: bugs written from the sources (not their tests) of the modules changed in the
+# latest rounds, each run against its module's gate tests from modules.toml.
+FRESH7 = (
+    Bug(
+        "fresh7 progress: a spell of patience ends with unchanged still counting the spell's waits",
+        "agents/progress.py",
+        "self.quiet = self.unchanged = 0",
+        "self.quiet = 0",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh7 progress: the array guard marks a partner as answering after any spell, helped or not",
+        "agents/progress.py",
+        "self.answered[rows] |= end & helped",
+        "self.answered[rows] |= end",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh7 planner bound: a place on an occupied spot kept among the candidates",
+        "agents/planner/space.py",
+        "if where[o] != hand or sig in seen or spot in where:",
+        "if where[o] != hand or sig in seen:",
+        gate("planner_bound"),
+    ),
+    Bug(
+        "fresh7 planner steps: a throw leaves the object in the hand",
+        "agents/planner/steps.py",
+        "if code <= THROW:",
+        "if code < THROW:",
+        gate("planner_steps"),
+    ),
+    Bug(
+        "fresh7 exact sums: object 0's offer status not swapped in",
+        "agents/planner/exactsum.py",
+        "if obj >= 0:",
+        "if obj > 0:",
+        gate("planner_exactsum"),
+    ),
+    Bug(
+        "fresh7 planner costs: an answered give not counted as robot activity",
+        "agents/planner/costs.py",
+        "return kind is not Kind.GIVE or world.actions(Agent.HUMAN)[human_action].kind is Kind.TAKE",
+        "return kind is not Kind.GIVE",
+        gate("planner_costs"),
+    ),
+    Bug(
+        "fresh7 planner tables: picks on spots of one class deduplicated across object classes",
+        "agents/planner/tables.py",
+        "entries.append((kind, i, (kind, space.spot_class[st], space.object_class[o]), -1))",
+        "entries.append((kind, i, (kind, space.spot_class[st]), -1))",
+        gate("planner_tables"),
+    ),
+    Bug(
+        "fresh7 batch rules: a goto to the first bin (or the human) led where the last object is",
+        "hg_marl/core/batch.py",
+        "at[g] = np.where(t < n, to_obj, to_static)",
+        "at[g] = np.where(t <= n, to_obj, to_static)",
+        gate("batch_rules"),
+    ),
+    Bug(
+        "fresh7 keyed: a repeat of the newest key counted as a first occurrence",
+        "agents/models/keyed.py",
+        "return uniq, np.flatnonzero(codes > seen)[order], inverse",
+        "return uniq, np.flatnonzero(codes >= seen)[order], inverse",
+        gate("model_keyed"),
+    ),
+    Bug(
+        "fresh7 solve: a self-looping pair's cost not divided by its leaving probability",
+        "agents/models/solve.py",
+        "return matrix, cost * scale, looping",
+        "return matrix, cost, looping",
+        gate("model_solve"),
+    ),
+    Bug(
+        "fresh7 lazy: the last partner's entry positions returned for any partner",
+        "agents/models/lazy.py",
+        "if self._last is not None and self._last[0] == partner:",
+        "if self._last is not None:",
+        gate("model_lazy"),
+    ),
+    Bug(
+        "fresh7 equivariant: new canonical keys asked at the state of their rank, not their first row",
+        "agents/models/equivariant.py",
+        "rows = first[new].tolist()",
+        "rows = new.tolist()",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh7 partners: the robot-side bonus given to the objects the robot cannot reach",
+        "agents/models/partners.py",
+        "bonus = np.where(side, h.robot_side, 0.0) + bonus_colour[o]",
+        "bonus = np.where(side, 0.0, h.robot_side) + bonus_colour[o]",
+        gate("model_partners"),
+    ),
+    Bug(
+        "fresh7 belief: the refusal verdict lapses one answer early",
+        "agents/robots/belief.py",
+        "self._since_offer <= REFUSALS_WITHIN",
+        "self._since_offer < REFUSALS_WITHIN",
+        gate("belief"),
+    ),
+)
+
+
+ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:

@@ -143,3 +143,32 @@ def test_refusals_is_a_boolean_option(population: str) -> None:
         make_robot("belief", population=population, refusals="maybe")
     with pytest.raises(RobotError, match=r"belief\.refusals"):
         BeliefRobot(population=population, refusals="maybe")
+
+
+def test_the_verdict_holds_while_the_last_offer_is_at_most_refusals_within_answers_old(population: str) -> None:
+    """Refused offers until the run is less likely than 1/500: the verdict holds at the last
+    offer and for 30 answers after it (each at a state with nothing offered), and lapses at
+    the 31st (the docstring's "at most REFUSALS_WITHIN answers old")."""
+    assert REFUSALS_WITHIN == 30
+    robot = BeliefRobot(population=population, cache="")
+    world = World(TABLE)
+    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
+    state = world.initial_state(np.random.default_rng(0))
+    acts = world.actions(Agent.ROBOT)
+    pick = next(i for i in world.feasible_indices(state, Agent.ROBOT) if acts[i].kind is Kind.PICK)
+    held = world.step(state, Agent.ROBOT, pick).state
+    give = next(i for i in world.feasible_indices(held, Agent.ROBOT) if acts[i].kind is Kind.GIVE)
+    mid = world.step(held, Agent.ROBOT, give).state
+    wait = world.n_actions(Agent.HUMAN) - 1
+    refused = 0
+    while not robot.refuses_offers():
+        robot._count_refusal(world, mid, give, wait)
+        robot.posterior.observe(world, mid, give, wait)
+        refused += 1
+        assert refused < 100
+    assert robot._refusal_run < REFUSAL_LIKELIHOOD
+    assert held.offer_by != int(Agent.ROBOT)  # nothing offered: an answer there only ages the last offer
+    for answers in range(1, 32):
+        robot._count_refusal(world, held, wait, wait)
+        assert robot._since_offer == answers
+        assert robot.refuses_offers() is (answers <= 30), answers
