@@ -7,6 +7,10 @@ import io
 import re
 import sys
 
+HANG_GUARD = 600
+"""Seconds before a hung subprocess is killed: never what decides a test (a refusal takes
+seconds on a quiet machine; a loaded one may take many times that, and must still pass)."""
+
 
 def run_main(args: list[str]) -> tuple[int, str, str]:
     """Run ``hg-marl ARGS`` through ``main``; return exit code, stdout, stderr."""

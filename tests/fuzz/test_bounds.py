@@ -29,7 +29,7 @@ from hg_marl.agents.humans.population import MAX_MEMBERS
 from hg_marl.core.errors import MAX_DIGITS
 from hg_marl.training.limits import MAX_RUNS, MAX_SEEDS
 from hg_marl.training.runner import MAX_CYCLES
-from tests.cli_helpers import run_main
+from tests.cli_helpers import HANG_GUARD, run_main
 from tests.fuzz.test_probe import PAPER, check_refused, files_under, with_durations
 
 DOCS = Path(__file__).parents[2] / "docs" / "inputs.md"
@@ -264,8 +264,6 @@ MODEL_BOMBS: dict[str, tuple[Callable[[Path], list[str]], str]] = {
 # ---- real processes: a 2 GiB address space; the timeout only guards against a hang ----------
 
 LIMIT_BYTES = 2 << 30
-HANG_GUARD = 600
-"""Seconds before a hung process is killed; never what decides the test (a refusal takes seconds)."""
 
 
 def _limit() -> None:

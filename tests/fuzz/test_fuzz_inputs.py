@@ -29,7 +29,7 @@ from hg_marl.core.errors import HgMarlError
 from hg_marl.core.scenario import Scenario, load_scenario
 from tests.agents.test_trace_validation import header as trace_header
 from tests.agents.test_trace_validation import step as trace_step
-from tests.cli_helpers import error_lines, run_main
+from tests.cli_helpers import HANG_GUARD, error_lines, run_main
 
 EXAMPLES = 150
 """Examples per property (hypothesis); the report counts them."""
@@ -296,7 +296,7 @@ def test_nasty_inputs_stay_within_memory(args: list[str]) -> None:
         [sys.executable, "-c", "from hg_marl.training.cli import main; main()", *args],
         capture_output=True,
         text=True,
-        timeout=120,
+        timeout=HANG_GUARD,
         preexec_fn=_limit_memory,
     )
     lines = error_lines(proc.stderr)
