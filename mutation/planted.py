@@ -852,7 +852,111 @@ FRESH7 = (
 )
 
 
-ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7
+# Eighth round: bugs written from the sources (not their tests): the five gated modules no round
+# had planted in, and nine planted in least, each run against its module's gate tests from modules.toml.
+FRESH8 = (
+    Bug(
+        "fresh8 model format: a header's JSON error reports the column as its line",
+        "agents/model_format.py",
+        'return ModelFileError(f"{path}:{exc.lineno}: not valid JSON ({exc.msg})")',
+        'return ModelFileError(f"{path}:{exc.colno}: not valid JSON ({exc.msg})")',
+        gate("model_format"),
+    ),
+    Bug(
+        "fresh8 model sb3: a counter at zero refused as not non-negative",
+        "agents/model_sb3.py",
+        "if not isinstance(value, int) or isinstance(value, bool) or value < 0:",
+        "if not isinstance(value, int) or isinstance(value, bool) or value <= 0:",
+        gate("model_sb3"),
+    ),
+    Bug(
+        "fresh8 registry: Python-only parameters listed among those a spec can set",
+        "hg_marl/core/registry.py",
+        "if name not in typed or typed[name] is PYTHON_ONLY:",
+        "if name not in typed:",
+        gate("registry"),
+    ),
+    Bug(
+        "fresh8 atomic: a written file left at mkstemp's 0600, not readable by others",
+        "hg_marl/core/atomic.py",
+        "        os.chmod(tmp, FILE_MODE)\n",
+        "",
+        gate("atomic"),
+    ),
+    Bug(
+        "fresh8 scenario file: a key's line reported one line early",
+        "hg_marl/core/scenario_file.py",
+        "            return i + 1\n",
+        "            return i\n",
+        gate("scenario_file"),
+    ),
+    Bug(
+        "fresh8 model limits: a linear softmax's W expected as (facts, actions)",
+        "agents/model_limits.py",
+        'return {"W": (n_a, n_f), "b": (n_a,)}',
+        'return {"W": (n_f, n_a), "b": (n_a,)}',
+        gate("model_limits"),
+    ),
+    Bug(
+        "fresh8 relabel: the offered object mapped through the relabelling, not its inverse",
+        "hg_marl/core/relabel.py",
+        "offer_obj = orig.index(state.offer_obj) if state.offer_obj >= 0 else -1",
+        "offer_obj = orig[state.offer_obj] if state.offer_obj >= 0 else -1",
+        gate("relabel"),
+    ),
+    Bug(
+        "fresh8 scenario model: every layout group draws from all the objects, not those left",
+        "hg_marl/core/scenario_model.py",
+        "        left -= group.count\n",
+        "",
+        gate("scenario_model"),
+    ),
+    Bug(
+        "fresh8 scenario generated: as many spots as objects refused",
+        "hg_marl/core/scenario_generated.py",
+        "if objects < 1 or n_spots < objects or locations < 1 or bins < 1:",
+        "if objects < 1 or n_spots <= objects or locations < 1 or bins < 1:",
+        gate("scenario_generated"),
+    ),
+    Bug(
+        "fresh8 limits: a count of zero accepted by default",
+        "training/limits.py",
+        "*, minimum: int = 1, error: type[HgMarlError] = ConfigError",
+        "*, minimum: int = 0, error: type[HgMarlError] = ConfigError",
+        gate("limits"),
+    ),
+    Bug(
+        "fresh8 outputs: an upper-case file ending refused",
+        "training/outputs.py",
+        "if suffixes and path.suffix.lower() not in suffixes:",
+        "if suffixes and path.suffix not in suffixes:",
+        gate("outputs"),
+    ),
+    Bug(
+        "fresh8 stalls: a task's solve time read from the decision before it",
+        "training/stalls.py",
+        "zip(times[1:], solved[:-1], solved[1:], strict=True)",
+        "zip(times[:-1], solved[:-1], solved[1:], strict=True)",
+        gate("stalls"),
+    ),
+    Bug(
+        "fresh8 server limits: uvicorn's concurrency cap one connection short",
+        "training/play/server_limits.py",
+        '"limit_concurrency": self.max_connections + 1,',
+        '"limit_concurrency": self.max_connections,',
+        gate("server_limits"),
+    ),
+    Bug(
+        "fresh8 vector envs: the human seat's compiled flag inverted",
+        "agents/vector_envs.py",
+        "partner = compiled_robots(world, robot, n, cache, progress) if compiled else LiveRobots(world, robot, n)",
+        "partner = compiled_robots(world, robot, n, cache, progress) if not compiled else LiveRobots(world, robot, n)",
+        gate("vector_envs"),
+    ),
+)
+
+
+ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7 + FRESH8
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:

@@ -37,3 +37,22 @@ def test_a_malformed_spec_is_the_registrys_error(text: str, message: str) -> Non
         TOYS.make(text)
     assert str(info.value) == message
     assert TOYS.make("toy:speed=2").speed == 2.0
+
+
+class Learner:
+    """A Python object a spec cannot write."""
+
+
+class Trained:
+    name = "trained"
+
+    def __init__(self, speed: float = 1.5, learner: Learner | None = None) -> None:
+        self.speed, self.learner = speed, learner
+
+
+def test_a_python_only_parameter_is_not_listed_among_those_a_spec_can_set() -> None:
+    # ``learner`` takes a Python object (its default None, annotated with a project class):
+    # a spec cannot set it, so the listing leaves it out; ``speed`` is listed with its default
+    entry = Registry("toy", ConfigError, [Trained])["trained"]
+    assert list(entry.params) == ["speed"]
+    assert entry.params["speed"].default == 1.5

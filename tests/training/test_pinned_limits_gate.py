@@ -36,3 +36,10 @@ def test_a_count_at_its_limit_passes_and_one_more_names_the_limit() -> None:
     assert check_runs(MAX_RUNS, "study") == MAX_RUNS
     with pytest.raises(StudyError, match=rf"^study: {MAX_RUNS + 1:,} runs, over the limit of {MAX_RUNS:,} runs$"):
         check_runs(MAX_RUNS + 1, "study", StudyError)
+
+
+def test_a_count_of_zero_is_refused_unless_its_minimum_says_so() -> None:
+    # a count is at least 1 by default (no seeds, no runs: nothing to do is bad input)
+    assert check_count(1, "--seeds", 7) == 1
+    with pytest.raises(ConfigError, match=r"^--seeds: expected an integer >= 1, got 0$"):
+        check_count(0, "--seeds", 7)
