@@ -956,7 +956,111 @@ FRESH8 = (
 )
 
 
-ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7 + FRESH8
+# Ninth round: bugs written from the sources (not their tests) in the gated modules planted in
+# least, each run against its module's gate tests from modules.toml.
+FRESH9 = (
+    Bug(
+        "fresh9 aggregate: intervals from exactly MIN_CI_SEEDS seeds per task flagged as too coarse",
+        "training/aggregate.py",
+        "    if seeds < MIN_CI_SEEDS:",
+        "    if seeds <= MIN_CI_SEEDS:",
+        gate("aggregate"),
+    ),
+    Bug(
+        "fresh9 report: a pair whose CI lies wholly below one half not counted as clear",
+        "training/report.py",
+        '(v["ci"][0] > 0.5 or v["ci"][1] < 0.5)',
+        '(v["ci"][0] > 0.5)',
+        gate("report"),
+    ),
+    Bug(
+        "fresh9 adaptation: runs that never recover counted among the recovered",
+        "training/adaptation.py",
+        '"recovered_runs": len(reached),',
+        '"recovered_runs": len(recover),',
+        gate("adaptation"),
+    ),
+    Bug(
+        "fresh9 switching: a robot marked as losing when the low end of its difference CI is below 0",
+        "training/switching.py",
+        '"loses": d["high"] is not None and d["high"] < 0.0,',
+        '"loses": d["high"] is not None and d["low"] < 0.0,',
+        gate("switching"),
+    ),
+    Bug(
+        "fresh9 headroom report: a human listed twice in --humans not refused",
+        "training/headroom.py",
+        '    if len(set(humans)) != len(humans):\n        raise ConfigError("--humans: a human is listed twice")\n',
+        "",
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh9 population generator: a selected member read by its place among the kept, not its candidate index",
+        "training/population_gen.py",
+        "            c = kept[i]\n",
+        "            c = i\n",
+        gate("population_gen"),
+    ),
+    Bug(
+        "fresh9 heldout curve: a partner without BR-Prox counted as 0 in its split's mean",
+        "training/baselines/heldout_curve.py",
+        "scored = [float(c) for c in cells if c]",
+        "scored = [float(c) if c else 0.0 for c in cells]",
+        gate("heldout_curve"),
+    ),
+    Bug(
+        "fresh9 sweep: on_done called once per key, not once per job sharing it",
+        "training/sweep.py",
+        "        if on_done:\n            for i in positions[key]:\n                on_done(jobs[i], stored)\n",
+        "        if on_done:\n            on_done(jobs[first[key]], stored)\n",
+        gate("sweep"),
+    ),
+    Bug(
+        "fresh9 store: an entry whose log no longer matches its sha256 used",
+        "training/store.py",
+        'if not log_path.is_file() or _sha256(log_path) != data.get("log_sha256"):',
+        "if not log_path.is_file():",
+        gate("store"),
+    ),
+    Bug(
+        "fresh9 oracle: cache key without failed_actions",
+        "agents/oracle.py",
+        '            "failed_actions": failed_actions,\n',
+        "",
+        gate("oracle"),
+    ),
+    Bug(
+        "fresh9 compiled: cache key without the world's durations",
+        "agents/compiled.py",
+        '        "durations": repr(world.durations),\n',
+        "",
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh9 batched: a table won on its last allowed cycle also reported truncated",
+        "hg_marl/envs/batched.py",
+        "return done, truncate & ~done",
+        "return done, truncate",
+        gate("batched"),
+    ),
+    Bug(
+        "fresh9 headroom: a held-out partner without an optimum makes the headroom NaN",
+        "agents/headroom.py",
+        "        values = [v for v in values if not np.isnan(v)]\n",
+        "",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh9 memory policy: a model file records the default history cap, not the one trained with",
+        "agents/memory_policy.py",
+        '"history_cap": cap,',
+        '"history_cap": DEFAULT_CAP,',
+        gate("memory_policy"),
+    ),
+)
+
+
+ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7 + FRESH8 + FRESH9
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:

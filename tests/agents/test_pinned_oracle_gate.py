@@ -80,3 +80,14 @@ def test_a_robot_reset_on_another_scenario_solves_that_scenario() -> None:
     assert robot.result.scenario == "forced_coordination"
     assert robot.result.rate_per_hour == pytest.approx(oracle_rate("forced_coordination", "cooperative").rate_per_hour)
     assert robot.result.rate_per_hour != pytest.approx(oracle_rate("paper2015", "cooperative").rate_per_hour)
+
+
+def test_the_cache_keeps_apart_results_with_and_without_failed_actions(tmp_path: Path) -> None:
+    # the robot's infeasible actions (0.2 s no-ops) are pairs of the model only with
+    # failed_actions=True: the two models differ, and a cached one never answers for the other
+    world = World(TINY)
+    fresh = {flag: oracle_rate(world, "cooperative", failed_actions=flag) for flag in (True, False)}
+    assert fresh[True].n_transitions > fresh[False].n_transitions
+    for flag in (True, False, True):
+        got = oracle_rate(world, "cooperative", failed_actions=flag, cache=tmp_path)
+        assert (got.n_transitions, got.rate_per_hour) == (fresh[flag].n_transitions, fresh[flag].rate_per_hour)

@@ -68,18 +68,26 @@ def test_features_are_event_frequencies_per_cycle_and_the_mean_rate() -> None:
     assert features([], shared) == {**dict.fromkeys(EVENTS, 0.0), "tasks_per_hour": 0.0}
 
 
-@pytest.fixture()
-def generated(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> tuple[GeneratorConfig, Any]:
+def _generate(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, actions: list[str], rates: list[float]
+) -> tuple[GeneratorConfig, Any]:
+    """Four candidates whose runs play ``actions[c]`` every cycle at ``rates[c]`` tasks/h; 2 held out, 1 to train."""
+
     def run_jobs(jobs: list[Any], store: Any, backend: Any, on_done: Any) -> tuple[list[FakeRun], None]:
         out = []
         for job in jobs:
             c = int(job.label.split()[1])
-            out.append(FakeRun([ACTIONS[c]] * 4, RATES[c]))
+            out.append(FakeRun([actions[c]] * 4, rates[c]))
         return out, None
 
     monkeypatch.setattr("hg_marl.training.sweep.run_jobs", run_jobs)
     config = GeneratorConfig(candidates=4, sizes={"held_out": 2, "train": 1}, robots=("planner",), seeds=1)
     return config, generate(config, Store(tmp_path / "store"))
+
+
+@pytest.fixture()
+def generated(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> tuple[GeneratorConfig, Any]:
+    return _generate(monkeypatch, tmp_path, ACTIONS, RATES)
 
 
 def _scaled() -> np.ndarray:
@@ -178,3 +186,19 @@ def test_each_reference_robots_features_come_from_its_own_runs(monkeypatch: pyte
         c = int(m["name"][1:])
         assert m["behaviour"]["planner.tasks_per_hour"] == pytest.approx(150.0 + c)
         assert m["behaviour"]["random.tasks_per_hour"] == pytest.approx(20.0 + c)
+
+
+def test_members_are_named_and_described_by_their_own_candidate_when_an_earlier_one_is_dropped(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    # the same candidates with the one that solves nothing first: c0 is dropped, so the kept
+    # candidates are c1, c2, c3 and the selection (as above) takes c1 to train, c2 and c3 held out
+    _, result = _generate(monkeypatch, tmp_path, [ACTIONS[3], *ACTIONS[:3]], [RATES[3], *RATES[:3]])
+    members = {m["name"]: m for m in result.members}
+    assert {name: m["split"] for name, m in members.items()} == {"m01": "train", "m02": "held_out", "m03": "held_out"}
+    assert [members[name]["behaviour"]["planner.tasks_per_hour"] for name in ("m01", "m02", "m03")] == [
+        100.0,
+        300.0,
+        150.0,
+    ]
+    assert result.dropped[0] not in [m["spec"] for m in result.members]

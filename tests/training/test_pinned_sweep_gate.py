@@ -66,3 +66,14 @@ def test_by_default_a_sweep_runs_its_jobs_in_this_process(tmp_path: Path, monkey
     monkeypatch.setattr(sweep_module, "LocalBackend", Recording)
     run_sweep(JOBS[:1], tmp_path)
     assert asked == [1]
+
+
+def test_each_job_is_reported_once_even_when_two_jobs_share_a_key(tmp_path: Path) -> None:
+    # job 0 listed twice (equal keys: run once); on_done hears of every job of the list, once
+    # each, whether the run was made now or found in the store, and the results keep job order
+    jobs = [JOBS[0], JOBS[1], JOBS[0], JOBS[2]]
+    for attempt in ("run", "found"):
+        heard: list[int] = []
+        out = run_sweep(jobs, tmp_path, on_done=lambda job, _: heard.append(job.seed))
+        assert sorted(heard) == [0, 0, 1, 2], attempt
+        assert [s["job"]["seed"] for s in out] == [0, 1, 0, 2] and out[0] == out[2], attempt

@@ -90,11 +90,9 @@ def test_jobs_play_the_members_specs_on_the_schedule() -> None:
     assert jobs[0].label == "switch_A_B_400_planner"
 
 
-def test_run_switching_pairs_each_robot_with_the_baseline_by_seed(
-    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
-) -> None:
-    """Stand-ins: the planner solves 3 tasks on seed 0 and 5 on seed 1; "other" solves 1 on each seed."""
-    solved = {("planner", 0): [500.0, 600.0, 900.0], ("planner", 1): [100.0, 200.0, 500.0, 600.0, 900.0]}
+def _stand_ins(monkeypatch: pytest.MonkeyPatch, solved: dict[tuple[str, int], list[float]]) -> None:
+    """Runs replaced by logs that solve a task at each of ``solved[(robot, seed)]``'s times (one
+    at 1050 s where a pair is not listed); A at 0 tasks/h, B at 36."""
 
     def log_of(job: Any, out: Path) -> pd.DataFrame:
         log = _idle_log(1100.0)
@@ -111,6 +109,15 @@ def test_run_switching_pairs_each_robot_with_the_baseline_by_seed(
     monkeypatch.setattr(switching, "load_log", log_of)
     monkeypatch.setattr(
         "hg_marl.agents.oracle.oracle_rate", lambda s, spec: Rate({"lazy": 0.0, "cooperative": 36.0}[spec])
+    )
+
+
+def test_run_switching_pairs_each_robot_with_the_baseline_by_seed(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """Stand-ins: the planner solves 3 tasks on seed 0 and 5 on seed 1; "other" solves 1 on each seed."""
+    _stand_ins(
+        monkeypatch, {("planner", 0): [500.0, 600.0, 900.0], ("planner", 1): [100.0, 200.0, 500.0, 600.0, 900.0]}
     )
     summary = switching.run_switching(CONFIG, tmp_path)
     assert summary["oracle_rate_per_hour"] == {"A": 0.0, "B": 36.0} and summary["baseline"] == "planner"
@@ -129,3 +136,24 @@ def test_run_switching_pairs_each_robot_with_the_baseline_by_seed(
     table = switching_table(summary).splitlines()
     assert len(table) == 4 and len(table[1]) == len(table[0]) and set(table[1]) == {"-"}
     assert "vs planner" in table[0] and table[3].endswith("  LOSES") and not table[2].endswith("LOSES")
+
+
+def test_a_robot_loses_only_when_its_whole_difference_ci_is_below_zero(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """The planner solves 3 tasks on each seed; "other" 1 and 5: paired differences -2 and +2,
+    a CI from -2 to +2 that holds 0, so "other" is not marked as losing (its low end is below 0)."""
+    _stand_ins(
+        monkeypatch,
+        {
+            ("planner", 0): [500.0, 600.0, 900.0],
+            ("planner", 1): [500.0, 600.0, 900.0],
+            ("other", 1): [100.0, 200.0, 500.0, 600.0, 900.0],
+        },
+    )
+    cells = {c["robot"]: c for c in switching.run_switching(CONFIG, tmp_path)["cells"]}
+    other = cells["other"]["difference"]
+    assert other["mean"] == pytest.approx(0.0)
+    assert other["low"] == pytest.approx(-2.0) and other["high"] == pytest.approx(2.0)
+    assert cells["other"]["loses"] is False
+    assert "LOSES" not in switching_table(switching.run_switching(CONFIG, tmp_path))
