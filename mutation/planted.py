@@ -1060,7 +1060,113 @@ FRESH9 = (
 )
 
 
-ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7 + FRESH8 + FRESH9
+# Tenth round: bugs written from the sources (not their tests) in gated modules the last three
+# rounds left alone, each run against its module's gate tests from modules.toml.
+FRESH10 = (
+    Bug(
+        "fresh10 world: a pick's event names the picker's hand as the place it was picked from",
+        "hg_marl/core/world.py",
+        "self.place_name(state.where[o])",
+        "self.place_name(nxt.where[o])",
+        gate("world"),
+    ),
+    Bug(
+        "fresh10 entropy: a state's filter stores the raw distribution, not the filtered one",
+        "agents/meta/entropy.py",
+        "self.values[key] = p",
+        "self.values[key] = p_new",
+        gate("entropy"),
+    ),
+    Bug(
+        "fresh10 entropy and cost: the planner's cost in a state it never planned in taken as 0, not its overall filtered cost",
+        "agents/meta/entropy_cost.py",
+        "c_planner = self._planner_cost.get(key, self._planner_cost_all)",
+        "c_planner = self._planner_cost.get(key, 0.0)",
+        gate("entropy_cost"),
+    ),
+    Bug(
+        "fresh10 habit: a saved habit leaves out its visit counts, so a reloaded one has learnt nowhere",
+        "agents/habit.py",
+        "                    visits=self._visits,\n",
+        "",
+        gate("habit"),
+    ),
+    Bug(
+        "fresh10 learning state: the settled test reads the greedy action's sd, not the proposed action's",
+        "agents/meta/learning_state.py",
+        "change = float(habit.sd[habit.action])",
+        "change = float(habit.sd[habit.q.argmax()])",
+        gate("learning_state"),
+    ),
+    Bug(
+        "fresh10 memory numpy: the GRU's reset gate scales the input's new-gate term, not the hidden's",
+        "agents/memory_numpy.py",
+        "n = np.tanh(gi[:, 2 * hid :] + r * gh[:, 2 * hid :])",
+        "n = np.tanh(r * gi[:, 2 * hid :] + gh[:, 2 * hid :])",
+        gate("memory_numpy"),
+    ),
+    Bug(
+        "fresh10 meta controller: an untrained habit's failed plan reported as habit_untrained, not planner_failed",
+        "agents/meta/controller.py",
+        '            return Decision(Expert.HABIT, habit.action, proposal, "planner_failed", dict(crit.stats))\n'
+        "        if plan is None or not crit.wants_plan(habit):",
+        '            return Decision(Expert.HABIT, habit.action, proposal, "habit_untrained", dict(crit.stats))\n'
+        "        if plan is None or not crit.wants_plan(habit):",
+        gate("meta_controller"),
+    ),
+    Bug(
+        "fresh10 vpi: the expected gain leaves out the sd factor of its density term",
+        "agents/meta/vpi.py",
+        "return gap * cdf + sd * pdf",
+        "return gap * cdf + pdf",
+        gate("vpi"),
+    ),
+    Bug(
+        "fresh10 budget: resident memory read from statm's total-size column, not its resident one",
+        "agents/models/budget.py",
+        'return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")',
+        'return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")',
+        gate("model_budget"),
+    ),
+    Bug(
+        "fresh10 cache: cache=True stores oracle entries at the root of $HG_MARL_CACHE, not under oracle/",
+        "agents/models/cache.py",
+        'return Path(root) / "oracle" if root else None',
+        "return Path(root) if root else None",
+        gate("model_cache"),
+    ),
+    Bug(
+        "fresh10 layouts: a group's spots drawn as an unordered set, so its objects always land in spot order",
+        "agents/models/layouts.py",
+        "spots = list(itertools.permutations(group.spots, group.count))",
+        "spots = list(itertools.combinations(group.spots, group.count))",
+        gate("model_layouts"),
+    ),
+    Bug(
+        "fresh10 packing: a packed map looked up with a state beyond its last key raises IndexError, not KeyError",
+        "agents/models/packing.py",
+        "if i >= len(self._keys) or int(self._keys[i]) != key:",
+        "if i > len(self._keys) or int(self._keys[i]) != key:",
+        gate("model_packing"),
+    ),
+    Bug(
+        "fresh10 ppo_recurrent: curve.csv's tasks_per_hour column written per simulated second",
+        "training/baselines/ppo_recurrent.py",
+        "rate = buf.tasks / max(buf.clock, 1e-9) * HOUR",
+        "rate = buf.tasks / max(buf.clock, 1e-9)",
+        gate("ppo_recurrent"),
+    ),
+    Bug(
+        "fresh10 recurrent ppo sb3: infeasible picks counted from every table's mask column of each action, not its own row",
+        "training/baselines/recurrent_ppo_sb3.py",
+        "bad += int((~mask[np.arange(num_envs), action]).sum())",
+        "bad += int((~mask[:, action]).sum())",
+        gate("recurrent_ppo_sb3"),
+    ),
+)
+
+
+ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7 + FRESH8 + FRESH9 + FRESH10
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:

@@ -130,6 +130,8 @@ def test_save_load_round_trip(tmp_path, features: str) -> None:
     for s in (S0, S1):
         assert r.q_values(s) == pytest.approx(q.q_values(s))
         assert r.uncertainty(s) == pytest.approx(q.uncertainty(s))
+    # 30 updates were made from each state: what it has learnt there survives the file
+    assert (r.visits(S0), r.visits(S1)) == (q.visits(S0), q.visits(S1)) == (30, 30)
     assert r.update(S0, 0, 1.0, S1) == pytest.approx(q.update(S0, 0, 1.0, S1))
 
 

@@ -34,3 +34,26 @@ def test_initial_states_draw_every_table_of_the_layout_and_nothing_else() -> Non
     assert where.shape == (2000, 3) and robot_at.shape == (2000,)
     assert {tuple(int(x) for x in row) for row in where} == expected
     assert set(robot_at.tolist()) == {0}
+
+
+def test_a_pick_is_told_with_the_spot_the_object_left() -> None:
+    # seeded random walks: every pick either agent makes is told with the picker, the object and
+    # the spot the object stood on (the scenario's own name for it), never a hand
+    from hg_marl.core import Agent, Event, Kind
+
+    world = World("paper2015")
+    picks = {"robot": 0, "human": 0}
+    for seed in range(3):
+        rng = np.random.default_rng(seed)
+        state = world.initial_state(rng)
+        for _ in range(60):
+            for agent, who in ((Agent.ROBOT, "robot"), (Agent.HUMAN, "human")):
+                index = int(rng.choice(world.feasible_indices(state, agent)))
+                action = world.actions(agent)[index]
+                outcome = world.step(state, agent, index)
+                if action.kind is Kind.PICK:
+                    spot = world.scenario.spots[state.where[action.obj]].name
+                    assert Event("picked", who, world.scenario.objects[action.obj], spot) in outcome.events
+                    picks[who] += 1
+                state = outcome.state
+    assert min(picks.values()) >= 1, picks

@@ -92,6 +92,21 @@ def toy_config(memory: str, tmp_path: Path, updates: int) -> RecurrentConfig:
     )
 
 
+class Paid(Cue):
+    """The toy with a task solved on every table at every step of 1 s: 3600 tasks per simulated hour."""
+
+    def step(self, actions: np.ndarray) -> tuple[Any, Any, Any, Any, dict[str, Any]]:
+        obs, _, term, trunc, info = super().step(actions)
+        return obs, np.ones(self.num_envs), term, trunc, info
+
+
+def test_the_curve_reports_tasks_per_simulated_hour(tmp_path: Path) -> None:
+    train_recurrent(toy_config("mlp", tmp_path, 2), env=Paid(64))
+    rows = (tmp_path / "curve.csv").read_text().splitlines()
+    assert rows[0] == "steps,tasks_per_hour,env_seconds,learner_seconds"
+    assert [(int(r.split(",")[0]), float(r.split(",")[1])) for r in rows[1:]] == [(768, 3600.0), (1536, 3600.0)]
+
+
 def test_gru_solves_the_cue_toy_where_a_memoryless_policy_cannot(tmp_path: Path) -> None:
     """Greedy wins: every episode with memory (rate 1200/h at 3 s each), half (600/h) without."""
     per_hour = 3600 / 3
