@@ -1166,7 +1166,111 @@ FRESH10 = (
 )
 
 
-ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7 + FRESH8 + FRESH9 + FRESH10
+# Eleventh round: bugs written from the sources (not their tests) in gated modules the last four
+# rounds left alone, each run against its module's gate tests from modules.toml.
+FRESH11 = (
+    Bug(
+        "fresh11 meta cost: a habit decision charged the planner's base cost, not the habit's constant",
+        "agents/meta/cost.py",
+        'return wall_time if self.mode == "wall" else self.habit',
+        'return wall_time if self.mode == "wall" else self.planner_base',
+        gate("meta_cost"),
+    ),
+    Bug(
+        "fresh11 runner: a run needing exactly MAX_CYCLES cycles is refused (1e7 s at 0.2 s no longer fits)",
+        "training/runner.py",
+        "if duration / shortest > MAX_CYCLES:",
+        "if duration / shortest >= MAX_CYCLES:",
+        gate("runner"),
+    ),
+    Bug(
+        "fresh11 compiled robot: the states enumerated are capped at max_states, so a scenario over it is refused instead of planned up to relabelling",
+        "agents/compiled_robot.py",
+        "keys = robot_states(world, max(max_states, MAX_ENUMERATED), progress)",
+        "keys = robot_states(world, min(max_states, MAX_ENUMERATED), progress)",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh11 partner model: the habit's partner features give the refused give in the take column and the other way round",
+        "agents/partner_model.py",
+        "return np.array([Kind.TAKE in refused, Kind.GIVE in refused], dtype=np.int8)",
+        "return np.array([Kind.GIVE in refused, Kind.TAKE in refused], dtype=np.int8)",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh11 cycle: a batched table whose clock reaches the time budget exactly is not truncated",
+        "hg_marl/core/cycle.py",
+        "out |= clock >= time_budget",
+        "out |= clock > time_budget",
+        gate("cycle"),
+    ),
+    Bug(
+        "fresh11 history: a partner's offer (give) counted as progress, resetting cycles-since-progress",
+        "hg_marl/envs/history.py",
+        "PROGRESS_KINDS = (Kind.PICK, Kind.THROW, Kind.TAKE, Kind.PLACE)",
+        "PROGRESS_KINDS = (Kind.PICK, Kind.THROW, Kind.GIVE, Kind.TAKE, Kind.PLACE)",
+        gate("history"),
+    ),
+    Bug(
+        "fresh11 builder: a kept model's chain(partner) returns the shortcut partner's transitions, whatever partner is asked",
+        "agents/models/builder.py",
+        "return self.dynamics[partner]",
+        "return self.dynamics[self.partner]",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh11 answers: a human given as an AgentSpec is built without its parameters",
+        "agents/models/answers.py",
+        "human = make_human(human.name, **human.params)",
+        "human = make_human(human.name)",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh11 memory robot: the default unstall is the guard's 12 turns, not the 8 this robot was measured with",
+        "agents/robots/memory.py",
+        "unstall: int = 8,",
+        "unstall: int = 12,",
+        gate("memory_robot"),
+    ),
+    Bug(
+        "fresh11 family-out: fo_slow_start still watches at the exact end of its warmup (and at its first turn with warmup=0)",
+        "agents/humans/family_out.py",
+        "return wait_index(turn.world) if turn.clock < self.warmup else helpful(turn.world, turn.state)",
+        "return wait_index(turn.world) if turn.clock <= self.warmup else helpful(turn.world, turn.state)",
+        gate("family_out"),
+    ),
+    Bug(
+        "fresh11 recipes: a noisy partner's random action drawn from the robot's feasible actions, not the human's",
+        "training/baselines/recipes.py",
+        "out[sel] = random_feasible(self.rules.masks(sub, Agent.HUMAN), rng)",
+        "out[sel] = random_feasible(self.rules.masks(sub, Agent.ROBOT), rng)",
+        gate("recipes"),
+    ),
+    Bug(
+        "fresh11 member models: with no cache folder given, member results are cached in the working directory, not $HG_MARL_CACHE/oracle",
+        "agents/member_models.py",
+        "self.cache: Path | None = Path(cache) if cache else cache_folder(True)",
+        "self.cache: Path | None = Path(cache) if cache else cache_folder(cache)",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh11 content: a module's code digest includes line and column positions, so editing a comment changes every key",
+        "agents/content.py",
+        "ast.dump(tree, include_attributes=False)",
+        "ast.dump(tree, include_attributes=True)",
+        gate("content"),
+    ),
+    Bug(
+        "fresh11 chains: backward() searches forward from the seeds (no transpose), so a policy's certain states are wrong",
+        "agents/models/chains.py",
+        "return forward(graph.T.tocsr(), np.flatnonzero(seeds))",
+        "return forward(graph.tocsr(), np.flatnonzero(seeds))",
+        gate("model_chains"),
+    ),
+)
+
+
+ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7 + FRESH8 + FRESH9 + FRESH10 + FRESH11
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:

@@ -92,3 +92,13 @@ def test_a_listed_distribution_that_is_not_installed_is_skipped(monkeypatch: pyt
     monkeypatch.setattr(importlib.metadata, "packages_distributions", lambda: listed)
     versions = content._versions.__wrapped__(frozenset({"numpy", "ghost_top"}))
     assert versions == (("numpy", np.__version__),)
+
+
+def test_a_modules_digest_ignores_comments_blank_lines_and_docstrings_but_not_code() -> None:
+    # the same code moved down two lines by a comment and a blank line, its docstring reworded:
+    # one digest; a changed constant: another
+    base = b'"""One."""\n\ndef f(x):\n    return x + 1\n'
+    moved = b'"""Reworded."""\n# a comment\n\n\ndef f(x):\n    # why\n    return x + 1\n'
+    changed = b'"""One."""\n\ndef f(x):\n    return x + 2\n'
+    assert content.module_digest(base) == content.module_digest(moved)
+    assert content.module_digest(base) != content.module_digest(changed)

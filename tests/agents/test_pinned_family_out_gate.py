@@ -90,3 +90,21 @@ def test_forgetful_holds_an_object_for_hold_seconds(clock: float, forgets: bool)
     helping = helpful(world, state)
     assert helping != wait_index(world)
     assert action == (wait_index(world) if forgets else helping)
+
+
+@pytest.mark.parametrize(
+    ("warmup", "clock", "watches"), [(120.0, 119.9, True), (120.0, 120.0, False), (0.0, 0.0, False)]
+)
+def test_slow_start_watches_for_warmup_seconds_and_helps_from_then_on(
+    warmup: float, clock: float, watches: bool
+) -> None:
+    """Watching for the first ``warmup`` seconds: [0, warmup); at clock == warmup it helps
+    (with warmup 0 from its very first turn)."""
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(0))
+    human = make_human("fo_slow_start", warmup=warmup)
+    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    helping = helpful(world, state)
+    assert helping != wait_index(world)
+    action = human.choose(SimpleNamespace(clock=clock, world=world, state=state))
+    assert action == (wait_index(world) if watches else helping)

@@ -149,3 +149,16 @@ def test_the_guard_takes_the_policys_next_choices_after_k_unchanged_turns(monkey
 def test_unstall_zero_plays_the_policy_as_trained() -> None:
     r, turn = robot({WAIT: 1.0}, unstall=0)
     assert [r.act(turn) for _ in range(20)] == [WAIT] * 20
+
+
+def test_by_default_the_guard_moves_after_eight_unchanged_turns(monkeypatch: pytest.MonkeyPatch) -> None:
+    # the default K of the memory robot is 8 (docs/learned-robots.md, measured): at one state,
+    # turns 1-8 (unchanged 0 to 7) play the policy, turns 9 and 10 (unchanged 8, 9) are the guard's
+    r, turn = robot({GOTO_HUMAN: 1.0, WAIT: 0.5, GOTO_TAPE2: 0.0, GOTO_TAPE1: -0.5})
+    monkeypatch.setattr(memory_module, "time", SimpleNamespace(perf_counter=_Clock().perf_counter))
+    experts = []
+    for _ in range(10):
+        r.act(turn)
+        assert r.last_decision is not None
+        experts.append(r.last_decision.expert)
+    assert experts == ["memory"] * 8 + ["guard"] * 2

@@ -18,12 +18,13 @@ import numpy as np
 import pytest
 
 from hg_marl.agents.humans import make_human
-from hg_marl.agents.models.answers import AnswerTable
+from hg_marl.agents.models.answers import AnswerTable, stationary_human
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.layouts import canonical_layout_count, canonical_layouts, layout_distribution
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.core import Agent, World
+from hg_marl.core.spec import AgentSpec
 from hg_marl.envs.batched import BatchState
 
 
@@ -136,3 +137,18 @@ def test_canonical_answers_read_the_budget_every_fourth_answer_and_the_memory_fi
     assert 9 <= asked < n_keys  # some keys share a canonical one; enough for three readings
     unit = "partner answers of this step"
     assert budget.readings == [("answers", i, asked, unit, i == 0) for i in range(0, asked, 4)]
+
+
+def test_a_partner_given_as_an_agent_spec_answers_with_its_parameters() -> None:
+    # lazy with p_idle 0.5 as a spec (what a study's partner list holds), as text and as the
+    # default: the spec's and the text's answers are one, and the default idles less
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(0))
+    wait = world.n_actions(Agent.HUMAN) - 1
+
+    def idle(human: object) -> float:
+        return dict(stationary_human(human, world).distribution(world, state)).get(wait, 0.0)
+
+    from_spec = idle(AgentSpec("lazy", {"p_idle": 0.5}))
+    assert from_spec == idle("lazy:p_idle=0.5")
+    assert from_spec >= 0.5 and idle("lazy") < from_spec

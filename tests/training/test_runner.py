@@ -189,3 +189,14 @@ def test_human_as_expected_compares_with_every_expected_action_including_index_0
     log = result.log
     assert log["expected_human_action"].iloc[0] == 0
     assert log["human_as_expected"].tolist() == [False, True, None]
+
+
+def test_a_run_needing_exactly_the_cycle_limit_is_accepted_and_one_more_is_refused() -> None:
+    from hg_marl.core.errors import ConfigError
+    from hg_marl.training.runner import MAX_CYCLES, check_cycles
+
+    assert MAX_CYCLES == 50_000_000
+    check_cycles(10_000_000.0, 0.2)  # 1e7 s at 0.2 s a cycle: 5e7 cycles, the limit itself
+    check_cycles(float(MAX_CYCLES), 1.0)
+    with pytest.raises(ConfigError, match=r"over the limit 50,000,000"):
+        check_cycles(float(MAX_CYCLES) + 1.0, 1.0)
