@@ -19,7 +19,7 @@ from hg_marl.agents.humans.preference import never_takes
 from hg_marl.agents.oracle import oracle_rate
 from hg_marl.agents.robots import make_robot
 from hg_marl.agents.robots.belief import REFUSAL_LIKELIHOOD, REFUSALS_WITHIN, BeliefRobot
-from hg_marl.core import Agent, Kind, World
+from hg_marl.core import Agent, Kind, State, World
 from hg_marl.core.errors import RobotError
 from hg_marl.training.runner import RunConfig, RunResult, run
 
@@ -104,19 +104,23 @@ def test_the_verdict_lapses_and_a_partner_who_starts_taking_is_offered_again(pop
     assert not after["reason"].str.startswith("the partner refuses").any()
 
 
-def test_the_refusal_run_worked_by_hand(population: str) -> None:
-    """Two refusals at an offered state: the run is the product of the mixture's refusal
-    chances, each member's (1 - eps) (1 - accept) + eps (n - takes) / n, weighed by the
-    posterior before the answer; a take ends the run."""
-    robot = BeliefRobot(population=population, cache="", unknown=0.0, epsilon=0.05)
+def _offering(robot: BeliefRobot) -> tuple[BeliefRobot, World, State, int, State]:
+    """``robot`` reset on the table, the state after its first pick, its give there, and the state offering it."""
     world = World(TABLE)
     robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
     state = world.initial_state(np.random.default_rng(0))
     acts = world.actions(Agent.ROBOT)
     pick = next(i for i in world.feasible_indices(state, Agent.ROBOT) if acts[i].kind is Kind.PICK)
-    state = world.step(state, Agent.ROBOT, pick).state
-    give = next(i for i in world.feasible_indices(state, Agent.ROBOT) if acts[i].kind is Kind.GIVE)
-    mid = world.step(state, Agent.ROBOT, give).state
+    held = world.step(state, Agent.ROBOT, pick).state
+    give = next(i for i in world.feasible_indices(held, Agent.ROBOT) if acts[i].kind is Kind.GIVE)
+    return robot, world, held, give, world.step(held, Agent.ROBOT, give).state
+
+
+def test_the_refusal_run_worked_by_hand(population: str) -> None:
+    """Two refusals at an offered state: the run is the product of the mixture's refusal
+    chances, each member's (1 - eps) (1 - accept) + eps (n - takes) / n, weighed by the
+    posterior before the answer; a take ends the run."""
+    robot, world, _, give, mid = _offering(BeliefRobot(population=population, cache="", unknown=0.0, epsilon=0.05))
     human = world.actions(Agent.HUMAN)
     feasible = world.feasible_indices(mid, Agent.HUMAN)
     n, wait = len(feasible), world.n_actions(Agent.HUMAN) - 1
@@ -150,15 +154,7 @@ def test_the_verdict_holds_while_the_last_offer_is_at_most_refusals_within_answe
     offer and for 30 answers after it (each at a state with nothing offered), and lapses at
     the 31st (the docstring's "at most REFUSALS_WITHIN answers old")."""
     assert REFUSALS_WITHIN == 30
-    robot = BeliefRobot(population=population, cache="")
-    world = World(TABLE)
-    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
-    state = world.initial_state(np.random.default_rng(0))
-    acts = world.actions(Agent.ROBOT)
-    pick = next(i for i in world.feasible_indices(state, Agent.ROBOT) if acts[i].kind is Kind.PICK)
-    held = world.step(state, Agent.ROBOT, pick).state
-    give = next(i for i in world.feasible_indices(held, Agent.ROBOT) if acts[i].kind is Kind.GIVE)
-    mid = world.step(held, Agent.ROBOT, give).state
+    robot, world, held, give, mid = _offering(BeliefRobot(population=population, cache=""))
     wait = world.n_actions(Agent.HUMAN) - 1
     refused = 0
     while not robot.refuses_offers():
