@@ -1078,7 +1078,7 @@ FRESH10 = (
         gate("entropy"),
     ),
     Bug(
-        "fresh10 entropy and cost: the planner's cost in a state it never planned in taken as 0, not its overall filtered cost",
+        "fresh10 entropy and cost: the planner's cost in a state it never planned in taken as 0",
         "agents/meta/entropy_cost.py",
         "c_planner = self._planner_cost.get(key, self._planner_cost_all)",
         "c_planner = self._planner_cost.get(key, 0.0)",
@@ -1157,7 +1157,7 @@ FRESH10 = (
         gate("ppo_recurrent"),
     ),
     Bug(
-        "fresh10 recurrent ppo sb3: infeasible picks counted from every table's mask column of each action, not its own row",
+        "fresh10 recurrent ppo sb3: infeasible picks counted from every table's mask column, not its row",
         "training/baselines/recurrent_ppo_sb3.py",
         "bad += int((~mask[np.arange(num_envs), action]).sum())",
         "bad += int((~mask[:, action]).sum())",
@@ -1184,14 +1184,14 @@ FRESH11 = (
         gate("runner"),
     ),
     Bug(
-        "fresh11 compiled robot: the states enumerated are capped at max_states, so a scenario over it is refused instead of planned up to relabelling",
+        "fresh11 compiled robot: states capped at max_states, a larger table refused, not planned up to relabelling",
         "agents/compiled_robot.py",
         "keys = robot_states(world, max(max_states, MAX_ENUMERATED), progress)",
         "keys = robot_states(world, min(max_states, MAX_ENUMERATED), progress)",
         gate("compiled_robot"),
     ),
     Bug(
-        "fresh11 partner model: the habit's partner features give the refused give in the take column and the other way round",
+        "fresh11 partner model: the partner features' refused give and refused take columns swapped",
         "agents/partner_model.py",
         "return np.array([Kind.TAKE in refused, Kind.GIVE in refused], dtype=np.int8)",
         "return np.array([Kind.GIVE in refused, Kind.TAKE in refused], dtype=np.int8)",
@@ -1212,7 +1212,7 @@ FRESH11 = (
         gate("history"),
     ),
     Bug(
-        "fresh11 builder: a kept model's chain(partner) returns the shortcut partner's transitions, whatever partner is asked",
+        "fresh11 builder: a kept model's chain(partner) returns the first partner's transitions",
         "agents/models/builder.py",
         "return self.dynamics[partner]",
         "return self.dynamics[self.partner]",
@@ -1233,7 +1233,7 @@ FRESH11 = (
         gate("memory_robot"),
     ),
     Bug(
-        "fresh11 family-out: fo_slow_start still watches at the exact end of its warmup (and at its first turn with warmup=0)",
+        "fresh11 family-out: fo_slow_start still watches at the exact end of its warmup",
         "agents/humans/family_out.py",
         "return wait_index(turn.world) if turn.clock < self.warmup else helpful(turn.world, turn.state)",
         "return wait_index(turn.world) if turn.clock <= self.warmup else helpful(turn.world, turn.state)",
@@ -1247,21 +1247,21 @@ FRESH11 = (
         gate("recipes"),
     ),
     Bug(
-        "fresh11 member models: with no cache folder given, member results are cached in the working directory, not $HG_MARL_CACHE/oracle",
+        "fresh11 member models: with no cache folder given, member results cached in the working directory",
         "agents/member_models.py",
         "self.cache: Path | None = Path(cache) if cache else cache_folder(True)",
         "self.cache: Path | None = Path(cache) if cache else cache_folder(cache)",
         gate("member_models"),
     ),
     Bug(
-        "fresh11 content: a module's code digest includes line and column positions, so editing a comment changes every key",
+        "fresh11 content: a module's code digest includes line and column positions",
         "agents/content.py",
         "ast.dump(tree, include_attributes=False)",
         "ast.dump(tree, include_attributes=True)",
         gate("content"),
     ),
     Bug(
-        "fresh11 chains: backward() searches forward from the seeds (no transpose), so a policy's certain states are wrong",
+        "fresh11 chains: backward() searches forward from the seeds (no transpose)",
         "agents/models/chains.py",
         "return forward(graph.T.tocsr(), np.flatnonzero(seeds))",
         "return forward(graph.tocsr(), np.flatnonzero(seeds))",

@@ -74,6 +74,6 @@ def test_each_job_is_reported_once_even_when_two_jobs_share_a_key(tmp_path: Path
     jobs = [JOBS[0], JOBS[1], JOBS[0], JOBS[2]]
     for attempt in ("run", "found"):
         heard: list[int] = []
-        out = run_sweep(jobs, tmp_path, on_done=lambda job, _: heard.append(job.seed))
+        out = run_sweep(jobs, tmp_path, on_done=lambda job, _, heard=heard: heard.append(job.seed))
         assert sorted(heard) == [0, 0, 1, 2], attempt
         assert [s["job"]["seed"] for s in out] == [0, 1, 0, 2] and out[0] == out[2], attempt
