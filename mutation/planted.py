@@ -1270,7 +1270,175 @@ FRESH11 = (
 )
 
 
-ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7 + FRESH8 + FRESH9 + FRESH10 + FRESH11
+# Twelfth round: bugs written from the sources (not their tests) in modules outside the mutation gate,
+# each run against the test files that import its module.
+FRESH12 = (
+    Bug(
+        "fresh12 regret: a completion at a grid time not yet counted (searchsorted side left), D one too high",
+        "training/regret.py",
+        'solved = np.searchsorted(done, grid, side="right")',
+        'solved = np.searchsorted(done, grid, side="left")',
+        ("tests/training/test_regret.py",),
+    ),
+    Bug(
+        "fresh12 study: narrowing by a registry name that is also a label picks every actor of that name",
+        "training/study.py",
+        "(a.name in names and a.name not in labels))",
+        "(a.name in names))",
+        (
+            "tests/fuzz/test_bounds.py",
+            "tests/training/test_br_prox.py",
+            "tests/training/test_evaluate.py",
+            "tests/training/test_pinned_limits_gate.py",
+            "tests/training/test_pinned_report.py",
+            "tests/training/test_ray.py",
+            "tests/training/test_study_population.py",
+        ),
+    ),
+    Bug(
+        "fresh12 evaluate: br_prox filled for every reference, the best robot's included, not only the oracle's",
+        "training/evaluate.py",
+        'frame["br_prox"] = frame["score"].clip(upper=1.0).where(exact)',
+        'frame["br_prox"] = frame["score"].clip(upper=1.0)',
+        (
+            "tests/training/test_br_prox.py",
+            "tests/training/test_evaluate.py",
+            "tests/training/test_ray.py",
+            "tests/training/test_study_population.py",
+        ),
+    ),
+    Bug(
+        "fresh12 reproduce: paper_only inverted (further conditions only when paper_only is set)",
+        "training/reproduce.py",
+        "further=not config.paper_only",
+        "further=config.paper_only",
+        ("tests/training/test_reproduce.py",),
+    ),
+    Bug(
+        "fresh12 compare: a cell's runner evaluations ignore config.deterministic (always greedy)",
+        "training/baselines/compare.py",
+        "config.eval_seeds,\n            deterministic=config.deterministic,\n",
+        "config.eval_seeds,\n",
+        ("tests/training/test_ppo_batched.py",),
+    ),
+    Bug(
+        "fresh12 comparison: steps_to_X is None only when no seed reached it, else the median of those that did",
+        "training/baselines/comparison.py",
+        "None if any(s is None for s in reached)",
+        "None if all(s is None for s in reached)",
+        ("tests/training/test_comparison.py", "tests/training/test_ppo_batched.py"),
+    ),
+    Bug(
+        "fresh12 preference: a pick's score not lowered by haste x the pick's own duration",
+        "agents/humans/preference.py",
+        "out[index] = best + bonus - self.haste * duration",
+        "out[index] = best + bonus",
+        (
+            "tests/agents/test_belief_refusals.py",
+            "tests/agents/test_pinned_model_partners_gate.py",
+            "tests/training/test_br_prox.py",
+        ),
+    ),
+    Bug(
+        "fresh12 trace: behaviour_table breaks ties between equally frequent actions by the highest index",
+        "agents/humans/trace.py",
+        "min(per, key=lambda a: (-per[a], a))",
+        "min(per, key=lambda a: (-per[a], -a))",
+        (
+            "tests/agents/test_trace_validation.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/fuzz/test_probe.py",
+            "tests/play/test_session.py",
+            "tests/play/test_traces.py",
+        ),
+    ),
+    Bug(
+        "fresh12 scenario: a scenario file loaded with strict=True only warns about an unsolvable layout",
+        "hg_marl/core/scenario.py",
+        "return parse_scenario(data, source=str(path), text=raw, strict=strict)",
+        "return parse_scenario(data, source=str(path), text=raw, strict=False)",
+        (
+            "tests/agents/test_content.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_pinned_progress_gate.py",
+            "tests/agents/test_planner_behaviour.py",
+            "tests/core/test_pinned_scenario_gate.py",
+            "tests/core/test_scenario_validation.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/fuzz/test_probe.py",
+        ),
+    ),
+    Bug(
+        "fresh12 AEC env: an agent's effort is its last action's seconds, not cumulative",
+        "hg_marl/envs/table_cleaning.py",
+        "self._effort[agent] += out.effort",
+        "self._effort[agent] = out.effort",
+        (
+            "tests/core/test_cycle.py",
+            "tests/env/test_batched.py",
+            "tests/env/test_batched_learned.py",
+            "tests/env/test_boundary.py",
+            "tests/env/test_compiled_robot.py",
+            "tests/env/test_cycle_trace.py",
+            "tests/env/test_history.py",
+            "tests/training/test_pinned_planted_memory.py",
+            "tests/training/test_ppo_recurrent.py",
+            "tests/training/test_recurrent_ppo_sb3.py",
+        ),
+    ),
+    Bug(
+        "fresh12 play stats: an offered turn is one where a give (not a take) was feasible",
+        "training/play/stats.py",
+        'if any(m and kind[i] == "take" for i, m in enumerate(step["mask"])):',
+        'if any(m and kind[i] == "give" for i, m in enumerate(step["mask"])):',
+        ("tests/play/test_traces.py",),
+    ),
+    Bug(
+        "fresh12 views: info's partner_effort is the learning seat's own effort",
+        "agents/views.py",
+        '"partner_effort": self.env.infos[other.label]["effort"],',
+        '"partner_effort": own["effort"],',
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_model_file.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_views.py",
+            "tests/env/test_batched.py",
+            "tests/env/test_batched_learned.py",
+            "tests/env/test_compiled_robot.py",
+            "tests/env/test_cycle_trace.py",
+            "tests/env/test_history.py",
+            "tests/env/test_pinned_planted_history.py",
+            "tests/training/test_baselines.py",
+        ),
+    ),
+    Bug(
+        "fresh12 gantt: a place's spot code is 0-based (@0 for the first spot)",
+        "agents/planner/gantt.py",
+        'code += f"@{action.target + 1}"',
+        'code += f"@{action.target}"',
+        ("tests/agents/test_planner_tools.py",),
+    ),
+    Bug(
+        "fresh12 learned: a table policy's unseen observation falls back to action 0, not wait (the last)",
+        "agents/humans/learned.py",
+        "p[-1] = 1.0",
+        "p[0] = 1.0",
+        (
+            "tests/agents/test_content.py",
+            "tests/agents/test_model_file.py",
+            "tests/env/test_batched.py",
+            "tests/env/test_batched_learned.py",
+            "tests/env/test_pinned_compiled.py",
+            "tests/training/test_baselines.py",
+            "tests/training/test_store_inputs.py",
+        ),
+    ),
+)
+
+
+ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7 + FRESH8 + FRESH9 + FRESH10 + FRESH11 + FRESH12
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:

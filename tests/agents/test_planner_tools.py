@@ -7,7 +7,7 @@ import typer
 from typer.testing import CliRunner
 
 from hg_marl.agents.planner import Planner
-from hg_marl.agents.planner.gantt import gantt_png, gantt_text
+from hg_marl.agents.planner.gantt import gantt_png, gantt_text, step_code
 from hg_marl.core import Agent, Kind, World
 from hg_marl.training.commands.plan import register
 
@@ -140,3 +140,12 @@ def test_plan_command(tmp_path) -> None:  # type: ignore[no-untyped-def]
     assert png.exists()
     result = runner.invoke(app, ["plan", "--scenario", "roboergosum", "--budget", "2"])
     assert result.exit_code == 1 and "budget" in result.output
+
+
+def test_a_placement_is_coded_with_its_spots_number_counted_from_one() -> None:
+    # the chart numbers spots 1, 2, ... (the docstring's "@2"): placing on the first spot is @1
+    world = World("paper2015")
+    places = [a for a in world.actions(Agent.HUMAN) if a.kind is Kind.PLACE and a.obj == 0]
+    codes = {a.target: step_code(world, a) for a in places}
+    assert codes and all(code.endswith(f"@{spot + 1}") for spot, code in codes.items()), codes
+    assert 0 in codes and codes[0].endswith("@1")

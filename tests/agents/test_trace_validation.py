@@ -96,3 +96,12 @@ def test_bad_header_and_encoding(tmp_path: Path) -> None:
         read_trace(path)
     with pytest.raises(HgMarlError, match="trace file not found"):
         make_human("replay", path=str(tmp_path / "missing.jsonl"))
+
+
+def test_the_behaviour_table_takes_the_most_frequent_action_and_the_lowest_index_on_a_tie() -> None:
+    # facts (1, 0): actions 5, 2, 5, 2 (a tie: the lowest index, 2); facts (0, 1): 7, 3, 7 (7)
+    from hg_marl.agents.humans.trace import Episode, behaviour_table
+
+    steps = [{"facts": [1, 0], "action": a} for a in (5, 2, 5, 2)] + [{"facts": [0, 1], "action": a} for a in (7, 3, 7)]
+    table = behaviour_table([Episode({}, steps[:3]), Episode({}, steps[3:])])
+    assert table == {bytes([1, 0]): 2, bytes([0, 1]): 7}

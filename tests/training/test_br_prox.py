@@ -139,3 +139,14 @@ def test_bundled_adaptation_study_is_valid() -> None:
     assert {"forced_coordination", "asymmetric_advantages", "roboergosum"} == set(study.scenarios)
     assert study.test and set(study.test) == {h.label for h in study.humans}
     assert {"planner", "oracle", "habit", "random"} <= {r.name for r in study.robots}
+
+
+def test_br_prox_is_left_empty_where_the_reference_is_the_best_robot(tmp_path: Path, monkeypatch) -> None:
+    # no exact best response (as for a non-stationary partner or an oracle over its budget): the
+    # score is the rate over the best robot's, and BR-Prox, which is defined against the exact
+    # best response only, stays empty
+    monkeypatch.setattr(evaluation, "oracle_rate", lambda *args, **kwargs: None)
+    evaluate(load_study(_files(tmp_path, MEMBERS)), tmp_path / "out")
+    frame = pd.read_csv(tmp_path / "out" / "scores.csv")
+    assert frame["reference"].str.startswith("best robot").all()
+    assert frame["score"].notna().all() and frame["br_prox"].isna().all()

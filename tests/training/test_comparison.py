@@ -68,3 +68,13 @@ def test_a_human_without_an_oracle_rate_is_left_out_of_the_aggregate() -> None:
 def test_bad_settings_name_their_option(field: str, value: object, option: str) -> None:
     with pytest.raises(ConfigError, match=option):
         CompareConfig(**{field: value})  # type: ignore[arg-type]
+
+
+def test_steps_to_a_level_need_every_seed_to_reach_it() -> None:
+    # curves (0, 0), (1000, final / 2), (2000, final) against an oracle of 100: final 100 reaches
+    # 50 at 1000 steps and 90 at 2000; final 80 reaches 50 at 2000 and never 90. Both seeds reach
+    # 50 (median of 1000 and 2000: 1500); one seed never reaches 90: no figure, not the other's 2000
+    cells = [cell("ppo", "lazy", 0, 100.0), cell("ppo", "lazy", 1, 80.0)]
+    (ppo,) = [r for r in summarise(config(2), cells, REFERENCES) if r["agent"] == "ppo" and r["human"] == "lazy"]
+    assert ppo["steps_to_50"] == pytest.approx(1500.0)
+    assert ppo["steps_to_90"] is None

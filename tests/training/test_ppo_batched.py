@@ -61,3 +61,20 @@ def test_compare_names_ppo_batched_like_any_algorithm(tmp_path: Path) -> None:
     record = run_cell(config, "ppo_batched", "cooperative", 0, tmp_path / "cell")
     assert [s for s, _ in record["curve"]] == [0, 8192]
     assert Path(record["model"]).exists() and record["algo"] == "ppo_batched"
+
+
+@pytest.mark.parametrize("deterministic", [False, True])
+def test_a_compare_cells_evaluations_play_as_the_config_says(
+    deterministic: bool, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # the runner evaluations of a cell sample the policy or play it greedily as the comparison's
+    # ``deterministic`` says (the cell's training is replaced: it asks for one evaluation)
+    from hg_marl.training.baselines import compare
+    from hg_marl.training.baselines.comparison import CompareConfig
+
+    asked: list[bool] = []
+    monkeypatch.setattr(compare, "runner_rate", lambda *args, deterministic=True: asked.append(deterministic) or 1.0)
+    monkeypatch.setattr(compare, "_run_batched_cell", lambda config, human, seed, directory, evaluate: evaluate(None))
+    config = CompareConfig(algos=("ppo_batched",), humans=("cooperative",), deterministic=deterministic, out=tmp_path)
+    compare.run_cell(config, "ppo_batched", "cooperative", 0, tmp_path / "cell")
+    assert asked == [deterministic]
