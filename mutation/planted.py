@@ -1337,7 +1337,7 @@ FRESH12 = (
             "tests/agents/test_belief_refusals.py",
             "tests/agents/test_pinned_model_partners_gate.py",
             "tests/training/test_br_prox.py",
-            "tests/agents/test_preference.py",
+            "tests/agents/test_models.py",
         ),
     ),
     Bug(
