@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from hg_marl.agents.humans import make_human
-from hg_marl.agents.humans.trace import read_trace
+from hg_marl.agents.humans.trace import Episode, behaviour_table, read_trace
 from hg_marl.core import Agent, World
 from hg_marl.core.errors import HgMarlError, ModelFileError
 
@@ -100,8 +100,6 @@ def test_bad_header_and_encoding(tmp_path: Path) -> None:
 
 def test_the_behaviour_table_takes_the_most_frequent_action_and_the_lowest_index_on_a_tie() -> None:
     # facts (1, 0): actions 5, 2, 5, 2 (a tie: the lowest index, 2); facts (0, 1): 7, 3, 7 (7)
-    from hg_marl.agents.humans.trace import Episode, behaviour_table
-
     steps = [{"facts": [1, 0], "action": a} for a in (5, 2, 5, 2)] + [{"facts": [0, 1], "action": a} for a in (7, 3, 7)]
     table = behaviour_table([Episode({}, steps[:3]), Episode({}, steps[3:])])
     assert table == {bytes([1, 0]): 2, bytes([0, 1]): 7}

@@ -239,8 +239,6 @@ def test_solves_is_the_robots_wait_on_a_clean_table() -> None:
 def test_a_batched_table_is_truncated_when_its_clock_reaches_the_budget_exactly() -> None:
     # clocks 99.9, 100.0 and 100.1 against a 100 s budget; cycles 9, 10, 11 against 10: each
     # limit is reached at its value (as the scalar rule, which ends a run at clock == budget)
-    from hg_marl.core.cycle import truncated, truncated_batch
-
     clocks = np.array([99.9, 100.0, 100.1])
     assert truncated_batch(np.zeros(3, dtype=np.int64), clocks, None, 100.0).tolist() == [False, True, True]
     assert truncated_batch(np.array([9, 10, 11]), np.zeros(3), 10, None).tolist() == [False, True, True]

@@ -11,7 +11,7 @@ import itertools
 
 import numpy as np
 
-from hg_marl.core import World
+from hg_marl.core import Agent, Event, Kind, World
 
 
 def _by_hand() -> set[tuple[int, ...]]:
@@ -39,8 +39,6 @@ def test_initial_states_draw_every_table_of_the_layout_and_nothing_else() -> Non
 def test_a_pick_is_told_with_the_spot_the_object_left() -> None:
     # seeded random walks: every pick either agent makes is told with the picker, the object and
     # the spot the object stood on (the scenario's own name for it), never a hand
-    from hg_marl.core import Agent, Event, Kind
-
     world = World("paper2015")
     picks = {"robot": 0, "human": 0}
     for seed in range(3):

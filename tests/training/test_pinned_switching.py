@@ -151,9 +151,10 @@ def test_a_robot_loses_only_when_its_whole_difference_ci_is_below_zero(
             ("other", 1): [100.0, 200.0, 500.0, 600.0, 900.0],
         },
     )
-    cells = {c["robot"]: c for c in switching.run_switching(CONFIG, tmp_path)["cells"]}
+    summary = switching.run_switching(CONFIG, tmp_path)
+    cells = {c["robot"]: c for c in summary["cells"]}
     other = cells["other"]["difference"]
     assert other["mean"] == pytest.approx(0.0)
     assert other["low"] == pytest.approx(-2.0) and other["high"] == pytest.approx(2.0)
     assert cells["other"]["loses"] is False
-    assert "LOSES" not in switching_table(switching.run_switching(CONFIG, tmp_path))
+    assert "LOSES" not in switching_table(summary)

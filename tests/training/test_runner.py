@@ -13,11 +13,12 @@ from typer.testing import CliRunner
 
 from hg_marl.agents.humans import make_human
 from hg_marl.agents.robots import make_robot
+from hg_marl.core.errors import ConfigError
 from hg_marl.policy import Decision, Turn
 from hg_marl.training import backends, sweep
 from hg_marl.training.cli import app
 from hg_marl.training.io import atomic_write
-from hg_marl.training.runner import COLUMNS, RunConfig, run, summarise
+from hg_marl.training.runner import COLUMNS, MAX_CYCLES, RunConfig, check_cycles, run, summarise
 from hg_marl.training.sweep import Job, run_sweep
 
 
@@ -192,9 +193,6 @@ def test_human_as_expected_compares_with_every_expected_action_including_index_0
 
 
 def test_a_run_needing_exactly_the_cycle_limit_is_accepted_and_one_more_is_refused() -> None:
-    from hg_marl.core.errors import ConfigError
-    from hg_marl.training.runner import MAX_CYCLES, check_cycles
-
     assert MAX_CYCLES == 50_000_000
     check_cycles(10_000_000.0, 0.2)  # 1e7 s at 0.2 s a cycle: 5e7 cycles, the limit itself
     check_cycles(float(MAX_CYCLES), 1.0)
