@@ -46,6 +46,7 @@ from tqdm import tqdm
 from hg_marl.agents.models import AnswerTable, Model, StatePacker, build_model
 from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.chains import Chain, certain_states, policy_rate, transitions
+from hg_marl.agents.models.forked import Forked
 from hg_marl.agents.models.solve import TIE, sweeps
 from hg_marl.agents.oracle import (
     DEFAULT_MEMORY,
@@ -324,6 +325,7 @@ def headroom(
     max_seconds: float | None = DEFAULT_SECONDS,
     max_memory: int | None = DEFAULT_MEMORY,
     progress: bool = False,
+    jobs: int = 1,
 ) -> HeadroomResult:
     """The headroom matrix of ``scenario``.
 
@@ -336,6 +338,9 @@ def headroom(
         failed_actions: as :func:`~hg_marl.agents.oracle.oracle_rate`.
         max_states, max_seconds, max_memory: the model's budget (:class:`OracleTooLarge` beyond).
         progress: progress bars on stderr.
+        jobs: worker processes (0: one per CPU) for the live partners' answers, the policies
+            and the rates (:class:`~hg_marl.agents.models.forked.Forked`); the result does not
+            depend on it. The memory budget reads this process; each worker adds its own work.
     """
     start = time.perf_counter()
     world = scenario if isinstance(scenario, World) else World(scenario)
@@ -359,26 +364,37 @@ def headroom(
         budget.refuse_count("layouts", layout_count(world.scenario), "initial layouts")
         layouts = layout_distribution(world, budget)
         packer = StatePacker(world)
-        tables = [AnswerTable(world, h, packer, budget) for h in humans]
-        built = build_model(
-            world,
-            tables,
-            layouts,
-            failed_actions=failed_actions,
-            budget=budget,
-            progress=progress,
-            label="headroom",
-            keep=False,  # 21 partners' transitions would not fit: each is read from its answer table
-        )
+        tables = [AnswerTable(world, h, packer, budget, jobs=jobs) for h in humans]
+        try:
+            built = build_model(
+                world,
+                tables,
+                layouts,
+                failed_actions=failed_actions,
+                budget=budget,
+                progress=progress,
+                label="headroom",
+                keep=False,  # 21 partners' transitions would not fit: each is read from its answer table
+            )
+        finally:
+            for table in tables:
+                table.close()
         model = JointModel.from_model(world, built, budget)
         col = [labels.index(label) for label, _ in true]
-        policies = {}
-        for label in tqdm(list(rows), desc="headroom: policies", disable=not progress, file=sys.stderr):
-            policies[label] = model.optimal_policy(labels.index(label))
-        rates = np.zeros((len(rows), len(col)))
-        for t, j in enumerate(col):  # partner by partner: its table's positions are read once (Model.gather)
-            for a, label in enumerate(rows):
-                rates[a, t] = model.rate(policies[label], j)
+        assumed_rows = [labels.index(label) for label in rows]
+        bar = tqdm(total=len(rows) + len(col), desc="headroom: policies, rates", disable=not progress, file=sys.stderr)
+
+        def step(phase: str, unit: str, done: int, total: int) -> None:
+            budget.check(phase, done, total, unit)
+            bar.update(min(done, 1))  # the first call comes before any result
+
+        with Forked(model.optimal_policy, jobs) as workers:  # a policy per row (forked workers share the model)
+            policies = workers.map(assumed_rows, lambda done: step("policies", "policies", done, len(rows)))
+        with Forked(lambda j: [model.rate(p, j) for p in policies], jobs) as workers:
+            # partner by partner: its table's positions are read once (Model.gather)
+            by_column = workers.map(col, lambda done: step("rates", "partners", done, len(col)))
+        bar.close()
+        rates = np.array(by_column, dtype=float).T.reshape(len(rows), len(col))
         optimum = np.array([rates[list(rows).index(label), t] for t, (label, _) in enumerate(true)])
     return HeadroomResult(
         scenario=world.scenario.name,

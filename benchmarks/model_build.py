@@ -1,6 +1,7 @@
 """Model building on arrays beside the Python enumeration it replaced, measured in the same run.
 
-Run: ``python benchmarks/model_build.py [--member m01] [--members] [--headroom] [--eight] [--robot]``.
+Run: ``python benchmarks/model_build.py [--member m01] [--skip-rates] [--members] [--headroom [--jobs N]]
+[--eight] [--robot]``.
 
 1. **Builder rate** on ``roboergosum`` against a population member (a stationary human;
    no symmetry reduction: the full model). Each builder runs twice: cold (the partner
@@ -13,7 +14,8 @@ Run: ``python benchmarks/model_build.py [--member m01] [--members] [--headroom] 
    second (one core), which a loaded machine inflates less than wall time. Goal: >= 1M states/s.
 2. ``--members``: every ``roboergosum`` member's oracle (wall seconds, states, rate). Goal <= 5 s each.
 3. ``--headroom``: ``hg-marl headroom --scenario roboergosum --population populations/roboergosum.toml``
-   in-process, timed, with ``--max-seconds 600``. Goal <= 60 s.
+   in-process, timed, with ``--max-seconds 600``: in one process, then with ``--jobs`` forked
+   workers (default: one per CPU), and whether both gave the same matrix. Goal <= 60 s.
 4. ``--eight``: the oracle of an 8-object table (``generated:objects=8,bins=2`` against
    ``random``). Goal <= 60 s and 4 GB.
 5. ``--robot``: the compiled planner robot's states on ``roboergosum`` (the builder) and
@@ -23,6 +25,7 @@ Run: ``python benchmarks/model_build.py [--member m01] [--members] [--headroom] 
 from __future__ import annotations
 
 import argparse
+import os
 import resource
 import time
 from typing import Any
@@ -105,18 +108,27 @@ def members() -> None:
         print(f"  {m.name}: {time.perf_counter() - start:7.2f} s wall, {time.process_time() - cpu:6.2f} s CPU  {what}")
 
 
-def headroom_time() -> None:
+def headroom_time(jobs: int) -> None:
+    """The headroom in one process and, beside it in the same run, with ``jobs`` forked workers (same matrix)."""
     from hg_marl.agents.headroom import headroom
 
     pop = load_population(POPULATION)
-    start, cpu = time.perf_counter(), time.process_time()
-    try:
-        res = headroom("roboergosum", [(m.name, m.spec) for m in pop.members()], max_seconds=600)
-        what = f"{res.n_states:,} states, headroom {res.headroom:.3f}"
-    except OverBudget as exc:
-        what = f"refused: {exc}"
-    wall, spent = time.perf_counter() - start, time.process_time() - cpu
-    print(f"headroom roboergosum, whole population: {wall:.1f} s wall, {spent:.1f} s CPU ({what}); goal <= 60 s")
+    matrices = []
+    for n in dict.fromkeys((1, jobs)):
+        start, cpu = time.perf_counter(), time.process_time()
+        try:
+            res = headroom("roboergosum", [(m.name, m.spec) for m in pop.members()], max_seconds=600, jobs=n)
+            what = f"{res.n_states:,} states, headroom {res.headroom:.3f}"
+            matrices.append(res.rates)
+        except OverBudget as exc:
+            what = f"refused: {exc}"
+        wall, spent = time.perf_counter() - start, time.process_time() - cpu
+        print(
+            f"headroom roboergosum, whole population, jobs={n}: {wall:.1f} s wall, {spent:.1f} s CPU in the parent "
+            f"({what}); goal <= 60 s"
+        )
+    if len(matrices) == 2:
+        print(f"  the same matrix with {jobs} jobs as with one: {bool((matrices[0] == matrices[1]).all())}")
 
 
 def eight() -> None:
@@ -163,18 +175,23 @@ def robot(sample: int = 300) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--member", default="m01", help="population member of the builder-rate run")
+    parser.add_argument("--skip-rates", action="store_true", help="skip the builder-rate runs (1. above)")
     parser.add_argument("--members", action="store_true", help="time every member's oracle")
     parser.add_argument("--headroom", action="store_true", help="time the population's headroom matrix")
+    parser.add_argument(
+        "--jobs", type=int, default=os.cpu_count() or 1, help="workers of the headroom's second run (default: CPUs)"
+    )
     parser.add_argument("--eight", action="store_true", help="time an 8-object table's oracle")
     parser.add_argument("--robot", action="store_true", help="the compiled planner robot's states and plan cost")
     args = parser.parse_args()
-    builder_rates(args.member)
+    if not args.skip_rates:
+        builder_rates(args.member)
     if args.members:
         members()
     if args.eight:
         eight()
     if args.headroom:
-        headroom_time()
+        headroom_time(args.jobs)
     if args.robot:
         robot()
 

@@ -21,9 +21,10 @@ from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.equivariant import canonical_answers
 from hg_marl.agents.models.keyed import SegmentTable
+from hg_marl.agents.models.live import LiveAnswers
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.models.partners import Answers, batch_answers
-from hg_marl.core import Agent, State, World
+from hg_marl.core import Agent, World
 from hg_marl.core.errors import HumanError
 from hg_marl.core.spec import AgentSpec
 from hg_marl.envs.batched import BatchedRules
@@ -46,6 +47,8 @@ class AnswerTable:
         budget: read between live answers (phase :attr:`phase`).
         arrays: answer on arrays where the human has an array version (False: always live).
         batch: answers on arrays to use instead of the human's (the human may then be None).
+        jobs: worker processes for the live human's answers (0: one per CPU; ``live.py``): the answers
+            do not depend on it; with more than one, :meth:`close` the table when the model is built.
     """
 
     def __init__(
@@ -56,15 +59,18 @@ class AnswerTable:
         budget: Budget | None = None,
         arrays: bool = True,
         batch: Answers | None = None,
+        jobs: int = 1,
     ) -> None:
         self.world, self.human, self.packer = world, human, packer
+        self.live = LiveAnswers(world, human, jobs)
+        """Asks the live human, in ``jobs`` forked workers (``agents/models/live.py``); close with :meth:`close`."""
         self.budget = budget
         self.rules = BatchedRules(world)
         self.uses_robot_action = bool(getattr(human, "uses_robot_action", False))
         self.table = SegmentTable(FIELDS)
         self.batch = batch or (batch_answers(world, human) if arrays else None)
         """The human's answers on arrays (``agents/models/partners.py``), None to ask it live."""
-        self.canonical = canonical_answers(world, human, packer) if arrays and self.batch is None else None
+        self.canonical = canonical_answers(world, human, packer, self.live) if arrays and self.batch is None else None
         """An equivariant human asked once per canonical key (``agents/models/equivariant.py``)."""
         self.live_calls = 0
         """Distributions asked of the live human (the rest came from the table)."""
@@ -111,21 +117,14 @@ class AnswerTable:
             return
         wheres, ats = states.where.tolist(), states.robot_at.tolist()
         bys, objs, seens = states.offer_by.tolist(), states.offer_obj.tolist(), seen.tolist()
-        acts: list[int] = []
-        probs: list[float] = []
-        sizes = [0] * len(missing)
-        world, distribution, budget = self.world, self.human.distribution, self.budget
-        for i in range(len(missing)):
-            if budget is not None and i % CHECK_EVERY == 0:
-                budget.check(self.phase, i, len(missing), "partner answers of this step", memory=i % 4096 == 0)
-            dist = distribution(world, State(tuple(wheres[i]), ats[i], bys[i], objs[i]), seens[i])
-            for h, p in dist:
-                if p > 0.0:
-                    acts.append(h)
-                    probs.append(p)
-                    sizes[i] += 1
+        questions = [(tuple(w), a, b, o, r) for w, a, b, o, r in zip(wheres, ats, bys, objs, seens, strict=True)]
+        size, actions, probs_arr = self.live(questions, self._check)
         self.live_calls += len(missing)
-        self._store(missing, np.array(sizes, dtype=np.int64), np.array(acts, dtype=np.int64), np.array(probs))
+        self._store(missing, size, actions, probs_arr)
+
+    def close(self) -> None:
+        """Stop the live human's worker processes, if it has any (a later :meth:`ensure` forks new ones)."""
+        self.live.close()
 
     def _check(self, i: int, total: int) -> None:
         if self.budget is not None and i % CHECK_EVERY == 0:

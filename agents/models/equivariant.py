@@ -15,29 +15,28 @@ batch with array look-ups: on ``roboergosum``'s headroom model the cooperative h
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
 from hg_marl.agents.models.keyed import SegmentTable, known, ranges, unique_first_inverse
+from hg_marl.agents.models.live import Check, LiveAnswers
 from hg_marl.agents.models.packing import StatePacker
-from hg_marl.core import Agent, Kind, State, World
+from hg_marl.core import Agent, Kind, World
 from hg_marl.core.relabel import Relabel
 from hg_marl.envs.batched import BatchState
 
-Check = Callable[[int, int], None]
-"""Called with (live answers done, live answers of this batch) between live answers."""
 
-
-def canonical_answers(world: World, human: Any, packer: StatePacker) -> CanonicalAnswers | None:
-    """The canonical-key answers of ``human``, or None when it is not equivariant in this way."""
+def canonical_answers(
+    world: World, human: Any, packer: StatePacker, live: LiveAnswers | None = None
+) -> CanonicalAnswers | None:
+    """The canonical-key answers of ``human`` (asked through ``live``), or None if it is not equivariant so."""
     if not getattr(human, "equivariant", False):
         return None
     uses = bool(getattr(human, "uses_robot_action", False))
     if uses and not callable(getattr(human, "seen_representatives", None)):
         return None
-    return CanonicalAnswers(world, human, packer)
+    return CanonicalAnswers(world, human, packer, live)
 
 
 def object_slots(world: World, agent: Agent) -> tuple[np.ndarray, np.ndarray]:
@@ -84,8 +83,10 @@ def actions_back(
 class CanonicalAnswers:
     """Answers by canonical (state, representative seen) key; the live partner asked once per key."""
 
-    def __init__(self, world: World, human: Any, packer: StatePacker) -> None:
+    def __init__(self, world: World, human: Any, packer: StatePacker, live: LiveAnswers | None = None) -> None:
         self.world, self.human, self.packer = world, human, packer
+        self.live = live or LiveAnswers(world, human)
+        """Asks the live partner (in forked workers where it was given jobs)."""
         self.uses_robot_action = bool(getattr(human, "uses_robot_action", False))
         reps = human.seen_representatives(world) if self.uses_robot_action else []
         self.rep = np.array([*reps, -1], dtype=np.int64)
@@ -120,17 +121,8 @@ class CanonicalAnswers:
         rows = first[new].tolist()
         wheres, ats = canon.where[rows].tolist(), canon.robot_at[rows].tolist()
         bys, objs, reps = canon.offer_by[rows].tolist(), canon.offer_obj[rows].tolist(), rep[rows].tolist()
-        sizes = [0] * len(rows)
-        acts: list[int] = []
-        probs: list[float] = []
-        world, distribution = self.world, self.human.distribution
-        for i in range(len(rows)):
-            check(i, len(rows))
-            for h, p in distribution(world, State(tuple(wheres[i]), ats[i], bys[i], objs[i]), reps[i]):
-                if p > 0.0:
-                    acts.append(h)
-                    probs.append(p)
-                    sizes[i] += 1
+        questions = [(tuple(w), a, b, o, r) for w, a, b, o, r in zip(wheres, ats, bys, objs, reps, strict=True)]
+        sizes, acts, probs = self.live(questions, check)
         self.live_calls += len(rows)
-        answers = {"actions": np.array(acts, dtype=np.int64), "probs": np.array(probs, dtype=np.float64)}
-        self.table.add(uniq[new], np.array(sizes, dtype=np.int64), answers)
+        answers = {"actions": acts, "probs": probs}
+        self.table.add(uniq[new], sizes, answers)

@@ -152,3 +152,10 @@ def test_a_partner_given_as_an_agent_spec_answers_with_its_parameters() -> None:
     from_spec = idle(AgentSpec("lazy", {"p_idle": 0.5}))
     assert from_spec == idle("lazy:p_idle=0.5")
     assert from_spec >= 0.5 and idle("lazy") < from_spec
+
+
+def test_answers_on_arrays_read_the_budget_once_before_the_batch() -> None:
+    # a preference member has an array form: one reading, at 0 of the batch's keys, memory included
+    table, budget, n_keys = _answered("preference:handover=1.0", 40, arrays=True)
+    assert table.batch is not None and table.live_calls == 0
+    assert budget.readings == [("answers", 0, n_keys, "partner answers on arrays", True)]

@@ -23,9 +23,17 @@ def register(app: typer.Typer) -> None:
         ),
         max_states: Annotated[int, typer.Option(min=1, help="Refuse beyond this many model states.")] = 1_500_000,
         max_seconds: Annotated[float, typer.Option(help="Wall-time budget in seconds (over it: exit 2).")] = 600.0,
+        jobs: Annotated[
+            int,
+            typer.Option(
+                help="Worker processes for the planner's answers, the policies and the rates (0: one per CPU); "
+                "the matrix does not depend on it.",
+            ),
+        ] = 1,
     ) -> None:
         """Policy optimal against A played with T over the optimum with T; 1 - IQM of the cooperative row."""
         from hg_marl.agents.humans import HumanError
+        from hg_marl.agents.models.forked import check_jobs
         from hg_marl.agents.oracle import OracleTooLarge
         from hg_marl.core.errors import ConfigError, check_finite
         from hg_marl.core.scenario import load_scenario
@@ -34,12 +42,18 @@ def register(app: typer.Typer) -> None:
         from hg_marl.training.headroom import partners, write_headroom
 
         check_out_dir(out, "--out")
+        try:
+            check_jobs(jobs, "--jobs")
+        except ValueError as exc:
+            raise ConfigError(str(exc)) from None
         check_finite(max_seconds, "--max-seconds", positive=True)
         specs = split_specs(humans or "")
         columns, held_out = partners(population, specs)
         load_scenario(scenario)
         try:
-            result = write_headroom(scenario, columns, held_out, out, max_states=max_states, max_seconds=max_seconds)
+            result = write_headroom(
+                scenario, columns, held_out, out, max_states=max_states, max_seconds=max_seconds, jobs=jobs
+            )
         except (HumanError, OracleTooLarge) as exc:
             raise ConfigError(str(exc)) from None
         width = max(len(a) for a in result.assumed)
