@@ -11,7 +11,7 @@ MUTATION_ARGS ?=
 RAY_VENV ?= .venv-ray
 TEST_WORKERS ?= 2
 # noxfile.py's sessions, longest first (tests/test_ci_config.py checks none is missing)
-NOX_SESSIONS := cleanrl rllib tianshou core_lowest supersuit
+NOX_SESSIONS := rllib cleanrl core_lowest tianshou supersuit
 INTEGRATION_JOBS ?= $(TEST_WORKERS)
 
 .PHONY: setup reproduce test test-slow test-browser test-ray test-integrations $(addprefix nox-,$(NOX_SESSIONS)) test-mutation mutation-full lint docs bench clean
@@ -43,7 +43,7 @@ test-slow: setup
 	$(BIN)/python -m pytest -n $(TEST_WORKERS) -m "slow and not integrations and not browser and not ray" $(PYTEST_ARGS)
 
 # The MARL libraries (Tianshou, RLlib, SuperSuit+SB3, CleanRL-style, make_vec) and the
-# lowest/newest gymnasium and pettingzoo, each in its own nox environment (noxfile.py),
+# lowest gymnasium and pettingzoo (the newest are make test's), each in its own nox environment (noxfile.py),
 # two sessions at a time (INTEGRATION_JOBS), longest first; each session's output is
 # printed whole when it ends (--output-sync), so the two never interleave.
 test-integrations: setup

@@ -1,10 +1,12 @@
-"""Version matrix: each MARL library in its own environment, and the core at the lowest and newest declared versions.
+"""Version matrix: each MARL library in its own environment, and the core at the lowest declared versions.
 
 ``make test-integrations`` runs every session (``nox -l`` lists them). Each session
 installs the project with that library's extra, so the library brings its own
 requirements (Tianshou pins pandas<3, RLlib pins its own gymnasium), and runs the
 examples' tests for that library with ``HG_MARL_INTEGRATION`` set, so a missing
-library fails instead of skipping. Every session that pulls torch pins
+library fails instead of skipping. The core at the newest versions is the main
+environment's (``make test``): it resolves the same newest gymnasium, pettingzoo and numpy
+as these sessions do, so running the core tests here again would repeat that run. Every session that pulls torch pins
 ``torch==2.13.0`` through the extras (the CPU wheel; an unpinned torch may download a
 multi-GB CUDA build).
 
@@ -80,13 +82,8 @@ def examples(session: nox.Session, extra: str, selector: str, name: str) -> None
 
 @nox.session
 def cleanrl(session: nox.Session) -> None:
-    """CleanRL-style masked PPO, gymnasium.make_vec(async) into MaskablePPO, and the core at the newest versions.
-
-    This environment resolves the newest gymnasium and pettingzoo, so it also runs the
-    core tests there (one install fewer than a separate session: the stage's budget).
-    """
+    """CleanRL-style masked PPO and gymnasium.make_vec(async) into MaskablePPO."""
     examples(session, "sb3", "cleanrl or make_vec", "cleanrl")
-    session.run(*PYTEST, "-m", "not slow and not integrations", *CORE_TESTS, env=OWN_EXTRA_ONLY)
 
 
 @nox.session
