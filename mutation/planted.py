@@ -1439,7 +1439,126 @@ FRESH12 = (
 )
 
 
-ALL = BUGS + FRESH + FRESH2 + FRESH3 + FRESH4 + FRESH5 + FRESH6 + FRESH7 + FRESH8 + FRESH9 + FRESH10 + FRESH11 + FRESH12
+# Thirteenth round: bugs written from the sources (not their tests): the forked workers and the live
+# partner's chunked answers, the parallel part of headroom(), and the gated modules planted in least.
+FRESH13 = (
+    Bug(
+        "fresh13 forked: jobs=1 read as 'one per CPU' (only jobs > 1 kept as given)",
+        "agents/models/forked.py",
+        "return jobs if jobs > 0 else min(os.cpu_count() or 1, MAX_JOBS)",
+        "return jobs if jobs > 1 else min(os.cpu_count() or 1, MAX_JOBS)",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh13 forked: the workers left running after an error or refusal in a parallel map",
+        "agents/models/forked.py",
+        "        except BaseException:\n            self.close()\n            raise\n",
+        "        except BaseException:\n            raise\n",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh13 live: the parallel progress reports whole chunks, past the number of questions asked",
+        "agents/models/live.py",
+        "lambda done: check(min(done * CHUNK, len(rows)), len(rows))",
+        "lambda done: check(done * CHUNK, len(rows))",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh13 live: in this process, check told an answer is done before it is computed (1..n, not 0..n-1)",
+        "agents/models/live.py",
+        "                check(i, len(rows))\n",
+        "                check(i + 1, len(rows))\n",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh13 headroom: the progress bar counts the call made before any result, so it ends two past its total",
+        "agents/headroom.py",
+        "bar.update(min(done, 1))",
+        "bar.update(1)",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh13 headroom: the rates matrix reshaped from the per-partner columns without transposing them",
+        "agents/headroom.py",
+        "rates = np.array(by_column, dtype=float).T.reshape(len(rows), len(col))",
+        "rates = np.array(by_column, dtype=float).reshape(len(rows), len(col))",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh13 headroom: the budget told the unit as the phase and the phase as the unit",
+        "agents/headroom.py",
+        "budget.check(phase, done, total, unit)",
+        "budget.check(unit, done, total, phase)",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh13 answers: arrays=False still asks an equivariant human once per canonical key, not live per key",
+        "agents/models/answers.py",
+        "if arrays and self.batch is None else None",
+        "if self.batch is None else None",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh13 equivariant: a state's answers left in the canonical entries' order, not re-sorted by action index",
+        "agents/models/equivariant.py",
+        "order = np.lexsort((back, rows))",
+        'order = np.argsort(rows, kind="stable")',
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh13 keyed: keys added out of order stored with the entry positions of the keys in their sorted places",
+        "agents/models/keyed.py",
+        "self.first = np.insert(self.first, at, first[order])",
+        "self.first = np.insert(self.first, at, first)",
+        gate("model_keyed"),
+    ),
+    Bug(
+        "fresh13 registry: a constructor's own HgMarlError re-wrapped as the registry's error, prefixed with the name",
+        "hg_marl/core/registry.py",
+        "        except HgMarlError:\n            raise\n",
+        "",
+        gate("registry"),
+    ),
+    Bug(
+        "fresh13 model format: a folder holding both headers resolves to policy.json, not model.json",
+        "agents/model_format.py",
+        'HEADER_NAMES = ("model.json", "policy.json")',
+        'HEADER_NAMES = ("policy.json", "model.json")',
+        gate("model_format"),
+    ),
+    Bug(
+        "fresh13 scenario file: a scenario without robot_start starts the robot at its last location, not its first",
+        "hg_marl/core/scenario_file.py",
+        '"robot_start", "robot_start", locs, [locs[0]])',
+        '"robot_start", "robot_start", locs, [locs[-1]])',
+        gate("scenario_file"),
+    ),
+    Bug(
+        "fresh13 atomic: a write that fails with anything but OSError leaves its temporary file behind",
+        "hg_marl/core/atomic.py",
+        "    except BaseException:\n        Path(tmp).unlink(missing_ok=True)\n        raise\n",
+        "",
+        gate("atomic"),
+    ),
+)
+
+
+ALL = (
+    BUGS
+    + FRESH
+    + FRESH2
+    + FRESH3
+    + FRESH4
+    + FRESH5
+    + FRESH6
+    + FRESH7
+    + FRESH8
+    + FRESH9
+    + FRESH10
+    + FRESH11
+    + FRESH12
+    + FRESH13
+)
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:

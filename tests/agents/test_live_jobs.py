@@ -228,3 +228,24 @@ def test_one_process_by_default_and_one_item_is_mapped_here() -> None:
     with Forked(lambda i: os.getpid(), jobs=2) as workers:
         assert workers.map([5]) == [os.getpid()] and not workers.started  # forking for one item costs more
         assert os.getpid() not in workers.map([5, 6]) and workers.started
+
+
+def test_the_budget_is_read_per_policy_then_per_partner(monkeypatch: pytest.MonkeyPatch) -> None:
+    import hg_marl.agents.headroom as headroom_module
+    from hg_marl.agents.models.budget import Budget
+
+    readings: list[tuple[str, int, int | None, str]] = []
+
+    class Recording(Budget):
+        def check(self, phase: str, done: int, total: int | None = None, unit: str = "states", **kw: object) -> None:
+            if phase in ("policies", "rates"):
+                readings.append((phase, done, total, unit))
+            super().check(phase, done, total, unit, **kw)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(headroom_module, "Budget", Recording)
+    headroom(CROSSING, [("G", G), ("C", C)], jobs=2)
+    # three rows (cooperative, G, C), then two columns: a reading before the first result and after each
+    assert readings == [
+        *(("policies", i, 3, "policies") for i in range(4)),
+        *(("rates", i, 2, "partners") for i in range(3)),
+    ]

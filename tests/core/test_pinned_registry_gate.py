@@ -56,3 +56,17 @@ def test_a_python_only_parameter_is_not_listed_among_those_a_spec_can_set() -> N
     entry = Registry("toy", ConfigError, [Trained])["trained"]
     assert list(entry.params) == ["speed"]
     assert entry.params["speed"].default == 1.5
+
+
+def test_a_constructors_own_error_passes_through_unwrapped() -> None:
+    # the learned human's own HumanError and ModelFileError keep their type and their words:
+    # the registry does not prefix them with the spec a second time
+    from hg_marl.agents.humans import make_human
+    from hg_marl.core.errors import HumanError, ModelFileError
+
+    with pytest.raises(HumanError) as info:
+        make_human("learned")
+    assert str(info.value) == "human 'learned' needs a policy: learned:path=FOLDER"
+    with pytest.raises(ModelFileError) as missing:
+        make_human("learned:path=/nonexistent")
+    assert str(missing.value) == "human 'learned': path /nonexistent: no such model header (nonexistent.json)"

@@ -133,3 +133,21 @@ def test_each_documented_size_limit_is_accepted_and_one_more_refused(name: str, 
     assert f"{limit + 1} {name} is over the limit {limit} (set HG_MARL_MAX_{name.upper()} to raise it)" in str(
         info.value
     )
+
+
+def test_without_robot_start_the_robot_starts_at_its_first_location(tmp_path: Path) -> None:
+    # forced_coordination's locations are bin_side, pass; its file says robot_start = bin_side.
+    # Without that line the robot starts at the first location, bin_side (index 0), not at pass.
+    text = (Path(__file__).parents[2] / "hg_marl/core/scenarios/forced_coordination.toml").read_text()
+    assert 'robot_start = ["bin_side"]\n' in text
+    moved = tmp_path / "no_start.toml"
+    moved.write_text(
+        text.replace('robot_start = ["bin_side"]\n', "").replace(
+            'robot_locations = ["bin_side", "pass"]', 'robot_locations = ["pass", "bin_side"]'
+        )
+    )
+    plain = tmp_path / "plain.toml"
+    plain.write_text(text.replace('robot_start = ["bin_side"]\n', ""))
+    assert load_scenario(str(plain)).robot_start == (0,)
+    assert load_scenario(str(moved)).robot_start == (0,)  # still the first listed, now pass
+    assert load_scenario(str(moved)).robot_locations[0] == "pass"
