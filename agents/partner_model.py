@@ -44,6 +44,15 @@ FAILED = -1
 
 Context = tuple[bool, bool, bool, int]
 
+NEVER = 1e-9
+"""A kind is refused when its (forgetting) share of the answers at which it was feasible is
+below this: not done once within the model's memory (one occurrence weighs ``forget ** n``
+after n more chances, under 1e-9 after about 400 at 0.95). A share of 10% refused kinds a
+partner does late rather than never (a partner who holds an object 30 s before placing it,
+one who rests between bursts of work): planned without them, the robot lost to the
+fixed-model planner on five family-out cells out of 32; with "never" on two
+(``docs/adaptation.md``, section 7)."""
+
 
 class LearnedPartner:
     """Dirichlet counts of the partner's action kind per abstract context.
@@ -114,8 +123,8 @@ class LearnedPartner:
             self.chances[k] = self.forget * self.chances.get(k, 0.0) + 1.0
             self.taken[k] = self.forget * self.taken.get(k, 0.0) + float(k == kind)
 
-    def refused_kinds(self, min_chances: float = 3.0, below: float = 0.1) -> frozenset[Kind]:
-        """Kinds the partner (almost) never does when it can: feasible ``min_chances`` times, done < ``below``."""
+    def refused_kinds(self, min_chances: float = 3.0, below: float = NEVER) -> frozenset[Kind]:
+        """Kinds the partner never does when it can: feasible ``min_chances`` times, done < ``below`` of them."""
         return frozenset(
             Kind(k)
             for k, n in self.chances.items()

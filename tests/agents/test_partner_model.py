@@ -132,3 +132,25 @@ def test_hybrid_habit_reads_the_partner_models_verdicts() -> None:
     plain = make_robot("hybrid")
     run(plain, make_human("lazy:p_idle=0.3"), RunConfig(duration=300, seed=0))
     assert plain.partner_model is None and plain.habit.n_facts == n
+
+
+def test_a_kind_done_once_is_not_refused_until_it_leaves_the_memory() -> None:
+    """One take, then refusals (forget 0.95). After 30 refusals take's share is
+    0.95**30 / ((1 - 0.95**31) / 0.05) = 0.215 / 15.9, about 1.4%: done late, not never, so
+    not refused (a share of 10% once refused it). After 400 refusals the take weighs
+    0.95**400 = 1.2e-9 of about 20 chances: under 1e-9 of them, refused."""
+    world = World("paper2015")
+    mid, give = offered_state(world)
+    wait = world.n_actions(Agent.HUMAN) - 1
+    take = next(i for i in world.feasible_indices(mid, Agent.HUMAN) if world.actions(Agent.HUMAN)[i].kind is Kind.TAKE)
+    model = LearnedPartner(forget=0.95)
+    model.update(world, mid, give, take)
+    for _ in range(30):
+        model.update(world, mid, give, wait)
+    share = model.taken[int(Kind.TAKE)] / model.chances[int(Kind.TAKE)]
+    assert share == pytest.approx(0.95**30 / ((1 - 0.95**31) / 0.05), rel=1e-9)
+    assert Kind.TAKE not in model.refused_kinds()
+    assert Kind.TAKE in model.refused_kinds(below=0.1)  # the former verdict
+    for _ in range(370):
+        model.update(world, mid, give, wait)
+    assert Kind.TAKE in model.refused_kinds()
