@@ -49,9 +49,8 @@ NEVER = 1e-9
 below this: not done once within the model's memory (one occurrence weighs ``forget ** n``
 after n more chances, under 1e-9 after about 400 at 0.95). A share of 10% refused kinds a
 partner does late rather than never (a partner who holds an object 30 s before placing it,
-one who rests between bursts of work): planned without them, the robot lost to the
-fixed-model planner on five family-out cells out of 32; with "never" on two
-(``docs/adaptation.md``, section 7)."""
+one who rests between bursts of work): planned without them, the robot planned as if they
+would never come (``docs/adaptation.md``, section 7)."""
 
 
 class LearnedPartner:

@@ -68,6 +68,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import replace
+from typing import Any
 
 import numpy as np
 
@@ -78,7 +79,8 @@ from hg_marl.agents.partner import PartnerPosterior
 from hg_marl.agents.partner_model import LearnedPartner
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.agents.progress import ProgressGuard
-from hg_marl.agents.robots.base import Robot
+from hg_marl.agents.robots.base import Robot, make_planner
+from hg_marl.agents.robots.partnering import MAX_PLANNERS
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.core import Agent, Kind, State, World
 from hg_marl.core.errors import RobotError, check_bool
@@ -181,6 +183,8 @@ class BeliefRobot(Robot):
         self._never_takes = MemberModels(tuple(never_takes(spec) for spec in self.member_specs), cache)
         self._fallback = OracleRobot(result=None)
         self._planner = PlannerRobot()
+        self._checkers: dict[Any, Any] = {}
+        """A planner per learned model, asked whether that model leaves the table clearable."""
         self._prev: tuple[State, int] | None = None
         self.progress = ProgressGuard()
 
@@ -202,6 +206,7 @@ class BeliefRobot(Robot):
         self._fallback.result = OracleResult(0.0, math.inf, 0, 0, 0, 0, True, {}, {}, scenario=world.scenario.name)
         self._fallback.reset(world, self.agent, self.rng)
         self._planner.reset(world, self.agent, self.rng.spawn(1)[0])
+        self._checkers = {}
         self._off_population = False
         self.progress.reset()
 
@@ -279,6 +284,15 @@ class BeliefRobot(Robot):
             out[a] = q
         return out
 
+    def _clears(self, world: World, model: Any, state: State) -> bool:
+        """Whether a planner with the human ``model`` finds a plan that clears the table from ``state``."""
+        planner = self._checkers.get(model)
+        if planner is None:
+            if len(self._checkers) >= MAX_PLANNERS:
+                self._checkers.pop(next(iter(self._checkers)))
+            planner = self._checkers[model] = make_planner(world, self._planner.planner_config, model)
+        return bool(planner.intent(state).success)
+
     def _unexplained_waits(self, turn: Turn, weights: list[float]) -> bool:
         """Whether robot and partner have both been waiting at this unfinished table longer than the belief explains.
 
@@ -340,8 +354,16 @@ class BeliefRobot(Robot):
                 self._planner.last_decision = None  # its expectation from an earlier spell is stale
             self._off_population = True
             if self.posterior.learned is not None:
-                # Plan as the partner behaves: without the kinds of action it refuses.
-                self._planner.partnering.base = self.posterior.learned.planner_model()
+                # Plan as the partner behaves: without the kinds of action it refuses, unless
+                # without them the table cannot be cleared from here and with the fixed model it
+                # can (the partner has not yet shown every kind it will do): then as the
+                # fixed-model planner plans.
+                partnering = self._planner.partnering
+                learned, fixed = self.posterior.learned.planner_model(), partnering.fixed
+                keep = self._clears(world, partnering.monitor.model(learned), state) or not self._clears(
+                    world, partnering.monitor.model(fixed), state
+                )
+                partnering.base = learned if keep else fixed
             action = self._planner.act(turn)
             record = self._planner.last_decision
             assert record is not None

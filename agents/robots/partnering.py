@@ -39,6 +39,8 @@ class Partnering:
         self.world = world
         self._make = functools.partial(make_planner, world, planner_config)  # picklable, unlike a lambda
         self.base: Any = human_model if human_model is not None else cooperative()
+        self.fixed: Any = self.base
+        """The base model it was built with (a fixed-model planner's), kept when ``base`` is replaced."""
         self.monitor = PartnerMonitor()
         self.posterior = PartnerPosterior() if partner_aware else None
         self._planners: dict[Any, Any] = {}
