@@ -126,6 +126,43 @@ def test_the_information_of_a_reply_worked_by_hand(tmp_path: Path) -> None:
     assert robot.information(world, state, wait, [0.5, 0.5]) == pytest.approx(0.0, abs=1e-12)
 
 
+class _Seer:
+    """A stand-in member that reads the robot's action: reply ``failed`` when it saw a failure (-1), else ``other``."""
+
+    uses_robot_action = True
+
+    def __init__(self, failed: int, other: int) -> None:
+        self.failed, self.other = failed, other
+
+    def distribution(self, world: World, state: object, robot_action: int = -1) -> list[tuple[int, float]]:
+        return [(self.failed if robot_action == -1 else self.other, 1.0)]
+
+
+def test_a_member_that_reads_the_robot_action_sees_a_failure_as_minus_one(tmp_path: Path) -> None:
+    """A failing robot action is shown to the members as -1. The seer then replies a, the
+    fixed member b: the two disagree, and the information is the worked value of the test
+    above; had the seer been shown anything else, both would reply b (0 nats)."""
+    robot = BeliefRobot(population=_population(tmp_path), splits="train", epsilon=0.05, unknown=0.0)
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(0))
+    failing = next(
+        a for a in range(world.n_actions(Agent.ROBOT)) if a not in world.feasible_indices(state, Agent.ROBOT)
+    )
+    mid, ok, _ = world.table.successor(state, Agent.ROBOT, failing)
+    assert not ok
+    replies = world.feasible_indices(mid, Agent.HUMAN)
+    a, b = replies[0], replies[-1]
+    n = len(replies)
+    q, r = 0.95 + 0.05 / n, 0.05 / n
+
+    def h(ps: list[float]) -> float:
+        return -sum(p * math.log(p) for p in ps)
+
+    robot.posterior.humans = [_Seer(a, b), _Fixed(b)]
+    expected = h([(q + r) / 2] * 2 + [r] * (n - 2)) - h([q] + [r] * (n - 1))
+    assert robot.information(world, state, failing, [0.5, 0.5]) == pytest.approx(expected)
+
+
 def test_a_probe_costs_at_most_its_budget_and_no_budget_never_probes() -> None:
     import re
 
