@@ -1543,6 +1543,152 @@ FRESH13 = (
 )
 
 
+# Fourteenth round: bugs written from the sources (not their tests): the belief robot's fallback from the
+# learned model to the fixed one (its checkers, the fixed model read), the learned model's refusal
+# threshold, the fixed model kept by the partnering, and user-facing modules outside the mutation gate.
+FRESH14 = (
+    Bug(
+        "fresh14 belief: clearability checkers keyed by the model's name (a learned model with other kinds: stale)",
+        "agents/robots/belief.py",
+        "        planner = self._checkers.get(model)\n"
+        "        if planner is None:\n"
+        "            if len(self._checkers) >= MAX_PLANNERS:\n"
+        "                self._checkers.pop(next(iter(self._checkers)))\n"
+        "            planner = self._checkers[model] = make_planner(",
+        "        planner = self._checkers.get(model.name)\n"
+        "        if planner is None:\n"
+        "            if len(self._checkers) >= MAX_PLANNERS:\n"
+        "                self._checkers.pop(next(iter(self._checkers)))\n"
+        "            planner = self._checkers[model.name] = make_planner(",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh14 belief: the fallback model read from partnering.base (learned after a first spell), not .fixed",
+        "agents/robots/belief.py",
+        "learned, fixed = self.posterior.learned.planner_model(), partnering.fixed",
+        "learned, fixed = self.posterior.learned.planner_model(), partnering.base",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh14 partner model: NEVER is 1e-6, so a kind done once is refused after ~210 chances, not ~350",
+        "agents/partner_model.py",
+        "NEVER = 1e-9\n",
+        "NEVER = 1e-6\n",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh14 partnering: the fixed model is always the cooperative one, not the human_model it was built with",
+        "agents/robots/partnering.py",
+        "self.fixed: Any = self.base",
+        "self.fixed: Any = cooperative()",
+        gate("belief", "tests/agents/test_partner.py", "tests/agents/test_partner_model.py"),
+    ),
+    Bug(
+        "fresh14 regret: bootstrap_ci cuts the whole (1 - level) from each tail (a 90% interval for level 0.95)",
+        "training/regret.py",
+        "tail = (1.0 - level) / 2.0 * 100.0",
+        "tail = (1.0 - level) * 100.0",
+        ("tests/training/test_regret.py", "tests/training/test_pinned_round14.py"),
+    ),
+    Bug(
+        "fresh14 play stats: summarise counts a game without offers as 0% handover acceptance",
+        "training/play/stats.py",
+        "offered = [s.handover_acceptance for s in stats if s.handover_acceptance is not None]",
+        "offered = [s.handover_acceptance or 0.0 for s in stats]",
+        ("tests/play/test_traces.py", "tests/training/test_pinned_round14.py"),
+    ),
+    Bug(
+        "fresh14 paper: mean_amplitude drops a finished run from the mean instead of holding its last value",
+        "training/paper.py",
+        "        table[k, len(values) :] = values[-1] if len(values) else np.nan\n",
+        "",
+        ("tests/training/test_figures.py", "tests/training/test_pinned_round14.py"),
+    ),
+    Bug(
+        "fresh14 comparison: best_fraction is the best seed's best, not the mean over seeds of each seed's best",
+        "training/baselines/comparison.py",
+        '"best_fraction": _fraction(float(np.mean(bests)), oracle),',
+        '"best_fraction": _fraction(float(np.max(bests)), oracle),',
+        (
+            "tests/training/test_comparison.py",
+            "tests/training/test_ppo_batched.py",
+            "tests/training/test_pinned_round14.py",
+        ),
+    ),
+    Bug(
+        "fresh14 study: narrowing the humans keeps every held-out test label in the study's test list",
+        "training/study.py",
+        "test=tuple(t for t in self.test if t in labels),",
+        "test=self.test,",
+        (
+            "tests/fuzz/test_bounds.py",
+            "tests/training/test_br_prox.py",
+            "tests/training/test_evaluate.py",
+            "tests/training/test_pinned_limits_gate.py",
+            "tests/training/test_pinned_report.py",
+            "tests/training/test_ray.py",
+            "tests/training/test_study_population.py",
+            "tests/training/test_pinned_round14.py",
+        ),
+    ),
+    Bug(
+        "fresh14 evaluate: the best-robot reference is a robot's best seed's rate, not its mean rate",
+        "training/evaluate.py",
+        'groupby("robot", sort=False)["rate"].mean()',
+        'groupby("robot", sort=False)["rate"].max()',
+        (
+            "tests/training/test_br_prox.py",
+            "tests/training/test_evaluate.py",
+            "tests/training/test_ray.py",
+            "tests/training/test_study_population.py",
+            "tests/training/test_pinned_round14.py",
+        ),
+    ),
+    Bug(
+        "fresh14 plots: the adaptation figure's 95% band is the bootstrap's 5th to 95th percentile (a 90% band)",
+        "training/plots.py",
+        "np.percentile(boot, [2.5, 97.5], axis=0)",
+        "np.percentile(boot, [5.0, 95.0], axis=0)",
+        (
+            "tests/training/test_figures.py",
+            "tests/training/test_pinned_adaptation.py",
+            "tests/training/test_pinned_heldout_curve_gate.py",
+            "tests/training/test_store_inputs.py",
+            "tests/training/test_switching.py",
+            "tests/training/test_pinned_round14.py",
+        ),
+    ),
+    Bug(
+        "fresh14 explain: a situation learnt from 0 times reads '0 time' (plural only above 1)",
+        "training/play/explain.py",
+        "time{'s' if n != 1 else ''}",
+        "time{'s' if n > 1 else ''}",
+        ("tests/play/test_explain.py", "tests/training/test_pinned_round14.py"),
+    ),
+    Bug(
+        "fresh14 population: members('all') lists the held-out members before the validation ones",
+        "agents/humans/population.py",
+        "return (*self.train, *self.validation, *self.held_out)",
+        "return (*self.train, *self.held_out, *self.validation)",
+        (
+            "tests/agents/test_models.py",
+            "tests/agents/test_population.py",
+            "tests/fuzz/test_bounds.py",
+            "tests/training/test_pinned_headroom.py",
+            "tests/training/test_population_gen.py",
+            "tests/training/test_recipes.py",
+        ),
+    ),
+    Bug(
+        "fresh14 colours: a label seen twice takes the colour of its last place, shifting the labels after it",
+        "training/colours.py",
+        "    unique = list(dict.fromkeys(labels))\n    return {label: PALETTE",
+        "    unique = list(labels)\n    return {label: PALETTE",
+        ("tests/training/test_figures.py", "tests/training/test_pinned_round14.py"),
+    ),
+)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -1558,6 +1704,7 @@ ALL = (
     + FRESH11
     + FRESH12
     + FRESH13
+    + FRESH14
 )
 
 

@@ -182,3 +182,71 @@ def test_the_learned_robot_keeps_up_with_the_planner_against_a_forgetful_partner
     robot = make_robot("belief", population="populations/hard_layouts.toml", open_world="learned")
     learned = run(robot, make_human("fo_forgetful"), config).summary["tasks_solved"]
     assert planner == 16 and learned >= planner
+
+
+def test_a_kind_done_once_250_chances_ago_is_still_not_refused() -> None:
+    """One pick, then 250 waits (forget 0.95): the pick weighs 0.95**250 = 2.7e-6 of about 20
+    chances, a share of 1.4e-7: above 1e-9, so not refused; after 350 waits (0.95**350 / 20,
+    about 8e-10) it is."""
+    world = World("forced_coordination")
+    state = world.initial_state(np.random.default_rng(0))
+    acts = world.actions(Agent.HUMAN)
+    pick = next(i for i in world.feasible_indices(state, Agent.HUMAN) if acts[i].kind is Kind.PICK)
+    wait = world.n_actions(Agent.HUMAN) - 1
+    model = LearnedPartner()
+    model.update(world, state, -1, pick)
+    for _ in range(250):
+        model.update(world, state, -1, wait)
+    share = model.taken[int(Kind.PICK)] / model.chances[int(Kind.PICK)]
+    assert share == pytest.approx(0.95**250 / ((1 - 0.95**251) / 0.05), rel=1e-9)
+    assert Kind.PICK not in model.refused_kinds() and Kind.PICK in model.planner_model().allowed_kinds
+    for _ in range(100):
+        model.update(world, state, -1, wait)
+    assert Kind.PICK in model.refused_kinds()
+
+
+def test_each_learned_model_gets_its_own_verdict() -> None:
+    """On forced_coordination the tapes start where only the human reaches: without the
+    human's pick nothing crosses, with every kind it does. Asked in turn, the same robot
+    answers each model for itself."""
+    from hg_marl.agents.planner.models import HUMAN_KINDS, RestrictedHuman
+
+    world = World("forced_coordination")
+    robot = make_robot("belief", population="populations/hard_layouts.toml", open_world="learned")
+    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
+    state = world.initial_state(np.random.default_rng(0))
+    assert robot._clears(world, RestrictedHuman("learned", HUMAN_KINDS), state)
+    assert not robot._clears(world, RestrictedHuman("learned", HUMAN_KINDS - {Kind.PICK}), state)
+
+
+def test_the_fallback_is_the_fixed_model_even_after_a_learned_one(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Off the population, turn 1's learned model (no throw: the human never throws on
+    forced_coordination anyway) clears and is planned with; turn 2's (no pick) clears
+    nothing, so the robot plans with the fixed cooperative model, not turn 1's."""
+    from hg_marl.agents.planner.models import HUMAN_KINDS, RestrictedHuman
+    from hg_marl.policy import Turn
+
+    world = World("forced_coordination")
+    robot = make_robot("belief", population="populations/hard_layouts.toml", open_world="learned")
+    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
+    names = [*robot.member_specs, robot.posterior.learned.name]
+    monkeypatch.setattr(robot.posterior, "posterior", lambda: {n: float(n == "learned") for n in names})
+    state = world.initial_state(np.random.default_rng(0))
+    partnering = robot._planner.partnering
+    for dropped in (Kind.THROW, Kind.PICK):
+        model = RestrictedHuman("learned", HUMAN_KINDS - {dropped})
+        monkeypatch.setattr(robot.posterior.learned, "planner_model", lambda m=model: m)
+        robot.act(Turn(world, state, Agent.ROBOT, {}))
+        if dropped is Kind.THROW:
+            assert partnering.base is model
+    assert partnering.base is partnering.fixed and Kind.PICK in partnering.fixed.allowed_kinds
+
+
+def test_the_fixed_model_is_the_one_the_planner_was_built_with() -> None:
+    from hg_marl.agents.planner.models import HUMAN_KINDS, RestrictedHuman
+    from hg_marl.agents.robots.planner import PlannerRobot
+
+    model = RestrictedHuman("no_handover", HUMAN_KINDS - {Kind.GIVE, Kind.TAKE})
+    robot = PlannerRobot(human_model=model)
+    robot.reset(World("forced_coordination"), Agent.ROBOT, np.random.default_rng(0))
+    assert robot.partnering.fixed is model and robot.partnering.base is model
