@@ -97,6 +97,21 @@ def test_the_open_world_posterior_worked_by_hand(tmp_path: Path) -> None:
     assert got[post.types[0]] == pytest.approx(0.95 / 2 / 1.95)
 
 
+def _disagreeing_pair(n: int) -> float:
+    """Nats told by two equally believed members each sure of a different one of ``n`` replies.
+
+    With slack epsilon = 0.05 a member gives its reply q = 0.95 + 0.05/n and every other reply
+    r = 0.05/n; the mixture gives the two replies (q + r)/2 each, the rest r. Mutual
+    information = H(mixture) - H(member) (both members have the same entropy).
+    """
+    q, r = 0.95 + 0.05 / n, 0.05 / n
+
+    def h(ps: list[float]) -> float:
+        return -sum(p * math.log(p) for p in ps)
+
+    return h([(q + r) / 2] * 2 + [r] * (n - 2)) - h([q] + [r] * (n - 1))
+
+
 def test_the_information_of_a_reply_worked_by_hand(tmp_path: Path) -> None:
     """Two members, equally believed: one sure of reply a, the other of reply b.
 
@@ -112,16 +127,8 @@ def test_the_information_of_a_reply_worked_by_hand(tmp_path: Path) -> None:
     mid, _, _ = world.table.successor(state, Agent.ROBOT, wait)
     replies = world.feasible_indices(mid, Agent.HUMAN)
     a, b = replies[0], replies[-1]
-    n = len(replies)
-    q, r = 0.95 + 0.05 / n, 0.05 / n
-
-    def h(ps: list[float]) -> float:
-        return -sum(p * math.log(p) for p in ps)
-
-    member = h([q] + [r] * (n - 1))
-    mixture = h([(q + r) / 2] * 2 + [r] * (n - 2))
     robot.posterior.humans = [_Fixed(a), _Fixed(b)]
-    assert robot.information(world, state, wait, [0.5, 0.5]) == pytest.approx(mixture - member)
+    assert robot.information(world, state, wait, [0.5, 0.5]) == pytest.approx(_disagreeing_pair(len(replies)))
     robot.posterior.humans = [_Fixed(a), _Fixed(a)]
     assert robot.information(world, state, wait, [0.5, 0.5]) == pytest.approx(0.0, abs=1e-12)
 
@@ -152,15 +159,8 @@ def test_a_member_that_reads_the_robot_action_sees_a_failure_as_minus_one(tmp_pa
     assert not ok
     replies = world.feasible_indices(mid, Agent.HUMAN)
     a, b = replies[0], replies[-1]
-    n = len(replies)
-    q, r = 0.95 + 0.05 / n, 0.05 / n
-
-    def h(ps: list[float]) -> float:
-        return -sum(p * math.log(p) for p in ps)
-
     robot.posterior.humans = [_Seer(a, b), _Fixed(b)]
-    expected = h([(q + r) / 2] * 2 + [r] * (n - 2)) - h([q] + [r] * (n - 1))
-    assert robot.information(world, state, failing, [0.5, 0.5]) == pytest.approx(expected)
+    assert robot.information(world, state, failing, [0.5, 0.5]) == pytest.approx(_disagreeing_pair(len(replies)))
 
 
 def test_a_probe_costs_at_most_its_budget_and_no_budget_never_probes() -> None:
