@@ -1272,6 +1272,17 @@ FRESH11 = (
 
 # Twelfth round: bugs written from the sources (not their tests) in modules outside the mutation gate,
 # each run against the test files that import its module.
+STUDY_IMPORTERS = (
+    "tests/fuzz/test_bounds.py",
+    "tests/training/test_br_prox.py",
+    "tests/training/test_evaluate.py",
+    "tests/training/test_pinned_limits_gate.py",
+    "tests/training/test_pinned_report.py",
+    "tests/training/test_ray.py",
+    "tests/training/test_study_population.py",
+)
+"""The test files that import ``training/study.py`` (rounds 12 and 14 plant there)."""
+
 FRESH12 = (
     Bug(
         "fresh12 regret: a completion at a grid time not yet counted (searchsorted side left), D one too high",
@@ -1285,15 +1296,7 @@ FRESH12 = (
         "training/study.py",
         "(a.name in names and a.name not in labels))",
         "(a.name in names))",
-        (
-            "tests/fuzz/test_bounds.py",
-            "tests/training/test_br_prox.py",
-            "tests/training/test_evaluate.py",
-            "tests/training/test_pinned_limits_gate.py",
-            "tests/training/test_pinned_report.py",
-            "tests/training/test_ray.py",
-            "tests/training/test_study_population.py",
-        ),
+        STUDY_IMPORTERS,
     ),
     Bug(
         "fresh12 evaluate: br_prox filled for every reference, the best robot's included, not only the oracle's",
@@ -1620,16 +1623,7 @@ FRESH14 = (
         "training/study.py",
         "test=tuple(t for t in self.test if t in labels),",
         "test=self.test,",
-        (
-            "tests/fuzz/test_bounds.py",
-            "tests/training/test_br_prox.py",
-            "tests/training/test_evaluate.py",
-            "tests/training/test_pinned_limits_gate.py",
-            "tests/training/test_pinned_report.py",
-            "tests/training/test_ray.py",
-            "tests/training/test_study_population.py",
-            "tests/training/test_pinned_round14.py",
-        ),
+        (*STUDY_IMPORTERS, "tests/training/test_pinned_round14.py"),
     ),
     Bug(
         "fresh14 evaluate: the best-robot reference is a robot's best seed's rate, not its mean rate",

@@ -21,7 +21,7 @@ from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.equivariant import canonical_answers
 from hg_marl.agents.models.keyed import SegmentTable
-from hg_marl.agents.models.live import LiveAnswers
+from hg_marl.agents.models.live import LiveAnswers, questions
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.models.partners import Answers, batch_answers
 from hg_marl.core import Agent, World
@@ -115,10 +115,8 @@ class AnswerTable:
             self.live_calls += self.canonical.live_calls - before
             self._store(missing, size, actions, probs_arr)
             return
-        wheres, ats = states.where.tolist(), states.robot_at.tolist()
-        bys, objs, seens = states.offer_by.tolist(), states.offer_obj.tolist(), seen.tolist()
-        questions = [(tuple(w), a, b, o, r) for w, a, b, o, r in zip(wheres, ats, bys, objs, seens, strict=True)]
-        size, actions, probs_arr = self.live(questions, self._check)
+        asked = questions(states.where, states.robot_at, states.offer_by, states.offer_obj, seen)
+        size, actions, probs_arr = self.live(asked, self._check)
         self.live_calls += len(missing)
         self._store(missing, size, actions, probs_arr)
 

@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.models.keyed import SegmentTable, known, ranges, unique_first_inverse
-from hg_marl.agents.models.live import Check, LiveAnswers
+from hg_marl.agents.models.live import Check, LiveAnswers, questions
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.core import Agent, Kind, World
 from hg_marl.core.relabel import Relabel
@@ -119,10 +119,10 @@ class CanonicalAnswers:
         if not len(new):
             return
         rows = first[new].tolist()
-        wheres, ats = canon.where[rows].tolist(), canon.robot_at[rows].tolist()
-        bys, objs, reps = canon.offer_by[rows].tolist(), canon.offer_obj[rows].tolist(), rep[rows].tolist()
-        questions = [(tuple(w), a, b, o, r) for w, a, b, o, r in zip(wheres, ats, bys, objs, reps, strict=True)]
-        sizes, acts, probs = self.live(questions, check)
+        asked = questions(
+            canon.where[rows], canon.robot_at[rows], canon.offer_by[rows], canon.offer_obj[rows], rep[rows]
+        )
+        sizes, acts, probs = self.live(asked, check)
         self.live_calls += len(rows)
         answers = {"actions": acts, "probs": probs}
         self.table.add(uniq[new], sizes, answers)

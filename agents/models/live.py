@@ -34,6 +34,14 @@ MIN_PARALLEL = 4 * CHUNK
 """Fewer questions than this are answered in this process (a message costs more than it saves)."""
 
 
+def questions(
+    where: np.ndarray, robot_at: np.ndarray, offer_by: np.ndarray, offer_obj: np.ndarray, seen: np.ndarray
+) -> list[Row]:
+    """The rows of a batch of states (their arrays) and the robot actions seen, as :data:`Row` questions."""
+    columns = (where.tolist(), robot_at.tolist(), offer_by.tolist(), offer_obj.tolist(), seen.tolist())
+    return [(tuple(w), a, b, o, r) for w, a, b, o, r in zip(*columns, strict=True)]
+
+
 class LiveAnswers:
     """The answers of ``partner`` (``distribution(world, state, seen)``) to lists of questions."""
 

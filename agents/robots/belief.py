@@ -65,6 +65,7 @@ the same values, so the robot decides as if every member had been solved at the 
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from dataclasses import replace
@@ -80,7 +81,7 @@ from hg_marl.agents.partner_model import LearnedPartner
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.agents.progress import ProgressGuard
 from hg_marl.agents.robots.base import Robot, make_planner
-from hg_marl.agents.robots.partnering import MAX_PLANNERS
+from hg_marl.agents.robots.partnering import planner_in
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.core import Agent, Kind, State, World
 from hg_marl.core.errors import RobotError, check_bool
@@ -286,11 +287,9 @@ class BeliefRobot(Robot):
 
     def _clears(self, world: World, model: Any, state: State) -> bool:
         """Whether a planner with the human ``model`` finds a plan that clears the table from ``state``."""
-        planner = self._checkers.get(model)
-        if planner is None:
-            if len(self._checkers) >= MAX_PLANNERS:
-                self._checkers.pop(next(iter(self._checkers)))
-            planner = self._checkers[model] = make_planner(world, self._planner.planner_config, model)
+        planner = planner_in(
+            self._checkers, model, functools.partial(make_planner, world, self._planner.planner_config)
+        )
         return bool(planner.intent(state).success)
 
     def _unexplained_waits(self, turn: Turn, weights: list[float]) -> bool:

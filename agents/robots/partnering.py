@@ -23,6 +23,17 @@ MAX_PLANNERS = 8
 """Planners kept (one per human model met in a run)."""
 
 
+def planner_in(planners: dict[Any, Any], model: Any, make: Any) -> Any:
+    """The planner ``planners`` keeps for ``model``, made with ``make(model)`` when it has none
+    (the oldest is dropped beyond :data:`MAX_PLANNERS`)."""
+    planner = planners.get(model)
+    if planner is None:
+        if len(planners) >= MAX_PLANNERS:
+            planners.pop(next(iter(planners)))
+        planner = planners[model] = make(model)
+    return planner
+
+
 class Partnering:
     """Partner monitor (+ posterior) and the planner for the model they imply.
 
@@ -53,13 +64,8 @@ class Partnering:
         return self.monitor.model(base) if isinstance(base, RestrictedHuman) else base
 
     def _planner_for(self, model: Any) -> Any:
-        planner = self._planners.get(model)
-        if planner is None:
-            if len(self._planners) >= MAX_PLANNERS:
-                self._planners.pop(next(iter(self._planners)))
-            planner = self._planners[model] = self._make(model)
         self.model = model
-        return planner
+        return planner_in(self._planners, model, self._make)
 
     def observe(self, turn: Turn, last: Decision | None) -> bool:
         """Learn from the human's action since the robot's previous turn.

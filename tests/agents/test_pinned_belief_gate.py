@@ -153,3 +153,38 @@ def test_a_probe_is_the_most_telling_action_within_the_budget(tmp_path: Path) ->
     robot.information = lambda w, s, a, weights: info[a]  # type: ignore[method-assign]
     state = world.initial_state(np.random.default_rng(0))
     assert robot._probe(world, state, [1.0], {0: 10.0, 1: 11.0, 2: 12.0}, 1.0) == (1, 0.5)
+
+
+class _Waits:
+    """A stand-in member that always waits."""
+
+    uses_robot_action = False
+
+    def __init__(self, wait: int) -> None:
+        self.wait = wait
+
+    def distribution(self, world: World, state: object, robot_action: int = -1) -> list[tuple[int, float]]:
+        return [(self.wait, 1.0)]
+
+
+def test_a_run_exactly_at_the_threshold_is_not_yet_unexplained(tmp_path: Path) -> None:
+    """The run is unexplained when it is *less* likely than 0.05. A member who always waits
+    gives one shared wait q = 0.95 + 0.05 / n; with the weight w for which the run w * q is
+    0.05 exactly, the wait is still explained, and with the next float below it is not."""
+    world = World("paper2015")
+    robot = _robot(tmp_path, world)
+    state = world.initial_state(np.random.default_rng(0))
+    mid = world.step(state, Agent.ROBOT, robot._wait).state
+    n = len(world.feasible_indices(mid, Agent.HUMAN))
+    robot.posterior.humans = [_Waits(world.n_actions(Agent.HUMAN) - 1)]
+    q = (1.0 - 0.05) * 1.0 + 0.05 / n
+    w = 0.05 / q
+    for _ in range(8):  # the float that makes the product the threshold itself (a few ulps away)
+        if w * q == 0.05:
+            break
+        w = float(np.nextafter(w, 1.0 if w * q < 0.05 else 0.0))
+    assert w * q == 0.05
+    turn = Turn(world, state, Agent.ROBOT, {})
+    for weight, unexplained in ((w, False), (float(np.nextafter(w, 0.0)), True)):
+        robot._prev, robot._wait_run = (state, robot._wait), 1.0
+        assert robot._unexplained_waits(turn, [weight]) is unexplained
