@@ -1683,6 +1683,327 @@ FRESH14 = (
 )
 
 
+# Fifteenth round: bugs written from the sources (not their tests): the learned partner model's counts
+# and forgetting, the belief robot's choice between the learned and the fixed model, its refusal verdict
+# and the order it scores a refusal in, the partnering's bounded planner cache and its replanning after a
+# failed plan, the live and canonical answers, the forked workers' close, and the headroom number and command.
+HEADROOM_COMMAND_TESTS = (
+    "tests/agents/test_headroom.py",
+    "tests/agents/test_live_jobs.py",
+    "tests/fuzz/test_outputs.py",
+    "tests/training/test_br_prox.py",
+    "tests/training/test_pinned_headroom.py",
+    "tests/training/test_pinned_report.py",
+    "tests/training/test_readme_headroom.py",
+)
+"""The test files that import ``training/commands/headroom.py`` or run the ``headroom`` command."""
+
+FRESH15 = (
+    Bug(
+        "fresh15 partner model: the share of answers of a kind is not forgotten, so a kind done once is never refused",
+        "agents/partner_model.py",
+        "self.taken[k] = self.forget * self.taken.get(k, 0.0) + float(k == kind)",
+        "self.taken[k] = self.taken.get(k, 0.0) + float(k == kind)",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh15 partner model: the newest answer is forgotten with the old ones (it counts forget, not 1)",
+        "agents/partner_model.py",
+        "        for k in counts:\n"
+        "            counts[k] *= self.forget\n"
+        "        kind = int(world.actions(Agent.HUMAN)[human_action].kind)\n"
+        "        counts[kind] = counts.get(kind, 0.0) + 1.0\n",
+        "        kind = int(world.actions(Agent.HUMAN)[human_action].kind)\n"
+        "        counts[kind] = counts.get(kind, 0.0) + 1.0\n"
+        "        for k in counts:\n"
+        "            counts[k] *= self.forget\n",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh15 belief: when neither the learned nor the fixed model clears the table, the fixed one is planned with",
+        "agents/robots/belief.py",
+        "keep = self._clears(world, partnering.monitor.model(learned), state) or not self._clears(\n"
+        "                    world, partnering.monitor.model(fixed), state\n"
+        "                )",
+        "keep = self._clears(world, partnering.monitor.model(learned), state)",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh15 belief: refusals=False ignored, the members still planned as never taking after a run of refusals",
+        "agents/robots/belief.py",
+        "return self.refusals and self._refusal_run < REFUSAL_LIKELIHOOD",
+        "return self._refusal_run < REFUSAL_LIKELIHOOD",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh15 belief: a refusal scored under the belief after it has moved on that refusal, not before",
+        "agents/robots/belief.py",
+        "            self._count_refusal(turn.world, step.state, seen, human_action)\n"
+        "            self.posterior.observe(turn.world, step.state, seen, human_action)\n",
+        "            self.posterior.observe(turn.world, step.state, seen, human_action)\n"
+        "            self._count_refusal(turn.world, step.state, seen, human_action)\n",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh15 partnering: the planner cache keeps one planner past MAX_PLANNERS before dropping the oldest",
+        "agents/robots/partnering.py",
+        "if len(planners) >= MAX_PLANNERS:",
+        "if len(planners) > MAX_PLANNERS:",
+        gate("belief", "tests/agents/test_partner.py"),
+    ),
+    Bug(
+        "fresh15 partnering: after a failed plan the blocks are forgotten but the planner of the blocked model is kept",
+        "agents/robots/partnering.py",
+        "            model = self._current_model()\n"
+        "            if model != self.model:\n"
+        "                self.planner = self._planner_for(model)\n",
+        "",
+        gate("belief", "tests/agents/test_partner.py"),
+    ),
+    Bug(
+        "fresh15 live: a question puts the offered object in the offerer's place and the offerer in the object's",
+        "agents/models/live.py",
+        "return [(tuple(w), a, b, o, r) for w, a, b, o, r in zip(*columns, strict=True)]",
+        "return [(tuple(w), a, o, b, r) for w, a, b, o, r in zip(*columns, strict=True)]",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh15 forked: close() forgets its workers without terminating them (they run until it is collected)",
+        "agents/models/forked.py",
+        "        if self._finalizer is not None:\n            self._finalizer()\n        self._pool = self._finalizer = None\n",
+        "        self._pool = self._finalizer = None\n",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh15 answers: an equivariant partner's live calls counted with all its earlier ones again at each batch",
+        "agents/models/answers.py",
+        "self.live_calls += self.canonical.live_calls - before",
+        "self.live_calls += self.canonical.live_calls",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh15 equivariant: canonical answers mapped back through the inverse relabelling (a 3-cycle of objects: wrong)",
+        "agents/models/equivariant.py",
+        "remap[actions, orig[rows, np.maximum(named, 0)]]",
+        "remap[actions, np.argsort(orig, axis=1)[rows, np.maximum(named, 0)]]",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh15 headroom: a partner no robot completes with gets ratio 0 (counted in the headroom), not NaN",
+        "agents/headroom.py",
+        "return np.where(self.optimum > 0, self.rates",
+        "return np.where(self.optimum >= 0, self.rates",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh15 headroom: the headroom number is 1 - the plain mean of the cooperative row, not 1 - its IQM",
+        "agents/headroom.py",
+        "1.0 - float(trim_mean(np.array(values), 0.25))",
+        "1.0 - float(np.mean(values))",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh15 headroom command: a model over --max-states ends in a traceback, not one error line and exit 2",
+        "training/commands/headroom.py",
+        "except (HumanError, OracleTooLarge) as exc:",
+        "except HumanError as exc:",
+        HEADROOM_COMMAND_TESTS,
+    ),
+)
+
+
+# Sixteenth round: bugs written from the sources (not their tests) in fourteen modules outside the mutation
+# gate that no earlier round planted in: the run, traces, switching, plan, population and oracle commands,
+# the commands' shared helpers, the CLI's one-line errors, the JSON writer, the SB3 evaluation and
+# hyperparameters, the replay of a recorded game, the switching human and the text picture of the table;
+# each run against the test files that import its module or run its command.
+FRESH16 = (
+    Bug(
+        "fresh16 run command: the summary labels a hybrid with its criterion even when the spec names it",
+        "training/commands/run.py",
+        'if isinstance(robot, HybridRobot) and "criterion=" not in spec:',
+        "if isinstance(robot, HybridRobot):",
+        (
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_runner.py",
+            "tests/training/test_pinned_defaults.py",
+            "tests/test_readme_using.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/fuzz/test_probe.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/play/test_render.py",
+        ),
+    ),
+    Bug(
+        "fresh16 traces command: the scripted humans ranked by name, not by their distance to the person",
+        "training/commands/traces.py",
+        "sorted(distance.items(), key=lambda kv: kv[1])",
+        "sorted(distance.items())",
+        ("tests/play/test_traces.py", "tests/fuzz/test_probe.py", "tests/fuzz/test_outputs.py"),
+    ),
+    Bug(
+        "fresh16 switching command: a pair of the same member twice (A/A) is accepted",
+        "training/commands/switching.py",
+        "if not sep or not a or not b or a == b:",
+        "if not sep or not a or not b:",
+        (
+            "tests/training/test_switching.py",
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_pinned_adaptation.py",
+            "tests/fuzz/test_bounds.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/fuzz/test_outputs.py",
+        ),
+    ),
+    Bug(
+        "fresh16 plan command: no plan found still exits 0 (after printing 'no plan')",
+        "training/commands/plan.py",
+        "            raise typer.Exit(code=1)",
+        "            return",
+        (
+            "tests/agents/test_planner_tools.py",
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_pinned_stalls.py",
+            "tests/test_readme_using.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/fuzz/test_probe.py",
+            "tests/fuzz/test_outputs.py",
+        ),
+    ),
+    Bug(
+        "fresh16 population command: the default store of --out pop.toml is pop.toml.store, not pop.store",
+        "training/commands/population.py",
+        'root = store or out.parent / f"{out.stem}.store"',
+        'root = store or out.parent / f"{out.name}.store"',
+        (
+            "tests/training/test_population_gen.py",
+            "tests/training/test_readme_population.py",
+            "tests/training/test_pinned_headroom.py",
+            "tests/training/test_recipes.py",
+            "tests/training/test_br_prox.py",
+            "tests/fuzz/test_bounds.py",
+            "tests/fuzz/test_outputs.py",
+        ),
+    ),
+    Bug(
+        "fresh16 oracle command: --max-memory read as MiB, not GB (the default 4 refuses every model)",
+        "training/commands/oracle.py",
+        "max_memory=int(max_memory * 2**30),",
+        "max_memory=int(max_memory * 2**20),",
+        (
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_oracle_symmetry.py",
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_readme_headroom.py",
+            "tests/test_readme_using.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+        ),
+    ),
+    Bug(
+        "fresh16 common: a comma list of no names (--robots ,) means all, not an error",
+        "training/commands/common.py",
+        "    if not names:\n",
+        "    if not text:\n",
+        (
+            "tests/training/test_evaluate.py",
+            "tests/training/test_baselines.py",
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_store_inputs.py",
+            "tests/training/test_readme_headroom.py",
+            "tests/fuzz/test_bounds.py",
+            "tests/fuzz/test_probe.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+        ),
+    ),
+    Bug(
+        "fresh16 cli: a file that cannot be written (full disk, forbidden folder) exits 1, not 2",
+        "training/cli.py",
+        'typer.secho(f"error: {error}", fg=typer.colors.RED, err=True)\n            raise typer.Exit(2)',
+        'typer.secho(f"error: {error}", fg=typer.colors.RED, err=True)\n            raise typer.Exit(1)',
+        (
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_store_inputs.py",
+            "tests/training/test_runner.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/fuzz/test_probe.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/fuzz/test_bounds.py",
+        ),
+    ),
+    Bug(
+        "fresh16 io: an infinite value is not written as null, so writing the JSON fails",
+        "training/io.py",
+        "if isinstance(value, float) and not math.isfinite(value):",
+        "if isinstance(value, float) and math.isnan(value):",
+        (
+            "tests/training/test_runner.py",
+            "tests/training/test_store.py",
+            "tests/training/test_pinned_store.py",
+            "tests/training/test_evaluate.py",
+            "tests/training/test_pinned_report.py",
+            "tests/training/test_reproduce.py",
+            "tests/training/test_pinned_headroom.py",
+            "tests/agents/test_headroom.py",
+        ),
+    ),
+    Bug(
+        "fresh16 SB3 evaluation: steps_to_reach needs a rate strictly above the target (equal does not count)",
+        "training/baselines/evaluation.py",
+        "        if rate >= target:",
+        "        if rate > target:",
+        ("tests/training/test_baselines.py", "tests/training/test_comparison.py"),
+    ),
+    Bug(
+        "fresh16 hyperparams: a generated:... scenario looks up its whole spec, not the 'generated' entry",
+        "training/baselines/hyperparams.py",
+        'name = scenario.partition(":")[0]',
+        "name = scenario",
+        (
+            "tests/training/test_baselines.py",
+            "tests/training/test_checkpoints.py",
+            "tests/training/test_train_cli.py",
+            "tests/fuzz/test_bounds.py",
+            "tests/fuzz/test_probe.py",
+        ),
+    ),
+    Bug(
+        "fresh16 play replay: --episode equal to the number of episodes ends in a traceback, not one error line",
+        "training/play/replay.py",
+        "if not 0 <= episode < len(episodes):",
+        "if not 0 <= episode <= len(episodes):",
+        (
+            "tests/play/test_session.py",
+            "tests/play/test_render.py",
+            "tests/play/test_traces.py",
+            "tests/training/test_store_inputs.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/fuzz/test_probe.py",
+            "tests/fuzz/test_outputs.py",
+        ),
+    ),
+    Bug(
+        "fresh16 switching human: the next phase starts only past its threshold, not at it (at=[3] tasks: 4th)",
+        "agents/humans/switching.py",
+        "return bisect_right(self.at, value)",
+        "return sum(value > a for a in self.at)",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_headroom.py",
+            "tests/training/test_switching.py",
+            "tests/training/test_pinned_adaptation.py",
+            "tests/env/test_batched.py",
+        ),
+    ),
+    Bug(
+        "fresh16 render: the text picture marks both agents '(offering)' while either one offers",
+        "hg_marl/envs/render.py",
+        'offer = " (offering)" if state.offer_by == agent else ""',
+        'offer = " (offering)" if state.offer_by >= 0 else ""',
+        ("tests/play/test_render.py", "tests/env/test_env.py", "tests/env/test_conformance.py"),
+    ),
+)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -1699,6 +2020,8 @@ ALL = (
     + FRESH12
     + FRESH13
     + FRESH14
+    + FRESH15
+    + FRESH16
 )
 
 

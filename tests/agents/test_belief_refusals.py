@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -168,3 +169,21 @@ def test_the_verdict_holds_while_the_last_offer_is_at_most_refusals_within_answe
         robot._count_refusal(world, held, wait, wait)
         assert robot._since_offer == answers
         assert robot.refuses_offers() is (answers <= 30), answers
+
+
+def test_a_refused_offer_seen_by_the_robot_is_scored_under_the_belief_before_it_moves(population: str) -> None:
+    """The robot's own update (``_observe``, as ``act`` calls it): the refusal's chance is the
+    mixture's under the posterior held *before* that refusal (the prior here, 1/2 each), and
+    only then does the posterior move toward the member who takes less."""
+    robot, world, held, give, mid = _offering(BeliefRobot(population=population, cache="", unknown=0.0, epsilon=0.05))
+    wait = world.n_actions(Agent.HUMAN) - 1
+    n = len(world.feasible_indices(mid, Agent.HUMAN))
+    # by hand: each member refuses with (1 - eps)(1 - accept) + eps (n - 1) / n, weighed 1/2 each
+    expected = sum(0.5 * (0.95 * (1 - accept) + 0.05 * (n - 1) / n) for accept in (0.9, 0.4))
+    after = world.step(mid, Agent.HUMAN, wait).state
+    robot._prev = (held, give)
+    turn = SimpleNamespace(world=world, state=after, last_actions=(give, wait), reward=0.0)
+    robot._observe(turn)  # type: ignore[arg-type]
+    assert robot._refusal_run == pytest.approx(expected, rel=1e-12)
+    post = robot.posterior.posterior()
+    assert post["preference:accept=0.4"] > 0.5 > post["preference:accept=0.9"]  # the belief moved after

@@ -58,7 +58,8 @@ def test_headroom_is_taken_over_the_held_out_columns_only() -> None:
 
 
 def test_no_optimum_is_nan_and_the_iqm_trims_a_quarter_each_side() -> None:
-    ratio_row = [0.0, 0.2, 0.6, 0.8]  # IQM of four values: the middle two, (0.2 + 0.6) / 2
+    # IQM of four values: the middle two, (0.2 + 0.6) / 2 = 0.4; their plain mean is 0.45
+    ratio_row = [0.0, 0.2, 0.6, 1.0]
     result = HeadroomResult(
         scenario="x",
         assumed=("cooperative",),

@@ -21,7 +21,7 @@ from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.budget import OverBudget
 from hg_marl.agents.models.forked import Forked, check_jobs
 from hg_marl.agents.models.layouts import layout_distribution
-from hg_marl.core import State, World
+from hg_marl.core import Agent, Kind, State, World
 from tests.cli_helpers import error_lines, run_main
 
 CROSSING = str(Path(__file__).parent / "data" / "crossing.toml")
@@ -249,3 +249,50 @@ def test_the_budget_is_read_per_policy_then_per_partner(monkeypatch: pytest.Monk
         *(("policies", i, 3, "policies") for i in range(4)),
         *(("rates", i, 2, "partners") for i in range(3)),
     ]
+
+
+def test_a_question_keeps_each_column_in_its_place() -> None:
+    """A batch's arrays become (where, robot_at, offer_by, offer_obj, robot action seen) rows,
+    in that order (worked by hand: the robot, seat 0, offering object 2)."""
+    rows = live.questions(
+        np.array([[6, 4, 7], [1, 2, 3]]), np.array([3, 0]), np.array([0, -1]), np.array([2, -1]), np.array([5, -1])
+    )
+    assert rows == [((6, 4, 7), 3, 0, 2, 5), ((1, 2, 3), 0, -1, -1, -1)]
+
+
+def test_live_answers_at_an_offer_are_the_partners_own() -> None:
+    """At states where the robot offers object 1 or 2 (the column swap shows only where the
+    offered object is not the offerer's seat number), the live answers are the partner's
+    ``distribution`` asked directly."""
+    world = World("paper2015")
+    human = stationary_human("cooperative", world)
+    asker = live.LiveAnswers(world, human)
+    found: list[State] = []
+    rng = np.random.default_rng(0)
+    acts = world.actions(Agent.ROBOT)
+    for _ in range(400):  # the robot's random moves until it can give object 1 or 2
+        state = world.initial_state(rng)
+        for _step in range(12):
+            feasible = world.feasible_indices(state, Agent.ROBOT)
+            gives = [i for i in feasible if acts[i].kind is Kind.GIVE and acts[i].obj in (1, 2)]
+            if gives:
+                offered = world.step(state, Agent.ROBOT, gives[0]).state
+                found.append(offered)
+                break
+            state = world.step(state, Agent.ROBOT, int(rng.choice(feasible))).state
+        if len(found) >= 6:
+            break
+    assert len(found) >= 6 and {s.offer_obj for s in found} & {1, 2}
+    rows = live.questions(  # the batch's arrays, as the answer table asks
+        np.array([s.where for s in found]),
+        np.array([s.robot_at for s in found]),
+        np.array([s.offer_by for s in found]),
+        np.array([s.offer_obj for s in found]),
+        np.full(len(found), -1),
+    )
+    sizes, actions, probs = asker(rows, lambda done, total: None)
+    at = 0
+    for s, size in zip(found, sizes.tolist(), strict=True):
+        direct = [(h, p) for h, p in human.distribution(world, s, -1) if p > 0.0]
+        assert list(zip(actions[at : at + size].tolist(), probs[at : at + size].tolist(), strict=True)) == direct
+        at += size

@@ -250,3 +250,25 @@ def test_the_fixed_model_is_the_one_the_planner_was_built_with() -> None:
     robot = PlannerRobot(human_model=model)
     robot.reset(World("forced_coordination"), Agent.ROBOT, np.random.default_rng(0))
     assert robot.partnering.fixed is model and robot.partnering.base is model
+
+
+def test_where_neither_model_clears_the_table_the_learned_one_is_kept(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The fixed model replaces the learned one only where it can clear and the learned one
+    cannot: where neither finds a plan (both checks answer no here), the fixed model has no
+    better claim and the robot plans as the partner behaves."""
+    from hg_marl.agents.planner.models import HUMAN_KINDS, RestrictedHuman
+    from hg_marl.policy import Turn
+
+    world = World("forced_coordination")
+    robot = make_robot("belief", population="populations/hard_layouts.toml", open_world="learned")
+    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
+    names = [*robot.member_specs, robot.posterior.learned.name]
+    monkeypatch.setattr(robot.posterior, "posterior", lambda: {n: float(n == "learned") for n in names})
+    model = RestrictedHuman("learned", HUMAN_KINDS - {Kind.THROW})
+    monkeypatch.setattr(robot.posterior.learned, "planner_model", lambda: model)
+    asked: list[object] = []
+    monkeypatch.setattr(robot, "_clears", lambda w, m, s: asked.append(m) is not None)  # always False
+    robot.act(Turn(world, world.initial_state(np.random.default_rng(0)), Agent.ROBOT, {}))
+    partnering = robot._planner.partnering
+    assert len(asked) == 2  # the learned model, then the fixed one
+    assert partnering.base is model and partnering.base is not partnering.fixed

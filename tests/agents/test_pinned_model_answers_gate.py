@@ -159,3 +159,25 @@ def test_answers_on_arrays_read_the_budget_once_before_the_batch() -> None:
     table, budget, n_keys = _answered("preference:handover=1.0", 40, arrays=True)
     assert table.batch is not None and table.live_calls == 0
     assert budget.readings == [("answers", 0, n_keys, "partner answers on arrays", True)]
+
+
+def test_an_equivariant_partner_counts_each_live_call_once_across_batches() -> None:
+    """The cooperative human answers once per canonical key (relabelled states share its
+    answers): over three batches the table's count is the canonical asker's own count,
+    never its running total added again, and known keys add nothing."""
+    world = World("paper2015")
+    human = make_human("cooperative")
+    human.reset(world, Agent.HUMAN, np.random.default_rng(0))
+    packer = StatePacker(world)
+    table = AnswerTable(world, human, packer, arrays=True)
+    assert table.canonical is not None
+    states = [s for s, _ in layout_distribution(world)][:60]
+    keys = np.unique(packer.pack(BatchState.of(states), np.full(len(states), -1)))
+    counts = []
+    for batch in (keys[:20], keys[:40], keys):
+        table.ensure(batch)
+        counts.append(table.live_calls)
+        assert table.live_calls == table.canonical.live_calls
+    assert 0 < counts[0] <= counts[1] <= counts[2] < len(keys)  # relabelled deals share keys
+    table.ensure(keys)
+    assert table.live_calls == counts[2]
