@@ -84,7 +84,7 @@ from hg_marl.agents.robots.base import Robot, make_planner
 from hg_marl.agents.robots.partnering import planner_in
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.core import Agent, Kind, State, World
-from hg_marl.core.errors import RobotError, check_bool
+from hg_marl.core.errors import RobotError, check_bool, check_finite
 from hg_marl.policy import Decision, Turn
 
 HEDGES = ("qmdp", "map")
@@ -106,6 +106,16 @@ partner who takes as its member does would reach 0.05 by chance now and then (a 
 refusing twice); 1/500 needs three refusals in a row from it, thirteen from a 0.4 taker."""
 REFUSALS_WITHIN = 30
 """Answers after the last offer for which "refuses offers" holds; then the robot may offer again."""
+BAYES_FACTOR = 1.0
+"""How many times more probable than the most probable member the learned partner must be
+before the robot plans with it (``open_world="learned"``; the ``bayes_factor`` parameter).
+
+Above 1 the robot keeps a member's exact best response against a partner that member only
+roughly explains, where the learned model, fitted to the partner's last answers,
+out-predicts it by small factors now and then (held-out members: factors of 1-10 against
+hundreds and more for partners no member explains). That helps in the family and costs
+outside it; 1 (the most probable hypothesis wins) is the default, measured both ways in
+docs/adaptation.md, section 8."""
 
 
 class BeliefRobot(Robot):
@@ -127,6 +137,9 @@ class BeliefRobot(Robot):
             ``$HG_MARL_CACHE/oracle`` when set, else none), so a later robot reads them.
         refusals: plan against the members as partners who never take once the partner
             has refused more offers in a row than the belief explains (:meth:`refuses_offers`).
+        bayes_factor: with ``open_world="learned"``, how many times more probable than the
+            most probable member the learned partner must be before the robot plans with it
+            (see :data:`BAYES_FACTOR`).
     """
 
     name = "belief"
@@ -143,6 +156,7 @@ class BeliefRobot(Robot):
         open_world: str = "uniform",
         cache: str = "",
         refusals: bool = True,
+        bayes_factor: float = BAYES_FACTOR,
     ) -> None:
         from hg_marl.agents.humans.population import load_population
 
@@ -167,6 +181,7 @@ class BeliefRobot(Robot):
         if open_world not in ("uniform", "learned"):
             raise RobotError(f"belief.open_world: expected uniform or learned, got {open_world!r}")
         self.open_world = open_world
+        self.bayes_factor = check_finite(bayes_factor, "belief.bayes_factor", minimum=1.0, error=RobotError)
         learned = LearnedPartner() if open_world == "learned" and unknown > 0 else None
         self._unknown_name = learned.name if learned is not None else UNKNOWN
         types = (*self.member_specs, self._unknown_name) if unknown > 0 else self.member_specs
@@ -347,7 +362,10 @@ class BeliefRobot(Robot):
         action = min(mixed, key=lambda a: (mixed[a], a)) if mixed else -1
         # The partner explained by no member better than by chance is off the population:
         # a member's best response would be a guess, the planner replans from what it sees.
-        off_population = self.unknown > 0 and post[self._unknown_name] > max(weights)
+        # The learned partner must be ``bayes_factor`` times as probable as the best member
+        # (the uniform one, fitted to nothing, only more probable).
+        factor = self.bayes_factor if self.posterior.learned is not None else 1.0
+        off_population = self.unknown > 0 and post[self._unknown_name] > factor * max(weights)
         if off_population:
             if not self._off_population:
                 self._planner.last_decision = None  # its expectation from an earlier spell is stale

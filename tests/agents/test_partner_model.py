@@ -12,6 +12,7 @@ from hg_marl.agents.partner import PartnerPosterior
 from hg_marl.agents.partner_model import LearnedPartner, partner_features
 from hg_marl.agents.robots import make_robot
 from hg_marl.core import Agent, Kind, State, World
+from hg_marl.core.errors import RobotError
 from hg_marl.training.runner import RunConfig, run
 
 
@@ -272,3 +273,30 @@ def test_where_neither_model_clears_the_table_the_learned_one_is_kept(monkeypatc
     partnering = robot._planner.partnering
     assert len(asked) == 2  # the learned model, then the fixed one
     assert partnering.base is model and partnering.base is not partnering.fixed
+
+
+@pytest.mark.parametrize(("factor", "off_population"), [(1.0, True), (4.9, True), (5.1, False), (10.0, False)])
+def test_the_learned_partner_drives_only_when_bayes_factor_times_as_probable_as_the_best_member(
+    monkeypatch: pytest.MonkeyPatch, factor: float, off_population: bool
+) -> None:
+    """The learned hypothesis at 0.6, the best member at 0.12 (five times less), the other
+    members sharing 0.28: with a Bayes factor under 5 the planner drives on the learned
+    model; above 5 the best member's best response is played."""
+    from hg_marl.policy import Turn
+
+    world = World("forced_coordination")
+    robot = make_robot("belief", population="populations/hard_layouts.toml", open_world="learned", bayes_factor=factor)
+    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
+    members = list(robot.member_specs)
+    post = {m: (0.12 if i == 0 else 0.28 / (len(members) - 1)) for i, m in enumerate(members)} | {"learned": 0.6}
+    assert len(members) == 4 and sum(post.values()) == pytest.approx(1.0)
+    monkeypatch.setattr(robot.posterior, "posterior", lambda: post)
+    robot.act(Turn(world, world.initial_state(np.random.default_rng(0)), Agent.ROBOT, {}))
+    assert robot.last_decision.partner == ("learned" if off_population else robot.member_names[0])
+    assert robot._off_population is off_population
+
+
+def test_bayes_factor_is_a_finite_number_at_least_1() -> None:
+    for bad in ("0.5", "nan", "inf", "x"):
+        with pytest.raises(RobotError, match="bayes_factor"):
+            make_robot(f"belief:population=populations/hard_layouts.toml,open_world=learned,bayes_factor={bad}")
