@@ -188,3 +188,17 @@ def test_a_run_exactly_at_the_threshold_is_not_yet_unexplained(tmp_path: Path) -
     for weight, unexplained in ((w, False), (float(np.nextafter(w, 0.0)), True)):
         robot._prev, robot._wait_run = (state, robot._wait), 1.0
         assert robot._unexplained_waits(turn, [weight]) is unexplained
+
+
+@pytest.mark.parametrize("hedge", ["map", "".join(["m", "ap"])])  # a literal and a string made at run time
+def test_map_consults_one_member_whatever_object_spells_it(tmp_path: Path, hedge: str) -> None:
+    """``hedge="map"`` plays the most probable member alone: after the first decision with three
+    members under an equal prior, one member's model is solved (``"qmdp"`` would solve all
+    three). The name is compared by value, so a string read from a spec counts as well."""
+    from hg_marl.agents.humans import make_human
+    from hg_marl.training.runner import RunConfig, run
+
+    population = _members(tmp_path, a="cooperative", b="lazy", c="no_handover")
+    robot = BeliefRobot(population=population, splits="train", hedge=hedge, cache=str(tmp_path / "c"))
+    run(robot, make_human("cooperative"), RunConfig(duration=60.0, seed=0, max_decisions=1))
+    assert robot.members_built() == [0]
