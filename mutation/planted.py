@@ -2010,6 +2010,198 @@ ROUND16_TESTS = "tests/training/test_pinned_round16.py"
 FRESH16 = tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, ROUND16_TESTS)) for b in FRESH16)
 
 
+# Seventeenth round: bugs written from the sources (not their tests) in fourteen modules outside the mutation
+# gate that no earlier round planted in: the parallel view, the flat, homogenised and audit wrappers, the SB3
+# vector env, the planner, hybrid and random robots, the noisy, adversarial and lazy humans, the play session,
+# the reproduce command and the rule table; each run against the test files that import its module or use it.
+FRESH17 = (
+    Bug(
+        "fresh17 parallel: a parallel step whose actions dict names an unknown agent besides the live ones "
+        "is accepted silently",
+        "hg_marl/envs/parallel.py",
+        "if set(actions) != live:",
+        "if not live <= set(actions):",
+        (
+            "tests/env/test_env.py",
+            "tests/env/test_conformance.py",
+            "tests/env/test_info_structure.py",
+            "tests/env/test_wrappers.py",
+        ),
+    ),
+    Bug(
+        "fresh17 flat: flatten_v0 hands the facts in the inner env's dtype (int8), not the float32 it promises",
+        "hg_marl/wrappers/flat.py",
+        'facts: np.ndarray = np.asarray(raw["observation"], dtype=self.dtype)',
+        'facts: np.ndarray = np.asarray(raw["observation"])',
+        ("tests/env/test_wrappers.py", "tests/core/test_layers.py"),
+    ),
+    Bug(
+        "fresh17 homogenize: the first padding action of the agent with fewer actions is rejected with an error "
+        "instead of acting as a failed action",
+        "hg_marl/wrappers/homogenize.py",
+        "if self._n_real[agent] <= index < self.n_actions:",
+        "if self._n_real[agent] < index < self.n_actions:",
+        ("tests/env/test_wrappers.py", "tests/agents/test_adapters.py"),
+    ),
+    Bug(
+        "fresh17 audit: the sent and infeasible counts start again from 0 at every reset",
+        "hg_marl/wrappers/audit.py",
+        "AUDITS.add(self)  # copies made by vector-env builders (deepcopy, pickling) register here\n",
+        "AUDITS.add(self)  # copies made by vector-env builders (deepcopy, pickling) register here\n"
+        "        self.sent, self.infeasible = dict.fromkeys(self.sent, 0), dict.fromkeys(self.infeasible, 0)\n",
+        ("tests/env/test_wrappers.py", "tests/env/test_batched.py"),
+    ),
+    Bug(
+        "fresh17 sb3 vec env: TimeLimit.truncated is True for terminated episodes and False for time-limit ends",
+        "hg_marl/wrappers/sb3.py",
+        'infos[i]["TimeLimit.truncated"] = bool(trunc[i] and not term[i])',
+        'infos[i]["TimeLimit.truncated"] = bool(term[i] and not trunc[i])',
+        ("tests/env/test_batched.py", "tests/agents/test_views.py"),
+    ),
+    Bug(
+        "fresh17 planner robot: a failed plan is charged no decision time (the search's cost is dropped)",
+        "agents/robots/planner.py",
+        "decision_time=prop.cost,",
+        "decision_time=prop.cost if prop.success else 0.0,",
+        (
+            "tests/agents/test_robots.py",
+            "tests/agents/test_partner_model.py",
+            "tests/agents/test_content.py",
+            "tests/agents/test_stall.py",
+            "tests/training/test_run_clock.py",
+            "tests/training/test_runner.py",
+            "tests/env/test_pinned_compiled.py",
+            "tests/core/test_spec.py",
+        ),
+    ),
+    Bug(
+        "fresh17 hybrid: when the planner is consulted the decision time charged drops the habit's cost",
+        "agents/robots/hybrid.py",
+        "decision_time=view.cost + (prop.cost if prop is not None else 0.0),",
+        "decision_time=prop.cost if prop is not None else view.cost,",
+        (
+            "tests/agents/test_robots.py",
+            "tests/agents/test_habit_sharing.py",
+            "tests/agents/test_stall.py",
+            "tests/agents/test_progress.py",
+            "tests/agents/test_defaults.py",
+            "tests/training/test_run_clock.py",
+            "tests/training/test_runner.py",
+            "tests/play/test_session.py",
+        ),
+    ),
+    Bug(
+        "fresh17 random robot: draws among all actions, infeasible ones included, not only the feasible ones",
+        "agents/robots/uniform.py",
+        "feasible = np.flatnonzero(turn.mask)",
+        "feasible = np.arange(len(turn.mask))",
+        (
+            "tests/agents/test_robots.py",
+            "tests/agents/test_views.py",
+            "tests/training/test_runner.py",
+            "tests/training/test_run_clock.py",
+            "tests/training/test_evaluate.py",
+            "tests/play/test_session.py",
+        ),
+    ),
+    Bug(
+        "fresh17 noisy human: the robot's action under way is timed as the human action of the same index",
+        "agents/humans/noisy.py",
+        "world.actions(Agent.ROBOT)[robot_action]",
+        "world.actions(Agent.HUMAN)[robot_action]",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_history_free.py",
+            "tests/agents/test_oracle_symmetry.py",
+            "tests/env/test_compiled_tables.py",
+            "tests/env/test_pinned_compiled.py",
+            "tests/env/test_cycle_trace.py",
+            "tests/training/test_runner.py",
+        ),
+    ),
+    Bug(
+        "fresh17 adversarial human: steals first the objects the robot cannot reach now, not those it is about to pick",
+        "agents/humans/adversarial.py",
+        "stealable.sort(key=lambda o: not world.spot_reachable(",
+        "stealable.sort(key=lambda o: world.spot_reachable(",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_partner.py",
+            "tests/agents/test_views.py",
+            "tests/env/test_compiled_tables.py",
+            "tests/env/test_batched.py",
+        ),
+    ),
+    Bug(
+        "fresh17 lazy human: never hands an object over (puts it on a shared spot instead)",
+        "agents/humans/lazy.py",
+        "tidy_action(world, state, give=True)",
+        "tidy_action(world, state, give=False)",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_partner.py",
+            "tests/training/test_evaluate.py",
+            "tests/env/test_pinned_compiled_gate.py",
+            "tests/env/test_pinned_compiled.py",
+            "tests/env/test_compiled_tables.py",
+        ),
+    ),
+    Bug(
+        "fresh17 play session: the robot's failed gives and takes are counted as handovers in the summary",
+        "training/play/session.py",
+        "if not self.last_robot.failed:",
+        "if not move.failed:",
+        (
+            "tests/play/test_session.py",
+            "tests/play/test_render.py",
+            "tests/play/test_traces.py",
+            "tests/play/test_explain.py",
+            "tests/play/test_server_limits.py",
+            "tests/play/test_web_guard.py",
+            "tests/fuzz/test_outputs.py",
+        ),
+    ),
+    Bug(
+        "fresh17 reproduce command: every paper target is printed as 'holds', the missed ones too",
+        "training/commands/reproduce.py",
+        'verdict = "holds" if target.get("holds") else "MISSED"',
+        'verdict = "holds" if target.get("holds") is not None else "MISSED"',
+        (
+            "tests/training/test_reproduce.py",
+            "tests/training/test_cli_errors.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/fuzz/test_probe.py",
+            "tests/fuzz/test_bounds.py",
+        ),
+    ),
+    Bug(
+        "fresh17 rule table: goto leads to the last location that reaches the target, not the first in scenario order",
+        "hg_marl/core/table.py",
+        "return min(reach) if reach and at not in reach else -1",
+        "return max(reach) if reach and at not in reach else -1",
+        (
+            "tests/core/test_table.py",
+            "tests/core/test_rules.py",
+            "tests/core/test_rules_layouts.py",
+            "tests/core/test_properties.py",
+            "tests/core/test_cycle.py",
+            "tests/env/test_env.py",
+            "tests/agents/test_planner_compiled.py",
+            "tests/agents/test_pinned_planner_tables_gate.py",
+        ),
+    ),
+)
+
+ROUND17_TESTS = "tests/training/test_pinned_round17.py"
+"""The values round 17's missed bugs changed, pinned after the round: every round-17 bug runs them too."""
+FRESH17 = tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, ROUND17_TESTS)) for b in FRESH17)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -2028,6 +2220,7 @@ ALL = (
     + FRESH14
     + FRESH15
     + FRESH16
+    + FRESH17
 )
 
 
