@@ -145,3 +145,15 @@ PARTNERS = {
     "changes_without_notice": ChangesWithoutNotice,
 }
 """Partner name -> factory (no arguments)."""
+
+
+class Fixed:
+    """A stand-in member or partner type that always does one action (its distribution is known exactly)."""
+
+    uses_robot_action = False
+
+    def __init__(self, action: int) -> None:
+        self.action = action
+
+    def distribution(self, world: World, state: object, robot_action: int = -1) -> list[tuple[int, float]]:
+        return [(self.action, 1.0)]

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from partners import PARTNERS
+from partners import PARTNERS, Fixed
 
 from hg_marl.agents.humans import make_human
 from hg_marl.agents.oracle import oracle_rate
@@ -36,18 +36,6 @@ def _population(tmp_path: Path, scenario: str = "paper2015") -> str:
     return str(path)
 
 
-class _Fixed:
-    """A stand-in member that always does one action."""
-
-    uses_robot_action = False
-
-    def __init__(self, action: int) -> None:
-        self.action = action
-
-    def distribution(self, world: World, state: object, robot_action: int = -1) -> list[tuple[int, float]]:
-        return [(self.action, 1.0)]
-
-
 def test_belief_follows_a_switch_within_the_bound_worked_by_hand(tmp_path: Path) -> None:
     """decay 0.9, epsilon 0.05, two members each sure of a different action.
 
@@ -62,7 +50,7 @@ def test_belief_follows_a_switch_within_the_bound_worked_by_hand(tmp_path: Path)
     feasible = world.feasible_indices(state, Agent.HUMAN)
     a, b = feasible[0], feasible[-1]
     post = robot.posterior
-    post.humans = [_Fixed(a), _Fixed(b)]
+    post.humans = [Fixed(a), Fixed(b)]
     for _ in range(200):
         post.observe(world, state, -1, a)
     n = len(feasible)
@@ -89,7 +77,7 @@ def test_the_open_world_posterior_worked_by_hand(tmp_path: Path) -> None:
     feasible = world.feasible_indices(state, Agent.HUMAN)
     a, b = feasible[0], feasible[-1]
     post = robot.posterior
-    post.humans = [_Fixed(a), _Fixed(a), post.humans[-1]]  # the last is the uniform partner
+    post.humans = [Fixed(a), Fixed(a), post.humans[-1]]  # the last is the uniform partner
     assert post.types[-1] == "random"
     post.observe(world, state, -1, b)
     got = post.posterior()
@@ -127,9 +115,9 @@ def test_the_information_of_a_reply_worked_by_hand(tmp_path: Path) -> None:
     mid, _, _ = world.table.successor(state, Agent.ROBOT, wait)
     replies = world.feasible_indices(mid, Agent.HUMAN)
     a, b = replies[0], replies[-1]
-    robot.posterior.humans = [_Fixed(a), _Fixed(b)]
+    robot.posterior.humans = [Fixed(a), Fixed(b)]
     assert robot.information(world, state, wait, [0.5, 0.5]) == pytest.approx(_disagreeing_pair(len(replies)))
-    robot.posterior.humans = [_Fixed(a), _Fixed(a)]
+    robot.posterior.humans = [Fixed(a), Fixed(a)]
     assert robot.information(world, state, wait, [0.5, 0.5]) == pytest.approx(0.0, abs=1e-12)
 
 
@@ -159,7 +147,7 @@ def test_a_member_that_reads_the_robot_action_sees_a_failure_as_minus_one(tmp_pa
     assert not ok
     replies = world.feasible_indices(mid, Agent.HUMAN)
     a, b = replies[0], replies[-1]
-    robot.posterior.humans = [_Seer(a, b), _Fixed(b)]
+    robot.posterior.humans = [_Seer(a, b), Fixed(b)]
     assert robot.information(world, state, failing, [0.5, 0.5]) == pytest.approx(_disagreeing_pair(len(replies)))
 
 

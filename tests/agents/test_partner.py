@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from partners import PARTNERS
+from partners import PARTNERS, Fixed
 
 from hg_marl.agents.humans import make_human
 from hg_marl.agents.partner import PartnerMonitor, PartnerPosterior
@@ -54,24 +54,12 @@ def test_monitor_forgets_blocks_when_no_plan_remains(world: World) -> None:
     assert monitor.misses == 2 and monitor.stalled
 
 
-class _Fixed:
-    """A stand-in type that always does one action (its distribution is known exactly)."""
-
-    uses_robot_action = False
-
-    def __init__(self, action: int) -> None:
-        self.action = action
-
-    def distribution(self, world: World, state: Any, robot_action: int = -1) -> list[tuple[int, float]]:
-        return [(self.action, 1.0)]
-
-
 def test_posterior_by_hand(world: World) -> None:
     state = world.initial_state(np.random.default_rng(0))
     feasible = world.feasible_indices(state, Agent.HUMAN)
     a, b = feasible[0], feasible[-1]
     post = PartnerPosterior(types=("cooperative", "lazy"), prior=(0.5, 0.5), decay=1.0, epsilon=0.1)
-    post.humans = [_Fixed(a), _Fixed(b)]
+    post.humans = [Fixed(a), Fixed(b)]
     post.observe(world, state, -1, a)
     post.observe(world, state, -1, a)
     n = len(feasible)

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from partners import Fixed
 
 from hg_marl.agents.robots.belief import BeliefRobot
 from hg_marl.core import Agent, World
@@ -155,18 +156,6 @@ def test_a_probe_is_the_most_telling_action_within_the_budget(tmp_path: Path) ->
     assert robot._probe(world, state, [1.0], {0: 10.0, 1: 11.0, 2: 12.0}, 1.0) == (1, 0.5)
 
 
-class _Waits:
-    """A stand-in member that always waits."""
-
-    uses_robot_action = False
-
-    def __init__(self, wait: int) -> None:
-        self.wait = wait
-
-    def distribution(self, world: World, state: object, robot_action: int = -1) -> list[tuple[int, float]]:
-        return [(self.wait, 1.0)]
-
-
 def test_a_run_exactly_at_the_threshold_is_not_yet_unexplained(tmp_path: Path) -> None:
     """The run is unexplained when it is *less* likely than 0.05. A member who always waits
     gives one shared wait q = 0.95 + 0.05 / n; with the weight w for which the run w * q is
@@ -176,7 +165,7 @@ def test_a_run_exactly_at_the_threshold_is_not_yet_unexplained(tmp_path: Path) -
     state = world.initial_state(np.random.default_rng(0))
     mid = world.step(state, Agent.ROBOT, robot._wait).state
     n = len(world.feasible_indices(mid, Agent.HUMAN))
-    robot.posterior.humans = [_Waits(world.n_actions(Agent.HUMAN) - 1)]
+    robot.posterior.humans = [Fixed(world.n_actions(Agent.HUMAN) - 1)]
     q = (1.0 - 0.05) * 1.0 + 0.05 / n
     w = 0.05 / q
     for _ in range(8):  # the float that makes the product the threshold itself (a few ulps away)
