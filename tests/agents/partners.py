@@ -10,6 +10,8 @@ from __future__ import annotations
 import numpy as np
 
 from hg_marl.agents.humans import make_human
+from hg_marl.agents.humans.base import wait_index
+from hg_marl.agents.humans.family_out import helpful, robot_stuck
 from hg_marl.core import WAIT, Agent, Kind, World
 from hg_marl.policy import Actor, Turn
 
@@ -134,6 +136,27 @@ class ChangesWithoutNotice:
 
     def act(self, turn: Turn) -> int:
         return int(self.phases[int(turn.clock // self.period) % len(self.phases)].act(turn))
+
+
+class Busy:
+    """Tidies its own area only right after a robot move that is not a wait; otherwise waits.
+
+    A person who works while the robot is busy and stops when it idles. When the robot has
+    nothing but ``wait`` feasible it tidies anyway (``robot_stuck``), as ``fo_mirror`` does:
+    without that exception it would answer a robot that has cleared everything within its
+    reach with waits for ever and leave the task unsolvable itself. Stationary in (state,
+    robot action), never takes an offer.
+    """
+
+    def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
+        self.robot_wait = world.n_actions(Agent.ROBOT) - 1
+
+    def act(self, turn: Turn) -> int:
+        world, state = turn.world, turn.state
+        robot = turn.last_actions[0]
+        if (robot < 0 or robot == self.robot_wait) and not robot_stuck(world, state):
+            return wait_index(world)
+        return helpful(world, state, take=False)
 
 
 PARTNERS = {
