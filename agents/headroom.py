@@ -326,6 +326,7 @@ def headroom(
     max_memory: int | None = DEFAULT_MEMORY,
     progress: bool = False,
     jobs: int = 1,
+    started: float | None = None,
 ) -> HeadroomResult:
     """The headroom matrix of ``scenario``.
 
@@ -341,6 +342,9 @@ def headroom(
         jobs: worker processes (0: one per CPU) for the live partners' answers, the policies
             and the rates (:class:`~hg_marl.agents.models.forked.Forked`); the result does not
             depend on it. The memory budget reads this process; each worker adds its own work.
+        started: when ``max_seconds`` began, on :func:`time.perf_counter`'s scale (default:
+            now); the command passes its process's start
+            (:func:`~hg_marl.agents.models.budget.process_start`).
     """
     start = time.perf_counter()
     world = scenario if isinstance(scenario, World) else World(scenario)
@@ -358,7 +362,7 @@ def headroom(
         max_states,
         subject=f"the headroom model of {world.scenario.name!r}",
         hint="use a smaller scenario or fewer humans",
-        start=start,
+        start=start if started is None else started,
     )
     with budget.deadline():
         budget.refuse_count("layouts", layout_count(world.scenario), "initial layouts")

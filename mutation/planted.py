@@ -2202,6 +2202,234 @@ ROUND17_TESTS = "tests/training/test_pinned_round17.py"
 FRESH17 = tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, ROUND17_TESTS)) for b in FRESH17)
 
 
+# Eighteenth round: bugs written from the sources (not their tests) in fourteen modules outside the mutation
+# gate that no earlier round planted in: the spec parser, the backends, the plan and planner, the robots' base,
+# the HTN domain, the array partners, the partner monitor, the humans' registry and base, expectimax, the
+# cooperative and replay humans and the durations; each run against the test files that import its module or use it.
+FRESH18 = (
+    Bug(
+        "fresh18 spec: a fractional value for an integer parameter (n=2.5) is truncated to 2 instead of refused",
+        "hg_marl/core/spec.py",
+        "                if not value.is_integer():\n"
+        '                    raise SpecError(f"{what}: expected an integer, got {value!r}")\n'
+        "                value = int(value)\n",
+        "                value = int(value)\n",
+        (
+            "tests/core/test_spec.py",
+            "tests/core/test_pinned_registry_gate.py",
+            "tests/agents/test_pinned_model_answers_gate.py",
+            "tests/training/test_switching.py",
+            "tests/core/test_scenario_validation.py",
+            "tests/training/test_pinned_limits_gate.py",
+            "tests/play/test_session.py",
+        ),
+    ),
+    Bug(
+        "fresh18 backends: --workers equal to the machine's maximum (4 per CPU) is refused",
+        "training/backends.py",
+        "not 1 <= workers <= top:",
+        "not 1 <= workers < top:",
+        (
+            "tests/training/test_ray.py",
+            "tests/training/test_pinned_sweep_gate.py",
+            "tests/training/test_store_inputs.py",
+            "tests/agents/test_content.py",
+            "tests/training/test_runner.py",
+            "tests/training/test_sweep_resume.py",
+            "tests/training/test_evaluate.py",
+        ),
+    ),
+    Bug(
+        "fresh18 plan: the planner's action distribution puts 1 - N x 0.01 on the planned action (sums to 0.99)",
+        "agents/planner/plan.py",
+        "out[action] = 1.0 - (n_actions - 1) * 0.01",
+        "out[action] = 1.0 - n_actions * 0.01",
+        (
+            "tests/agents/test_planner_behaviour.py",
+            "tests/agents/test_planner.py",
+            "tests/agents/test_planner_pinned.py",
+            "tests/agents/test_planner_halfstep.py",
+            "tests/agents/test_meta.py",
+            "tests/agents/test_meta_exact.py",
+            "tests/agents/test_robots.py",
+            "tests/agents/test_history_free.py",
+        ),
+    ),
+    Bug(
+        "fresh18 planner: an intent's predicted duration sums the shorter action of each cycle, not the longer",
+        "agents/planner/planner.py",
+        "total += d_r if d_r > d_h else d_h",
+        "total += d_r if d_r < d_h else d_h",
+        (
+            "tests/agents/test_planner_halfstep.py",
+            "tests/agents/test_history_free.py",
+            "tests/agents/test_planner.py",
+            "tests/agents/test_planner_behaviour.py",
+            "tests/agents/test_humans.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_planner_pinned.py",
+        ),
+    ),
+    Bug(
+        "fresh18 robots base: a learning robot's stall move is drawn among all feasible moves, not the habit's best",
+        "agents/robots/base.py",
+        "best = moves[values >= values.max()]",
+        "best = moves[values <= values.max()]",
+        (
+            "tests/agents/test_stall.py",
+            "tests/agents/test_habit_sharing.py",
+            "tests/env/test_pinned_compiled_robot_gate.py",
+            "tests/env/test_pinned_compiled_gate.py",
+            "tests/agents/test_robots.py",
+        ),
+    ),
+    Bug(
+        "fresh18 domain: a failed plan whose unreachable object is the last one says 'no plan' instead of "
+        "'unreachable: ...'",
+        "agents/planner/domain.py",
+        "for o in range(self.n_objects):",
+        "for o in range(self.n_objects - 1):",
+        (
+            "tests/agents/test_planner_behaviour.py",
+            "tests/agents/test_planner.py",
+            "tests/agents/test_planner_pinned.py",
+            "tests/agents/test_pinned_model_solve_gate.py",
+            "tests/core/test_rules.py",
+            "tests/core/test_scenario_validation.py",
+        ),
+    ),
+    Bug(
+        "fresh18 array partners: a compiled switching human changes phase one task (or tick) after its threshold",
+        "agents/array_partners.py",
+        'np.searchsorted(self.at, value, side="right")',
+        'np.searchsorted(self.at, value, side="left")',
+        (
+            "tests/env/test_pinned_batched.py",
+            "tests/env/test_batched.py",
+            "tests/training/test_pinned_switching.py",
+            "tests/training/test_switching.py",
+            "tests/env/test_batched_learned.py",
+            "tests/env/test_compiled_tables.py",
+        ),
+    ),
+    Bug(
+        "fresh18 partner monitor: a refused human action is blocked after block_after + 1 refusals, one late",
+        "agents/partner.py",
+        "if count >= self.block_after:",
+        "if count > self.block_after:",
+        (
+            "tests/agents/test_partner.py",
+            "tests/agents/test_partner_model.py",
+            "tests/env/test_pinned_compiled_gate.py",
+            "tests/env/test_pinned_compiled_robot_gate.py",
+            "tests/agents/test_belief_refusals.py",
+            "tests/agents/test_robots.py",
+            "tests/agents/test_stall.py",
+        ),
+    ),
+    Bug(
+        "fresh18 humans registry: fo_after_waits is listed as stationary (the oracle and populations accept it)",
+        "agents/humans/registry.py",
+        '"family-out: takes only after two robot waits", _FO_P, False)',
+        '"family-out: takes only after two robot waits", _FO_P)',
+        (
+            "tests/core/test_registry.py",
+            "tests/agents/test_family_out.py",
+            "tests/agents/test_history_free.py",
+            "tests/agents/test_oracle_symmetry.py",
+            "tests/agents/test_humans.py",
+            "tests/agents/test_population.py",
+            "tests/training/test_evaluate.py",
+            "tests/env/test_compiled_tables.py",
+        ),
+    ),
+    Bug(
+        "fresh18 expectimax: a stochastic plan may expand one state over the node budget (reports budget + 1 nodes)",
+        "agents/planner/expectimax.py",
+        "if len(order) >= budget:",
+        "if len(order) > budget:",
+        (
+            "tests/agents/test_planner_behaviour.py",
+            "tests/agents/test_planner_pinned.py",
+            "tests/agents/test_planner.py",
+            "tests/agents/test_partner_model.py",
+            "tests/agents/test_planner_halfstep.py",
+            "tests/agents/test_belief.py",
+        ),
+    ),
+    Bug(
+        "fresh18 humans base: p_idle adds wait without scaling the rest (cooperative:p_idle=0.5 sums to 1.5)",
+        "agents/humans/base.py",
+        "merged[index] = merged.get(index, 0.0) + (1.0 - p_idle) * p",
+        "merged[index] = merged.get(index, 0.0) + p",
+        (
+            "tests/agents/test_history_free.py",
+            "tests/agents/test_oracle_symmetry.py",
+            "tests/agents/test_pinned_family_out_gate.py",
+            "tests/agents/test_pinned_planted_family_out.py",
+            "tests/agents/test_progress_patience.py",
+            "tests/agents/test_humans.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_oracle.py",
+        ),
+    ),
+    Bug(
+        "fresh18 cooperative human: tries to take what the robot offers while its own hands are full (a failed take)",
+        "agents/humans/cooperative.py",
+        "if state.offer_by == Agent.ROBOT and world.holding(state, Agent.HUMAN) < 0:",
+        "if state.offer_by == Agent.ROBOT:",
+        (
+            "tests/env/test_pinned_compiled_gate.py",
+            "tests/env/test_pinned_compiled_robot_gate.py",
+            "tests/training/test_evaluate.py",
+            "tests/agents/test_humans.py",
+            "tests/agents/test_history_free.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_models.py",
+            "tests/env/test_compiled_tables.py",
+        ),
+    ),
+    Bug(
+        "fresh18 durations: the shortest duration leaves out 'failed', so --duration allows 5x the cycle limit",
+        "hg_marl/core/durations.py",
+        "return min(float(getattr(self, f.name)) for f in fields(self))",
+        'return min(float(getattr(self, f.name)) for f in fields(self) if f.name != "failed")',
+        (
+            "tests/training/test_runner.py",
+            "tests/env/test_boundary.py",
+            "tests/fuzz/test_bounds.py",
+            "tests/core/test_scenario_validation.py",
+            "tests/training/test_pinned_limits_gate.py",
+            "tests/core/test_pinned_scenario_gate.py",
+            "tests/agents/test_pinned_model_limits_gate.py",
+            "tests/core/test_scenarios.py",
+        ),
+    ),
+    Bug(
+        "fresh18 replay human: once the recorded steps run out it raises IndexError instead of waiting",
+        "agents/humans/replay.py",
+        "if self.step >= len(steps):",
+        "if self.step > len(steps):",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_trace_validation.py",
+            "tests/agents/test_views.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_model_file.py",
+            "tests/training/test_store_inputs.py",
+            "tests/play/test_render.py",
+            "tests/training/test_checkpoints.py",
+        ),
+    ),
+)
+
+
+ROUND18_TESTS = "tests/training/test_pinned_round18.py"
+"""The values round 18's missed bugs changed, pinned after the round: every round-18 bug runs them too."""
+FRESH18 = tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, ROUND18_TESTS)) for b in FRESH18)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -2221,6 +2449,7 @@ ALL = (
     + FRESH15
     + FRESH16
     + FRESH17
+    + FRESH18
 )
 
 

@@ -10,6 +10,8 @@ from __future__ import annotations
 import functools
 import importlib
 import logging
+import os
+import sys
 from collections.abc import Callable
 from typing import Any
 
@@ -149,5 +151,32 @@ def main() -> None:
     raise SystemExit(code if isinstance(code, int) else 0)
 
 
+def script() -> None:
+    """The ``hg-marl`` console script: :func:`main`, budgets from the process's start, out at once when refused.
+
+    The exact commands' ``--max-seconds`` count from the process's start
+    (:func:`~hg_marl.training.commands.common.command_start`).
+
+    An exact command refused over its budget has written nothing, and holds what it had
+    computed: a partial model and the planners' memos, millions of small objects. The
+    interpreter freeing them at shutdown took about a second past the refusal, which a
+    person who asked for ``--max-seconds 5`` waits on. So after the one-line refusal this
+    process leaves with ``os._exit(2)``, its streams flushed (forked workers were stopped
+    with the refusal). :func:`main` itself returns as usual: tests call it in-process.
+    """
+    from hg_marl.agents.models.budget import process_start
+    from hg_marl.training.commands.common import SCRIPT
+
+    SCRIPT["started"] = process_start()  # the commands' time budgets count from here
+    try:
+        main()
+    except SystemExit:
+        if SCRIPT["over_budget"]:
+            sys.stdout.flush()
+            sys.stderr.flush()
+            os._exit(2)
+        raise
+
+
 if __name__ == "__main__":
-    main()
+    script()

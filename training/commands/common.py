@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 import os
+import time
 from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any, TypeVar
@@ -137,3 +138,26 @@ def counting_bar(total: int, desc: str) -> tuple[Any, Callable[..., None]]:
     if total == 0:
         bar.close()
     return bar, update
+
+
+SCRIPT: dict[str, Any] = {"started": None, "over_budget": False}
+"""The ``hg-marl`` script's state: when its process started (None when a command is called
+in-process, as tests do) and whether the command was refused over its budget (set by
+:func:`over_budget`; the script then leaves at once, without freeing what was computed)."""
+
+
+def command_start() -> float:
+    """When a command's time budget began, on :func:`time.perf_counter`'s scale.
+
+    Under the ``hg-marl`` script, the process's start: a person who typed
+    ``--max-seconds 5`` waits from then, the interpreter's start-up and imports included.
+    Called in-process (a test, a notebook), now: the process may have run for hours.
+    """
+    started = SCRIPT["started"]
+    return float(started) if started is not None else time.perf_counter()
+
+
+def over_budget(exc: Exception) -> ConfigError:
+    """The one-line error of an exact command refused over its budget, noting the refusal."""
+    SCRIPT["over_budget"] = True
+    return ConfigError(str(exc))

@@ -38,7 +38,7 @@ def register(app: typer.Typer) -> None:
         from hg_marl.core.errors import ConfigError, check_finite
         from hg_marl.core.scenario import load_scenario
         from hg_marl.core.spec import split_specs
-        from hg_marl.training.commands.common import check_out_dir
+        from hg_marl.training.commands.common import check_out_dir, command_start, over_budget
         from hg_marl.training.headroom import partners, write_headroom
 
         check_out_dir(out, "--out")
@@ -52,9 +52,18 @@ def register(app: typer.Typer) -> None:
         load_scenario(scenario)
         try:
             result = write_headroom(
-                scenario, columns, held_out, out, max_states=max_states, max_seconds=max_seconds, jobs=jobs
+                scenario,
+                columns,
+                held_out,
+                out,
+                max_states=max_states,
+                max_seconds=max_seconds,
+                jobs=jobs,
+                started=command_start(),
             )
-        except (HumanError, OracleTooLarge) as exc:
+        except OracleTooLarge as exc:
+            raise over_budget(exc) from None
+        except HumanError as exc:
             raise ConfigError(str(exc)) from None
         width = max(len(a) for a in result.assumed)
         corner = "assumed / true"

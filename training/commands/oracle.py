@@ -19,22 +19,22 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """Optimal tasks per simulated hour by value iteration on the exact model."""
         from hg_marl.agents.humans import HumanError
+        from hg_marl.agents.models.budget import Budget
         from hg_marl.agents.oracle import OracleTooLarge, oracle_rate
         from hg_marl.core.errors import check_finite
+        from hg_marl.training.commands.common import command_start, over_budget
 
         check_finite(max_seconds, "--max-seconds", positive=True)
         check_finite(max_memory, "--max-memory", positive=True)
+        # the budget counts from the command's start, imports included: what its user waits
+        budget = Budget(max_seconds, int(max_memory * 2**30), max_states, start=command_start())
         try:
             result = oracle_rate(
-                scenario,
-                human,
-                max_states=max_states,
-                failed_actions=failed_actions,
-                progress=True,
-                max_seconds=max_seconds,
-                max_memory=int(max_memory * 2**30),
+                scenario, human, max_states=max_states, failed_actions=failed_actions, progress=True, budget=budget
             )
-        except (HumanError, OracleTooLarge, ValueError) as exc:
+        except OracleTooLarge as exc:
+            raise over_budget(exc) from None
+        except (HumanError, ValueError) as exc:
             typer.echo(f"error: {exc}", err=True)
             raise typer.Exit(2) from exc
         typer.echo(f"scenario      {result.scenario}")

@@ -1,0 +1,97 @@
+"""Under the ``hg-marl`` script, time budgets count from the process's start, and a refusal leaves at once.
+
+A person who typed ``--max-seconds 5`` waits from the moment the command started: the
+interpreter's start-up and imports are part of it, and so is what the process does after
+the refusal. Nothing here reads the wall clock against a bound that a slow machine could
+miss: the start is moved by a known amount, or a sleep gives a lower bound.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from hg_marl.agents.models import budget as budget_module
+from hg_marl.training.commands import common
+from tests.cli_helpers import HANG_GUARD, error_lines, run_main
+
+
+def test_the_process_start_lies_before_what_the_process_did() -> None:
+    # A fresh interpreter that sleeps 0.3 s before asking: at least 0.3 s lie between.
+    code = (
+        "import time; time.sleep(0.3); from hg_marl.agents.models.budget import process_start; "
+        "print(time.perf_counter() - process_start())"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=HANG_GUARD, check=True)
+    assert float(out.stdout) >= 0.3
+
+
+def test_the_process_start_is_not_after_now() -> None:
+    assert budget_module.process_start() <= time.perf_counter()
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["oracle", "--scenario", "paper2015", "--max-seconds", "50"],
+        ["headroom", "--scenario", "paper2015", "--humans", "lazy", "--max-seconds", "50"],
+    ],
+)
+def test_a_command_counts_its_budget_from_the_scripts_start(
+    args: list[str], monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    # The script "started" 100 s ago: a 50 s budget is spent before the work begins.
+    monkeypatch.setitem(common.SCRIPT, "started", time.perf_counter() - 100.0)
+    if args[0] == "headroom":
+        args = [*args, "--out", str(tmp_path / "out")]
+    code, _, err = run_main(args)
+    (line,) = error_lines(err)
+    assert code == 2
+    assert "over its budget of 50 s of wall time (after 10" in line  # 100.x s
+    assert "--max-seconds" in line
+    assert not (tmp_path / "out").exists()
+
+
+def test_called_in_process_a_command_counts_from_its_call() -> None:
+    # A test process has run for a while: a command called in it starts its budget now.
+    assert common.SCRIPT["started"] is None
+    code, out, _ = run_main(["oracle", "--scenario", "paper2015", "--human", "no_handover", "--max-seconds", "600"])
+    assert code == 0 and "optimal rate" in out
+
+
+def _script(args: list[str], before: str = "pass") -> subprocess.CompletedProcess[str]:
+    """``hg-marl ARGS`` through the console script, with an exit hook that prints ``teardown``."""
+    code = (
+        f"import atexit, sys, time; {before}; atexit.register(lambda: print('teardown')); "
+        "from hg_marl.training.cli import script; sys.argv = ['hg-marl', *sys.argv[1:]]; script()"
+    )
+    return subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True, timeout=HANG_GUARD)
+
+
+def test_the_script_counts_the_time_before_the_command() -> None:
+    # 3 s pass in the process before the script runs: a 2 s budget is over at its first reading.
+    proc = _script(["oracle", "--scenario", "paper2015", "--max-seconds", "2"], before="time.sleep(3)")
+    assert proc.returncode == 2
+    (line,) = error_lines(proc.stderr)
+    spent = float(re.search(r"of wall time \(after ([0-9.]+) s\)", line).group(1))  # type: ignore[union-attr]
+    assert spent >= 3.0
+
+
+def test_the_script_leaves_without_teardown_after_a_budget_refusal() -> None:
+    proc = _script(["oracle", "--scenario", "paper2015", "--max-states", "10"])
+    assert proc.returncode == 2
+    (line,) = error_lines(proc.stderr)
+    assert "over its budget of max_states=10" in line
+    assert "teardown" not in proc.stdout
+
+
+def test_the_script_tears_down_as_usual_after_other_errors_and_success() -> None:
+    bad = _script(["oracle", "--scenario", "paper2015", "--human", "switching"])
+    assert bad.returncode == 2 and "teardown" in bad.stdout
+    ok = _script(["oracle", "--scenario", "paper2015", "--human", "no_handover", "--max-states", "200000"])
+    assert ok.returncode == 0 and "teardown" in ok.stdout and "optimal rate" in ok.stdout
