@@ -103,9 +103,7 @@ def test_a_probe_changes_the_robots_action() -> None:
 
     config = RunConfig(scenario="forced_coordination", duration=300, seed=0)
     partner = "preference:handover=1.0,shared=-0.5,accept=0.3,p_idle=0.2"  # h_hesitant, held out
-    log = run(
-        BeliefRobot(population="populations/hard_layouts.toml", probe=20.0), make_human(partner), config
-    ).log
+    log = run(BeliefRobot(population="populations/hard_layouts.toml", probe=20.0), make_human(partner), config).log
     probes = log.loc[log["reason"].astype(str).str.startswith("probe"), "reason"]
     assert len(probes) > 0
     costs = [float(re.search(r"for (-?[\d.]+) s", x).group(1)) for x in probes]  # type: ignore[union-attr]
