@@ -2430,6 +2430,124 @@ ROUND18_TESTS = "tests/training/test_pinned_round18.py"
 FRESH18 = tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, ROUND18_TESTS)) for b in FRESH18)
 
 
+"""Fresh planted bugs, round 19: written from the sources of 14 recent modules, blind to their tests.
+
+Appended into ``mutation/planted.py`` (which defines ``Bug`` and ``gate``); each bug is run
+against its module's gate tests from ``mutation/modules.toml``.
+"""
+
+FRESH19 = (
+    Bug(
+        "fresh19 belief: a probe's reason states its extra seconds unnormalised by the members' weight",
+        "agents/robots/belief.py",
+        "cost = (mixed[probe] - mixed[action]) / total",
+        "cost = mixed[probe] - mixed[action]",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh19 partner model: the context's 'robot offering' feature is set by any pending offer, "
+        "the partner's own too",
+        "agents/partner_model.py",
+        "state.offer_by == int(Agent.ROBOT),",
+        "state.offer_by >= 0,",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh19 member models: the solved count is not zeroed when reset on another scenario (counts across worlds)",
+        "agents/member_models.py",
+        "            self._models = [None] * len(self.specs)\n            self.solved = 0\n",
+        "            self._models = [None] * len(self.specs)\n",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh19 live: answers of probability 0 kept (a p_idle=1 partner's model grows transitions it never takes)",
+        "agents/models/live.py",
+        "State(where, at, by, obj), seen) if p > 0.0]",
+        "State(where, at, by, obj), seen) if p >= 0.0]",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh19 forked: jobs equal to MAX_JOBS refused, though the message allows it",
+        "agents/models/forked.py",
+        "not 0 <= jobs <= MAX_JOBS",
+        "not 0 <= jobs < MAX_JOBS",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh19 headroom: an empty held-out list taken as every column (a number instead of NaN)",
+        "agents/headroom.py",
+        "held_out=tuple(held_out) if held_out is not None else",
+        "held_out=tuple(held_out) if held_out else",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh19 headroom report: headroom.json's rates hold the ratios to the optimum, not the tasks per hour",
+        "training/headroom.py",
+        '"rates": result.rates.tolist(),',
+        '"rates": result.ratio.tolist(),',
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh19 compiled robot: fallbacks counted once per batch, not once per table planned live",
+        "agents/compiled_robot.py",
+        "self.fallbacks += len(missing)",
+        "self.fallbacks += 1",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh19 compiled: a closure given as instances still cached on disk (keyed by their str)",
+        "agents/compiled.py",
+        "    if any(not isinstance(h, str) for h in closure):\n"
+        "        spec = None  # an instance in the closure has no content key: no disk cache\n",
+        "",
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh19 answers: live_calls counts one per batch of keys asked live, not one per key",
+        "agents/models/answers.py",
+        "self.live_calls += len(missing)",
+        "self.live_calls += 1",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh19 builder: an answer table filled without canonical keys silently serves a reduced model (no error)",
+        "agents/models/builder.py",
+        "        elif canonical and t.relabelled is False:\n"
+        '            raise ValueError("an answer table filled without canonical keys cannot serve a reduced model")\n',
+        "",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh19 progress: a spell the partner lets pass unhelped forgets an earlier answered spell "
+        "(back to P quiet turns)",
+        "agents/progress.py",
+        "self.answered = self.answered or self._helped",
+        "self.answered = self._helped",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh19 chains: a policy that may get stuck gets a finite rate "
+        "(states that can reach a dead end kept as certain)",
+        "agents/models/chains.py",
+        "certain = ~backward(small, ~reach)",
+        "certain = reach",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh19 oracle: a result read from the disk cache reports n_states and n_transitions swapped",
+        "agents/oracle.py",
+        "                        model.n,\n                        len(model.t_next),\n",
+        "                        len(model.t_next),\n                        model.n,\n",
+        gate("oracle"),
+    ),
+)
+
+
+ROUND19_TESTS = "tests/training/test_pinned_round19.py"
+"""The values round 19's missed bugs changed, pinned after the round: every round-19 bug runs them too."""
+FRESH19 = tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, ROUND19_TESTS)) for b in FRESH19)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -2450,6 +2568,7 @@ ALL = (
     + FRESH16
     + FRESH17
     + FRESH18
+    + FRESH19
 )
 
 
