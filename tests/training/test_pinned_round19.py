@@ -56,8 +56,8 @@ def test_a_probes_reason_states_its_seconds_under_the_members_with_a_say(tmp_pat
     )
     robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
     # member a: action 0 takes 10 s, action 1 14 s; member b has no say (off its model)
-    robot.q_values = lambda w, s, m: {0: 10.0, 1: 14.0} if m == 0 else {}  # type: ignore[method-assign]
-    robot.information = lambda w, s, a, weights: 1.0 if a == 1 else 0.0  # type: ignore[method-assign]
+    robot.q_values = lambda w, s, m: {0: 10.0, 1: 14.0} if m == 0 else {}
+    robot.information = lambda w, s, a, weights: 1.0 if a == 1 else 0.0
     state = world.initial_state(np.random.default_rng(0))
     assert robot.act(Turn(world, state, Agent.ROBOT, {})) == 1
     assert robot.last_decision is not None
