@@ -312,13 +312,29 @@ class OracleRobot:
         self._planner: Any = None
         self._relabel: Relabel | None = None
         self.progress = ProgressGuard()
+        self._solved: tuple[OracleResult | None, Any] = (None, None)
+        """The result this robot last took up and the (scenario, durations) it belongs to."""
 
     def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
-        """Compute the policy if needed (``rng`` unused: the policy is deterministic)."""
+        """Compute the policy if needed (``rng`` unused: the policy is deterministic).
+
+        A policy belongs to the table it was solved on, durations included (doubling every
+        duration doubles the seconds per task): a reset on another scenario or other
+        durations solves again. A result handed over from outside (at construction, or by
+        setting :attr:`result`) is taken as the policy of the table it names at its first reset.
+        """
         if agent is not Agent.ROBOT:
             raise ValueError("OracleRobot plays the robot seat only")
-        if self.result is None or self.result.scenario != world.scenario.name:
+        table = (world.scenario, world.durations)
+        if (
+            self.result is not None
+            and self.result is not self._solved[0]
+            and self.result.scenario == world.scenario.name
+        ):
+            self._solved = (self.result, table)
+        if self.result is None or self.result.scenario != world.scenario.name or self._solved[1] != table:
             self.result = oracle_rate(world, self.human)
+            self._solved = (self.result, table)
         self._wait = world.n_actions(Agent.ROBOT) - 1
         self.off_model = 0
         self.progress.reset()

@@ -268,3 +268,22 @@ def test_the_progress_bar_ends_at_the_models_state_count(capsys: pytest.CaptureF
     frames = capsys.readouterr().err.replace("\r", "\n").splitlines()
     last = [f for f in frames if ": states" in f][-1]
     assert f" {result.n_states} states" in last and f"known={result.n_states}" in last
+
+
+def test_an_oracle_robot_reset_on_other_durations_solves_that_table() -> None:
+    from dataclasses import fields
+
+    from hg_marl.core.durations import Durations
+
+    base = World("paper2015")
+    doubled = World("paper2015", Durations(**{f.name: 2 * getattr(base.durations, f.name) for f in fields(Durations)}))
+    robot = OracleRobot(human="no_handover")
+    robot.reset(base, Agent.ROBOT, np.random.default_rng(0))
+    assert robot.result is not None
+    once = robot.result.seconds_per_task
+    robot.reset(doubled, Agent.ROBOT, np.random.default_rng(0))
+    # every duration doubled: every cycle takes twice as long, the same policy is optimal
+    assert robot.result.seconds_per_task == pytest.approx(2 * once, rel=1e-9)
+    given = robot.result
+    robot.reset(doubled, Agent.ROBOT, np.random.default_rng(0))  # the same table: kept
+    assert robot.result is given

@@ -32,9 +32,9 @@ def register(app: typer.Typer) -> None:
             result = oracle_rate(
                 scenario, human, max_states=max_states, failed_actions=failed_actions, progress=True, budget=budget
             )
-        except OracleTooLarge as exc:
-            raise over_budget(exc) from None
-        except (HumanError, ValueError) as exc:
+        except (HumanError, OracleTooLarge, ValueError) as exc:
+            if isinstance(exc, OracleTooLarge):
+                over_budget(exc)  # noted: the script leaves at once
             typer.echo(f"error: {exc}", err=True)
             raise typer.Exit(2) from exc
         typer.echo(f"scenario      {result.scenario}")
