@@ -48,7 +48,7 @@ def process_start() -> float:
     A person who typed ``--max-seconds 5`` counts from the moment the command started, the
     interpreter's start-up and imports included, so the commands measure their budget from
     here. Read from ``/proc/self/stat`` (start time in clock ticks since boot) and
-    ``/proc/uptime``: a resolution of one tick, 10 ms.
+    ``/proc/uptime``, to one clock tick.
     """
     now = time.perf_counter()
     try:
