@@ -57,6 +57,7 @@ from hg_marl.agents.oracle import (
 )
 from hg_marl.core import Agent, Scenario, State, World
 from hg_marl.core.cycle import cycle_length
+from hg_marl.core.errors import HumanError
 from hg_marl.core.scenario import layout_count
 
 COOPERATIVE = "cooperative"
@@ -345,15 +346,21 @@ def headroom(
         started: when ``max_seconds`` began, on :func:`time.perf_counter`'s scale (default:
             now); the command passes its process's start
             (:func:`~hg_marl.agents.models.budget.process_start`).
+
+    Raises:
+        HumanError: a label names two specs (``cooperative`` is the cooperative model's label).
     """
     start = time.perf_counter()
     world = scenario if isinstance(scenario, World) else World(scenario)
     rows: dict[str, str] = {COOPERATIVE: COOPERATIVE}
     for label, spec in [*assumed, *true]:
-        rows.setdefault(label, spec)
+        # one label, one partner: a second spec under a label would be played as the first
+        if rows.setdefault(label, spec) != spec:
+            raise HumanError(
+                f"headroom: the label {label!r} names two partners ({rows[label]!r} and {spec!r}); "
+                "give each its own label"
+            )
     specs = dict(rows)
-    for label, spec in true:
-        specs.setdefault(label, spec)
     labels = list(specs)
     humans = [stationary_human(specs[label], world) for label in labels]
     budget = Budget(

@@ -32,6 +32,7 @@ import pandas as pd
 import pytest
 
 from hg_marl.agents.headroom import HeadroomResult, headroom
+from hg_marl.core.errors import HumanError
 from tests.cli_helpers import error_lines, run_main
 
 CROSSING = str(Path(__file__).parent / "data" / "crossing.toml")
@@ -117,3 +118,19 @@ def test_over_its_budget_the_cli_refuses_in_one_line(tmp_path: Path) -> None:
     )
     lines = error_lines(err)
     assert code == 2 and len(lines) == 1 and "max_states=2" in lines[0], err
+
+
+@pytest.mark.parametrize(
+    ("true", "assumed"),
+    [
+        ([("cooperative", "lazy")], []),  # the cooperative model's own label
+        ([("g", "lazy"), ("c", "no_handover")], [("g", "no_handover")]),  # a row and a column
+        ([("g", "lazy"), ("g", "no_handover")], []),  # two columns
+    ],
+)
+def test_a_label_that_names_two_partners_is_refused(
+    true: list[tuple[str, str]], assumed: list[tuple[str, str]]
+) -> None:
+    # one label, one partner: the second would silently be played as the first
+    with pytest.raises(HumanError, match="names two partners"):
+        headroom("paper2015", true, assumed=assumed)
