@@ -41,6 +41,11 @@ class Bug:
     tests: tuple[str, ...]
 
 
+def pinned_after(bugs: tuple[Bug, ...], tests: str) -> tuple[Bug, ...]:
+    """``bugs`` with ``tests`` (the values a round's missed bugs changed, pinned after it) run for each."""
+    return tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, tests)) for b in bugs)
+
+
 META_TESTS = ("tests/agents/test_meta.py", "tests/agents/test_meta_exact.py", "tests/agents/test_robots.py")
 RUN_TESTS = ("tests/training/test_runner.py", "tests/training/test_run_clock.py", "tests/training/test_sweep_resume.py")
 
@@ -2007,7 +2012,7 @@ FRESH16 = (
 
 ROUND16_TESTS = "tests/training/test_pinned_round16.py"
 """The values round 16's missed bugs changed, pinned after the round: every round-16 bug runs them too."""
-FRESH16 = tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, ROUND16_TESTS)) for b in FRESH16)
+FRESH16 = pinned_after(FRESH16, ROUND16_TESTS)
 
 
 # Seventeenth round: bugs written from the sources (not their tests) in fourteen modules outside the mutation
@@ -2199,7 +2204,7 @@ FRESH17 = (
 
 ROUND17_TESTS = "tests/training/test_pinned_round17.py"
 """The values round 17's missed bugs changed, pinned after the round: every round-17 bug runs them too."""
-FRESH17 = tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, ROUND17_TESTS)) for b in FRESH17)
+FRESH17 = pinned_after(FRESH17, ROUND17_TESTS)
 
 
 # Eighteenth round: bugs written from the sources (not their tests) in fourteen modules outside the mutation
@@ -2427,7 +2432,7 @@ FRESH18 = (
 
 ROUND18_TESTS = "tests/training/test_pinned_round18.py"
 """The values round 18's missed bugs changed, pinned after the round: every round-18 bug runs them too."""
-FRESH18 = tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, ROUND18_TESTS)) for b in FRESH18)
+FRESH18 = pinned_after(FRESH18, ROUND18_TESTS)
 
 
 """Fresh planted bugs, round 19: written from the sources of 14 recent modules, blind to their tests.
@@ -2545,7 +2550,116 @@ FRESH19 = (
 
 ROUND19_TESTS = "tests/training/test_pinned_round19.py"
 """The values round 19's missed bugs changed, pinned after the round: every round-19 bug runs them too."""
-FRESH19 = tuple(Bug(b.name, b.path, b.old, b.new, (*b.tests, ROUND19_TESTS)) for b in FRESH19)
+FRESH19 = pinned_after(FRESH19, ROUND19_TESTS)
+
+
+FRESH20 = (
+    Bug(
+        "fresh20 belief: once stalled, the planner keeps driving after a task is solved "
+        "(only a partner's move hands the decisions back to the belief)",
+        "agents/robots/belief.py",
+        "if human_acted or turn.reward > 0:",
+        "if human_acted:",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh20 partner model: a partner holding object 0 is read as empty-handed (context 'holds an object' false)",
+        "agents/partner_model.py",
+        "world.holding(state, Agent.HUMAN) >= 0,",
+        "world.holding(state, Agent.HUMAN) > 0,",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh20 member models: the memo keeps one result fewer than MEMO_ENTRIES (a member solved again)",
+        "agents/member_models.py",
+        "while len(_MEMO) > MEMO_ENTRIES:",
+        "while len(_MEMO) >= MEMO_ENTRIES:",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh20 headroom: the result's n_states counts the model's (state, action) pairs, not its states",
+        "agents/headroom.py",
+        "n_states=model.n,",
+        "n_states=model.n_pairs,",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh20 headroom report: neither or both of --population and --humans accepted (no 'give exactly one' error)",
+        "training/headroom.py",
+        "if (population is None) == (not humans):",
+        "if (population is None) == (humans is None):",
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh20 compiled: a cached table missing an array raises KeyError instead of being rebuilt",
+        "agents/compiled.py",
+        "except (OSError, ValueError, KeyError):",
+        "except (OSError, ValueError):",
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh20 compiled robot: reset_rows does not reset the tables' stall counters "
+        "(stall moves and counts carry over into the next episode)",
+        "agents/compiled_robot.py",
+        "        self.guard.reset_rows(rows)\n",
+        "",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh20 answers: the budget reading before answering on arrays has done and total swapped "
+        "(a refusal reads 'N of 0 partner answers')",
+        "agents/models/answers.py",
+        'self.budget.check(self.phase, 0, len(missing), "partner answers on arrays")',
+        'self.budget.check(self.phase, len(missing), 0, "partner answers on arrays")',
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh20 builder: the answer tables' phase not set back after the first answers "
+        "(a refusal during exploration names phase 'first answers')",
+        "agents/models/builder.py",
+        '    for t in tables:\n        t.phase = "explore: partner answers"\n',
+        "",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh20 chains: the re-drawn tables' values read by model state id, not by their place in the "
+        "policy's reached states (wrong rate, or an index error, when the policy does not reach every state)",
+        "agents/models/chains.py",
+        "regen = values[pos[chain.regen_next]]",
+        "regen = values[chain.regen_next]",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh20 oracle: the robot's off_model count is not zeroed at reset (counts across runs, warns once ever)",
+        "agents/oracle.py",
+        "        self.off_model = 0\n        self.progress.reset()\n",
+        "        self.progress.reset()\n",
+        gate("oracle"),
+    ),
+    Bug(
+        "fresh20 progress: a guard move that has to wait (no other option) counted as a rotation move, "
+        "so the next stall skips an option",
+        "agents/progress.py",
+        "self.moves += int(action != wait)",
+        "self.moves += 1",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh20 live: in parallel, each chunk of questions leaves out its last question "
+        "(answers fewer than asked with jobs > 1)",
+        "agents/models/live.py",
+        "chunks = [list(rows[i : i + CHUNK]) for i in range(0, len(rows), CHUNK)]",
+        "chunks = [list(rows[i : i + CHUNK - 1]) for i in range(0, len(rows), CHUNK)]",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh20 forked: map does not call check(0) before the first item (the budget is first read after one result)",
+        "agents/models/forked.py",
+        "        if check is not None:\n            check(0)\n",
+        "",
+        gate("model_forked"),
+    ),
+)
 
 
 ALL = (
@@ -2569,6 +2683,7 @@ ALL = (
     + FRESH17
     + FRESH18
     + FRESH19
+    + FRESH20
 )
 
 

@@ -45,11 +45,15 @@ def test_known_keys_are_not_asked_again() -> None:
 
 
 class RecordingBudget(Budget):
-    """A budget that never refuses and records each reading's (phase, done, total, unit, memory)."""
+    """A budget that never refuses and records each reading's (phase, done, total, unit, memory).
+
+    ``states`` keeps each reading's model states alongside (None where the phase gave none).
+    """
 
     def __init__(self) -> None:
         super().__init__(None, None, None)
         self.readings: list[tuple[str, int, int | None, str, bool]] = []
+        self.states: list[int | None] = []
 
     def check(
         self,
@@ -62,6 +66,7 @@ class RecordingBudget(Budget):
         memory: bool = True,
     ) -> None:
         self.readings.append((phase, done, total, unit, memory))
+        self.states.append(states)
 
 
 def _answered(human_name: str, layouts: int, arrays: bool) -> tuple[AnswerTable, RecordingBudget, int]:

@@ -623,13 +623,18 @@ def test_stall_after_must_be_a_positive_number_of_turns() -> None:
     with pytest.raises(CompileError, match="stall_after"):
         CompiledRobot(world, arrays, stall_after=0)
     robot = compile_robot(world, cache=None, stall_after=1)
+    assert _frozen_turns(robot, world, 2, lambda r: bool(r.stalled[0])) == [False, True]
+
+
+def _frozen_turns(robot: Any, world: World, turns: int, read: Any) -> list[Any]:
+    """``read(robot)`` after each of ``turns`` robot turns at one table whose state never changes."""
     state = world.initial_state(np.random.default_rng(11))
     robot.reset_rows(np.array([0]), np.random.default_rng(0))
-    stalled = []
-    for _ in range(2):
+    out = []
+    for _ in range(turns):
         robot.act(BatchState.of([state]), np.array([-1]), np.random.default_rng(0))
-        stalled.append(bool(robot.stalled[0]))
-    assert stalled == [False, True]
+        out.append(read(robot))
+    return out
 
 
 def test_an_empty_table_plans_every_state_live_and_counts_it() -> None:
@@ -661,11 +666,5 @@ def test_a_frozen_tables_unchanged_count_reads_the_turns_since_its_first() -> No
     0 at the first turn, then 1, 2, 3 (K = 3: the 4th turn takes the stall move)."""
     world = World(TINY)
     robot = compile_robot(world, cache=None, stall_after=3)
-    state = world.initial_state(np.random.default_rng(11))
-    robot.reset_rows(np.array([0]), np.random.default_rng(0))
-    counts = []
-    for _ in range(4):
-        robot.act(BatchState.of([state]), np.array([-1]), np.random.default_rng(0))
-        counts.append(int(robot.unchanged[0]))
-    assert counts == [0, 1, 2, 3]
+    assert _frozen_turns(robot, world, 4, lambda r: int(r.unchanged[0])) == [0, 1, 2, 3]
     assert bool(robot.stalled[0]) and int(robot.stall_count[0]) == 1

@@ -26,7 +26,7 @@ from scipy import sparse
 import hg_marl.agents.models.forked as forked
 import hg_marl.agents.models.live as live
 from hg_marl.agents.humans import make_human
-from hg_marl.agents.models import AnswerTable, Budget, StatePacker, build_model
+from hg_marl.agents.models import AnswerTable, StatePacker, build_model
 from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.builder import Dynamics, Model
 from hg_marl.agents.models.chains import backward, forward, policy_rate, transitions
@@ -39,6 +39,7 @@ from hg_marl.core import Agent, Durations, State, World
 from hg_marl.core.relabel import Relabel
 from hg_marl.envs.batched import BatchState
 from hg_marl.policy import Turn
+from tests.agents.test_pinned_model_answers_gate import RecordingBudget
 from tests.agents.test_progress import batch_of
 
 PAPER = World("paper2015")
@@ -54,24 +55,11 @@ def _layout_keys(world: World, packer: StatePacker, count: int | None = None) ->
     return np.unique(packer.pack(BatchState.of(states), np.full(len(states), -1)))
 
 
-class Recording(Budget):
-    """A budget that never refuses and records each reading's (phase, done, total, unit, states)."""
+class Recording(RecordingBudget):
+    """The gate's recording budget, its readings as (phase, done, total, unit, states)."""
 
-    def __init__(self) -> None:
-        super().__init__(None, None, None)
-        self.readings: list[tuple[str, int, int | None, str, int | None]] = []
-
-    def check(
-        self,
-        phase: str,
-        done: int,
-        total: int | None = None,
-        unit: str = "states",
-        *,
-        states: int | None = None,
-        memory: bool = True,
-    ) -> None:
-        self.readings.append((phase, done, total, unit, states))
+    def seen(self) -> list[tuple[str, int, int | None, str, int | None]]:
+        return [(*r[:4], n) for r, n in zip(self.readings, self.states, strict=True)]
 
 
 # --- agents/models/answers.py -------------------------------------------------------------
@@ -108,7 +96,7 @@ def test_known_keys_asked_again_read_no_budget_on_arrays() -> None:
     table.ensure(keys)
     table.ensure(keys)  # every key known: nothing to answer, nothing to read
     table.ensure(keys[:3])
-    assert budget.readings == [("answers", 0, len(keys), "partner answers on arrays", None)]
+    assert budget.seen() == [("answers", 0, len(keys), "partner answers on arrays", None)]
 
 
 def test_answers_given_on_arrays_serve_a_table_without_a_human() -> None:
@@ -266,7 +254,7 @@ def test_the_partners_answers_are_read_in_the_first_answers_phase_then_in_the_ex
     assert set(phases[first:]) == {"explore", "explore: partner answers"}
     assert "explore: partner answers" in phases
     # the last reading: every state explored, the states budget counting the states known
-    assert budget.readings[-1] == ("explore", model.n, None, "states explored", model.n)
+    assert budget.seen()[-1] == ("explore", model.n, None, "states explored", model.n)
 
 
 # --- agents/models/chains.py --------------------------------------------------------------
