@@ -146,3 +146,44 @@ def test_a_goto_to_a_place_that_is_not_an_object_names_no_object() -> None:
                 if kind is Kind.GOTO and obj < 0 and target >= n:
                     assert slot[a] == -1
                     assert list(remap[a]) == [a] * n
+
+
+class _Clock:
+    """A clock far from 0 that advances 1 ms per reading (and records what it handed out)."""
+
+    def __init__(self) -> None:
+        self.read: list[float] = []
+
+    def perf_counter(self) -> float:
+        self.read.append(1000.0 + 0.001 * len(self.read))
+        return self.read[-1]
+
+
+@pytest.mark.parametrize("where", ["oracle", "headroom"])
+def test_a_result_reports_the_seconds_between_its_first_and_last_readings(
+    where: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import types
+
+    import hg_marl.agents.headroom as headroom_module
+    import hg_marl.agents.oracle as oracle_module
+
+    module = oracle_module if where == "oracle" else headroom_module
+    clock = _Clock()
+    monkeypatch.setattr(module, "time", types.SimpleNamespace(perf_counter=clock.perf_counter))
+    if where == "oracle":
+        seconds = oracle_rate("paper2015", "no_handover", cache=False).seconds
+    else:
+        seconds = headroom_module.headroom("paper2015", [("lazy", "lazy")]).seconds
+    assert seconds == pytest.approx(clock.read[-1] - clock.read[0], abs=1e-9)
+    assert seconds < 1.0
+
+
+def test_an_off_model_decision_says_the_planner_was_consulted() -> None:
+    empty = OracleResult(0.0, float("inf"), 0, 0, 0, 0, True, {}, {}, scenario="paper2015")
+    robot = OracleRobot(empty)
+    world = World("paper2015")
+    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
+    robot.act(Turn(world, world.initial_state(np.random.default_rng(0)), Agent.ROBOT, {}))
+    assert robot.last_decision is not None
+    assert robot.last_decision.expert == "planner" and robot.last_decision.planner_consulted
