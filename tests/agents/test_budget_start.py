@@ -31,6 +31,19 @@ def test_the_process_start_lies_before_what_the_process_did() -> None:
     assert float(out.stdout) >= 0.3
 
 
+def test_the_process_start_lies_between_the_launch_and_now() -> None:
+    # On the wall clock: not before the parent launched the process (two clock ticks of
+    # rounding each way and the clocks' own resolution allowed), not after the moment it asks.
+    code = (
+        "import time; from hg_marl.agents.models.budget import process_start; "
+        "now = time.time(); print(now - (time.perf_counter() - process_start()), now)"
+    )
+    launched = time.time()
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=HANG_GUARD, check=True)
+    start, now = (float(x) for x in out.stdout.split())
+    assert launched - 0.05 <= start <= now
+
+
 def test_the_process_start_is_not_after_now() -> None:
     assert budget_module.process_start() <= time.perf_counter()
 
