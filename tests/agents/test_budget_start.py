@@ -36,7 +36,7 @@ def test_the_process_start_lies_between_the_launch_and_now() -> None:
     # rounding each way and the clocks' own resolution allowed), not after the moment it asks.
     code = (
         "import time; from hg_marl.agents.models.budget import process_start; "
-        "now = time.time(); print(now - (time.perf_counter() - process_start()), now)"
+        "start = process_start(); age = time.perf_counter() - start; now = time.time(); print(now - age, now)"
     )
     launched = time.time()
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=HANG_GUARD, check=True)
