@@ -2667,6 +2667,115 @@ ROUND20_TESTS = "tests/training/test_pinned_round20.py"
 FRESH20 = pinned_after(FRESH20, ROUND20_TESTS)
 
 
+FRESH21 = (
+    Bug(
+        "fresh21 switching: a period that does not divide the duration drops the last partial phase "
+        "(the schedule floors the number of phases, so the member in play runs to the end)",
+        "training/switching.py",
+        "changes = math.ceil(duration / period) - 1",
+        "changes = math.floor(duration / period) - 1",
+        gate("switching"),
+    ),
+    Bug(
+        "fresh21 population generator: candidates that solve no task with the first robot are kept "
+        "(none listed as dropped, and they may be selected)",
+        "training/population_gen.py",
+        'kept = [c for c in range(len(candidates)) if measured[c][f"{first}.tasks_per_hour"] > 0]',
+        'kept = [c for c in range(len(candidates)) if measured[c][f"{first}.tasks_per_hour"] >= 0]',
+        gate("population_gen"),
+    ),
+    Bug(
+        "fresh21 aggregate: seeds_per_task reports the most seeds any task has, not the fewest "
+        "(an uneven study's coarse intervals not flagged)",
+        "training/aggregate.py",
+        'return int(scored.groupby(["robot", "human", "scenario"], sort=False)["score"].count().min())',
+        'return int(scored.groupby(["robot", "human", "scenario"], sort=False)["score"].count().max())',
+        gate("aggregate"),
+    ),
+    Bug(
+        "fresh21 report: report.md's per-robot table prints the mean's CI beside the IQM and the IQM's beside the mean",
+        "training/report.py",
+        'cells = [name, _num(v["iqm"]), _ci(v["iqm_ci"]), _num(v["mean"]), _ci(v["mean_ci"]), str(v["runs"])]',
+        'cells = [name, _num(v["iqm"]), _ci(v["mean_ci"]), _num(v["mean"]), _ci(v["iqm_ci"]), str(v["runs"])]',
+        gate("report"),
+    ),
+    Bug(
+        "fresh21 store: a stored run's rate divides by the simulated time of its last decision, not the run's duration",
+        "training/store.py",
+        'return self.tasks * 3600.0 / float(self.summary["duration"])',
+        'return self.tasks * 3600.0 / float(self.summary["simulated_time"])',
+        gate("store"),
+    ),
+    Bug(
+        "fresh21 sweep: a damaged entry found under the claim is not repaired "
+        "(no warning line, the folder not cleared)",
+        "training/sweep.py",
+        "stored = store.get(job, key, repair=True)",
+        "stored = store.get(job, key)",
+        gate("sweep"),
+    ),
+    Bug(
+        "fresh21 runner: human_as_expected left empty when the plan expected the human's action 0",
+        "training/runner.py",
+        'None if row["expected_human_action"] < 0 else action == row["expected_human_action"]',
+        'None if row["expected_human_action"] <= 0 else action == row["expected_human_action"]',
+        gate("runner"),
+    ),
+    Bug(
+        "fresh21 hybrid: a guard move made while the partner is also stalled is explained as partner_stalled, "
+        "not no_progress",
+        "agents/robots/hybrid.py",
+        'reason=self.progress.reason if guarded else "partner_stalled",',
+        'reason="partner_stalled" if self.partnering.monitor.stalled else self.progress.reason,',
+        ("tests/agents/test_robots.py", "tests/agents/test_pinned_promises_d.py"),
+    ),
+    Bug(
+        "fresh21 memory robot: the guard's move may be the very move the policy keeps choosing (it is not excluded)",
+        "agents/robots/memory.py",
+        "prefer = scores.copy()\n            prefer[int(np.argmax(scores))] = -np.inf\n",
+        "prefer = scores.copy()\n",
+        gate("memory_robot"),
+    ),
+    Bug(
+        "fresh21 family-out: fo_picky takes every object the robot offers, odd ones too",
+        "agents/humans/family_out.py",
+        "if state.offer_obj >= 0 and state.offer_obj % 2 == 0:",
+        "if state.offer_obj >= 0:",
+        gate("family_out"),
+    ),
+    Bug(
+        "fresh21 batched: an autoreset table keeps its clock, cycles, tasks, effort and idle time "
+        "(counters not zeroed on the re-drawn table)",
+        "hg_marl/envs/batched.py",
+        "        self._stale[rows] = True\n        self._zero_counters(rows)\n        self._reset_partner(rows)\n",
+        "        self._stale[rows] = True\n        self._reset_partner(rows)\n",
+        gate("batched"),
+    ),
+    Bug(
+        "fresh21 world: the transition memo is keyed without the agent (the human's action i answered with "
+        "the robot's outcome for i)",
+        "hg_marl/core/world.py",
+        "key = (state, agent, index)",
+        "key = (state, index)",
+        gate("world"),
+    ),
+    Bug(
+        "fresh21 adaptation: regret and recovery measured against the first human's oracle rate, not the final one's",
+        "training/adaptation.py",
+        "rows[robot] = summarise_switch(logs, sw, oracle[sw.final], c.duration)",
+        "rows[robot] = summarise_switch(logs, sw, oracle[sw.humans[0]], c.duration)",
+        gate("adaptation"),
+    ),
+    Bug(
+        "fresh21 stalls: a run with an empty log reported with no gap (0 s), not a stretch of its whole duration",
+        "training/stalls.py",
+        "    if log.empty:\n        return float(duration)\n",
+        "    if log.empty:\n        return 0.0\n",
+        gate("stalls"),
+    ),
+)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -2689,6 +2798,7 @@ ALL = (
     + FRESH18
     + FRESH19
     + FRESH20
+    + FRESH21
 )
 
 
