@@ -2781,6 +2781,214 @@ ROUND21_TESTS = "tests/training/test_pinned_round21.py"
 FRESH21 = pinned_after(FRESH21, ROUND21_TESTS)
 
 
+FRESH22 = (
+    Bug(
+        "fresh22 io: result JSON files are written with their keys in insertion order, not sorted",
+        "training/io.py",
+        "indent=2, sort_keys=True, default=float",
+        "indent=2, sort_keys=False, default=float",
+        ("tests/training/test_pinned_round16.py", "tests/training/test_runner.py", PROMISES_E),
+    ),
+    Bug(
+        "fresh22 run command: the summary's 'simulated time' line prints the requested duration, not the run's clock",
+        "training/commands/run.py",
+        "{s['simulated_time']:.1f} s",
+        "{duration:.1f} s",
+        (
+            "tests/training/test_pinned_round16.py",
+            "tests/training/test_runner.py",
+            "tests/training/test_cli_errors.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/fuzz/test_probe.py",
+            "tests/play/test_render.py",
+            "tests/test_readme_using.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 plan command: every found plan is printed as 'proven optimal', budget-cut ones too",
+        "training/commands/plan.py",
+        "'proven optimal' if result.optimal else 'not proven optimal'",
+        "'proven optimal' if result.success else 'not proven optimal'",
+        (
+            "tests/agents/test_planner_tools.py",
+            "tests/training/test_cli_errors.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/fuzz/test_probe.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/test_readme_using.py",
+            "tests/training/test_pinned_stalls.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 population command: --candidates equal to the members asked for is refused as too few",
+        "training/commands/population.py",
+        "if candidates < sum(sizes.values()):",
+        "if candidates <= sum(sizes.values()):",
+        (
+            "tests/training/test_population_gen.py",
+            "tests/training/test_readme_population.py",
+            "tests/training/test_pinned_round16.py",
+            "tests/fuzz/test_bounds.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/training/test_pinned_headroom.py",
+            "tests/training/test_recipes.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 switching command: a pair A/B is played B first, then A",
+        "training/commands/switching.py",
+        'a, sep, b = item.partition("/")',
+        'b, sep, a = item.partition("/")',
+        (
+            "tests/training/test_switching.py",
+            "tests/training/test_store_inputs.py",
+            "tests/training/test_cli_errors.py",
+            "tests/fuzz/test_bounds.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/training/test_pinned_adaptation.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 traces command: the 'closest scripted human' named is the farthest one",
+        "training/commands/traces.py",
+        "best = min(distance, key=lambda k: (distance[k], k))",
+        "best = max(distance, key=lambda k: (distance[k], k))",
+        (
+            "tests/play/test_traces.py",
+            "tests/training/test_pinned_round16.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/fuzz/test_probe.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 noisy human: scores ignore the robot's action under way (a cycle charged the human's duration only)",
+        "agents/humans/noisy.py",
+        "out[index] = cycle_length(d_robot, step.duration) + rest",
+        "out[index] = step.duration + rest",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_pinned_promises_d.py",
+            "tests/env/test_compiled_tables.py",
+            "tests/env/test_batched.py",
+            "tests/agents/test_oracle_symmetry.py",
+            "tests/training/test_pinned_round16.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 adversarial human: also 'steals' objects from spots only the human reaches, instead of shared ones",
+        "agents/humans/adversarial.py",
+        "if p < world.n_spots and spots[p].reach.human and spots[p].reach.robot_from",
+        "if p < world.n_spots and spots[p].reach.human",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_pinned_promises_d.py",
+            "tests/env/test_compiled_tables.py",
+            "tests/env/test_batched.py",
+            "tests/training/test_pinned_round17.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 lazy human: the default idle probability is 0.2, not the documented 0.3",
+        "agents/humans/lazy.py",
+        "def __init__(self, p_idle: float = 0.3) -> None:",
+        "def __init__(self, p_idle: float = 0.2) -> None:",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_defaults.py",
+            "tests/training/test_evaluate.py",
+            "tests/env/test_pinned_compiled_gate.py",
+            "tests/env/test_pinned_compiled_robot_gate.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_pinned_promises_d.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 switching human: on reaching a threshold exactly (e.g. the Nth task) it stays with the old human",
+        "agents/humans/switching.py",
+        "from bisect import bisect_right",
+        "from bisect import bisect_left as bisect_right",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_population.py",
+            "tests/training/test_pinned_adaptation.py",
+            "tests/env/test_batched.py",
+            "tests/agents/test_oracle.py",
+            "tests/training/test_evaluate.py",
+            "tests/agents/test_headroom.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 parallel env: the agent-mismatch error lists the missing agents as unexpected and vice versa",
+        "hg_marl/envs/parallel.py",
+        "missing, extra = sorted(live - set(actions)), sorted(set(actions) - live)",
+        "missing, extra = sorted(set(actions) - live), sorted(live - set(actions))",
+        (
+            "tests/env/test_env.py",
+            "tests/env/test_conformance.py",
+            "tests/env/test_info_structure.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 render: the ansi picture lists under each bin the objects of the spot with the same index",
+        "hg_marl/envs/render.py",
+        'places += [("bin", b, world.n_spots + i) for i, b in enumerate(sc.bins)]',
+        'places += [("bin", b, i) for i, b in enumerate(sc.bins)]',
+        (
+            "tests/play/test_render.py",
+            "tests/training/test_pinned_round16.py",
+            "tests/env/test_env.py",
+            "tests/env/test_conformance.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 play session: the summary text says '0 task solved' / '0 move' (singular for zero)",
+        "training/play/session.py",
+        'return word if n == 1 else word + "s"',
+        'return word if n <= 1 else word + "s"',
+        (
+            "tests/play/test_session.py",
+            "tests/play/test_render.py",
+            "tests/play/test_traces.py",
+            "tests/play/test_browser.py",
+            "tests/play/test_explain.py",
+            "tests/training/test_pinned_round17.py",
+            "tests/fuzz/test_outputs.py",
+            PROMISES_E,
+        ),
+    ),
+    Bug(
+        "fresh22 reproduce command: --adaptation-seeds is ignored, the adaptation runs use --seeds",
+        "training/commands/reproduce.py",
+        "adaptation_seeds=adaptation_seeds,",
+        "adaptation_seeds=seeds,",
+        (
+            "tests/training/test_reproduce.py",
+            "tests/training/test_pinned_round17.py",
+            "tests/training/test_cli_errors.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/fuzz/test_probe.py",
+            "tests/fuzz/test_bounds.py",
+            PROMISES_E,
+        ),
+    ),
+)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -2804,6 +3012,7 @@ ALL = (
     + FRESH19
     + FRESH20
     + FRESH21
+    + FRESH22
 )
 
 
