@@ -2781,6 +2781,8 @@ ROUND21_TESTS = "tests/training/test_pinned_round21.py"
 FRESH21 = pinned_after(FRESH21, ROUND21_TESTS)
 
 
+PROMISES_E = "tests/training/test_pinned_promises_e.py"
+"""The promises of round 22's modules, pinned while its bugs were written."""
 FRESH22 = (
     Bug(
         "fresh22 io: result JSON files are written with their keys in insertion order, not sorted",
