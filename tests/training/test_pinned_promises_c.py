@@ -13,7 +13,7 @@ the sweep's runs are stand-ins from a recording backend, so nothing is simulated
 
 from __future__ import annotations
 
-import gzip
+import dataclasses
 import hashlib
 import json
 import logging
@@ -45,9 +45,11 @@ from hg_marl.training.runner import COLUMNS, RunConfig, RunResult, summarise
 from hg_marl.training.stalls import report as stall_report
 from hg_marl.training.stalls import runs_of
 from hg_marl.training.store import Job, Store, content_key, seal
-from hg_marl.training.study import Actor, Study
+from hg_marl.training.study import Study
 from hg_marl.training.sweep import load_log, run_jobs
 from hg_marl.training.switching import SwitchingConfig, check_config, switching_jobs, switching_table
+from tests.training.test_pinned_report import _study as report_study
+from tests.training.test_pinned_stalls import _store_run
 
 # ---- training/switching.py ---------------------------------------------------------------
 
@@ -231,17 +233,8 @@ def test_the_generalisation_gap_needs_both_train_and_test_partners() -> None:
 
 
 def _study() -> Study:
-    return Study(
-        name="hand",
-        path=Path("hand.toml"),
-        robots=(Actor("A", label="A"), Actor("B", label="B")),
-        humans=(Actor("h", label="h"), Actor("k", label="k")),
-        scenarios=("paper2015",),
-        seeds=(0, 1),
-        duration=60.0,
-        train=("h",),
-        test=("k",),
-    )
+    """The report tests' two-robot, two-human study, with h for training and k for testing."""
+    return dataclasses.replace(report_study(), train=("h",), test=("k",))
 
 
 def _frame(rows: list[tuple[str, str, float]]) -> pd.DataFrame:
@@ -417,14 +410,6 @@ def test_the_backend_is_closed_on_return_even_without_jobs(tmp_path: Path) -> No
 
 
 # ---- training/stalls.py ------------------------------------------------------------------
-
-
-def _store_run(out: Path, name: str, job: dict[str, Any], log: pd.DataFrame) -> None:
-    folder = out / "store" / "runs" / name[:2] / name
-    folder.mkdir(parents=True)
-    (folder / "result.json").write_text(json.dumps({"job": job}))
-    with gzip.open(folder / "log.csv.gz", "wt") as f:
-        log.to_csv(f, index=False)
 
 
 def _job(seed: int, human_params: dict[str, Any] | None = None, scenario: str = "paper") -> dict[str, Any]:
