@@ -360,9 +360,8 @@ def headroom(
                 f"headroom: the label {label!r} names two partners ({rows[label]!r} and {spec!r}); "
                 "give each its own label"
             )
-    specs = dict(rows)
-    labels = list(specs)
-    humans = [stationary_human(specs[label], world) for label in labels]
+    labels = list(rows)
+    humans = [stationary_human(rows[label], world) for label in labels]
     budget = Budget(
         max_seconds,
         max_memory,

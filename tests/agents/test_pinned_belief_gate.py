@@ -18,16 +18,7 @@ from partners import Fixed
 from hg_marl.agents.robots.belief import BeliefRobot
 from hg_marl.core import Agent, World
 from hg_marl.policy import Turn
-
-
-def _members(tmp_path: Path, **specs: str) -> str:
-    """A paper2015 population file of ``train`` members ``name=spec``."""
-    path = tmp_path / "population.toml"
-    text = 'name = "t"\nscenario = "paper2015"\n'
-    for name, spec in specs.items():
-        text += f'\n[[members]]\nname = "{name}"\nsplit = "train"\nspec = "{spec}"\n'
-    path.write_text(text)
-    return str(path)
+from tests.population_files import train_members as _members
 
 
 def _robot(tmp_path: Path, world: World, spec: str = "cooperative") -> BeliefRobot:

@@ -37,16 +37,7 @@ from hg_marl.agents.models.layouts import canonical_layouts, layout_distribution
 from hg_marl.agents.robots.belief import BeliefRobot
 from hg_marl.core import Agent, World
 from hg_marl.policy import Turn
-
-
-def _members(tmp_path: Path, **specs: str) -> str:
-    """A paper2015 population file of ``train`` members ``name=spec``."""
-    text = 'name = "t"\nscenario = "paper2015"\n'
-    for name, spec in specs.items():
-        text += f'\n[[members]]\nname = "{name}"\nsplit = "train"\nspec = "{spec}"\n'
-    path = tmp_path / "population.toml"
-    path.write_text(text)
-    return str(path)
+from tests.population_files import train_members as _members
 
 
 def test_a_probes_reason_states_its_seconds_under_the_members_with_a_say(tmp_path: Path) -> None:

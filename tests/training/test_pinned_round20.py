@@ -26,19 +26,12 @@ from hg_marl.agents.robots.belief import BeliefRobot
 from hg_marl.core import Agent, World
 from hg_marl.envs.batched import BatchState
 from hg_marl.policy import Turn
-
-
-def _members(tmp_path: Path) -> str:
-    path = tmp_path / "population.toml"
-    path.write_text(
-        'name = "t"\nscenario = "paper2015"\n\n[[members]]\nname = "coop"\nsplit = "train"\nspec = "cooperative"\n'
-    )
-    return str(path)
+from tests.population_files import train_members
 
 
 def test_the_planner_spell_ends_when_a_task_is_solved(tmp_path: Path) -> None:
     world = World("paper2015")
-    robot = BeliefRobot(population=_members(tmp_path), splits="train", unknown=0.0)
+    robot = BeliefRobot(population=train_members(tmp_path, coop="cooperative"), splits="train", unknown=0.0)
     robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
     state = world.initial_state(np.random.default_rng(0))
     waits = (world.n_actions(Agent.ROBOT) - 1, world.n_actions(Agent.HUMAN) - 1)

@@ -157,7 +157,6 @@ def command_start() -> float:
     return float(started) if started is not None else time.perf_counter()
 
 
-def over_budget(exc: Exception) -> ConfigError:
-    """The one-line error of an exact command refused over its budget, noting the refusal."""
+def over_budget() -> None:
+    """Note that the command was refused over its budget (the script then leaves at once)."""
     SCRIPT["over_budget"] = True
-    return ConfigError(str(exc))

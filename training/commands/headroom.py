@@ -61,9 +61,9 @@ def register(app: typer.Typer) -> None:
                 jobs=jobs,
                 started=command_start(),
             )
-        except OracleTooLarge as exc:
-            raise over_budget(exc) from None
-        except HumanError as exc:
+        except (HumanError, OracleTooLarge) as exc:
+            if isinstance(exc, OracleTooLarge):
+                over_budget()
             raise ConfigError(str(exc)) from None
         width = max(len(a) for a in result.assumed)
         corner = "assumed / true"

@@ -34,7 +34,7 @@ def register(app: typer.Typer) -> None:
             )
         except (HumanError, OracleTooLarge, ValueError) as exc:
             if isinstance(exc, OracleTooLarge):
-                over_budget(exc)  # noted: the script leaves at once
+                over_budget()
             typer.echo(f"error: {exc}", err=True)
             raise typer.Exit(2) from exc
         typer.echo(f"scenario      {result.scenario}")
