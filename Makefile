@@ -16,17 +16,21 @@ INTEGRATION_JOBS ?= $(TEST_WORKERS)
 
 .PHONY: setup reproduce test test-slow test-browser test-ray test-integrations $(addprefix nox-,$(NOX_SESSIONS)) test-mutation mutation-full lint docs bench clean
 
-# Set-up prints a step counter and pip's own progress (one line per package collected,
-# a bar per download), so the minutes of installing are never silent.
+# Set-up prints a step counter and the installer's own report (the packages it resolved,
+# prepared and installed), so the minutes of installing are never silent. pip installs uv;
+# uv installs the rest (in native code: seconds where pip took a minute of one core), given
+# the package sources pip is configured with (.ci/uv_flags.py: local wheels, indexes,
+# constraints), so it resolves what pip would.
+UV_PIP = $(BIN)/uv pip install $$($(BIN)/python .ci/uv_flags.py)
 $(BIN)/.installed: pyproject.toml
 	@echo "setup [1/3]: creating $(VENV)"
 	$(PYTHON) -m venv $(VENV)
-	@echo "setup [2/3]: upgrading pip"
-	$(BIN)/python -m pip install --upgrade --progress-bar on pip
+	@echo "setup [2/3]: installing the installer, uv, with pip"
+	$(BIN)/python -m pip install --progress-bar on "uv>=0.5"
 	@echo "setup [3/3]: installing hg-marl with its dev, sb3, video and play extras: numpy, gymnasium, pettingzoo,"
 	@echo "             matplotlib, pandas, torch==2.13.0 (CPU), stable-baselines3, sb3-contrib, imageio-ffmpeg,"
-	@echo "             starlette, uvicorn, pytest, ruff, mypy, nox (1-7 min; pip prints each package as it goes)"
-	$(BIN)/python -m pip install --progress-bar on -e ".[dev,sb3,video,play]"
+	@echo "             starlette, uvicorn, pytest, ruff, mypy, nox (under a minute to several, with the downloads)"
+	$(UV_PIP) --python $(BIN)/python -e ".[dev,sb3,video,play]"
 	@echo "setup: done ($(VENV))"
 	touch $@
 
@@ -56,7 +60,7 @@ $(addprefix nox-,$(NOX_SESSIONS)): nox-%: setup
 # The web front end in a real headless Chromium: Debian's chromium (installed with
 # apt-get when missing) driven by Playwright with the system executable.
 test-browser: setup
-	$(BIN)/python -m pip install --quiet -e ".[play,browser-test]"
+	$(UV_PIP) --quiet --python $(BIN)/python -e ".[play,browser-test]"
 	test -x /usr/bin/chromium || (apt-get update -qq && apt-get install -y -qq chromium)
 	mkdir -p artifacts
 	HG_MARL_BROWSER_REQUIRED=1 $(BIN)/python -m pytest -m browser $(PYTEST_ARGS)
@@ -64,7 +68,7 @@ test-browser: setup
 # Mutation testing (mutation/README.md): a seeded sample of mutants per module of
 # mutation/modules.toml; prints the score per module and every survivor.
 $(BIN)/.mutation: $(BIN)/.installed
-	$(BIN)/python -m pip install --quiet -e ".[dev,sb3,video,play,mutation]"
+	$(UV_PIP) --quiet --python $(BIN)/python -e ".[dev,sb3,video,play,mutation]"
 	touch $@
 
 test-mutation: $(BIN)/.mutation
@@ -75,10 +79,9 @@ mutation-full: $(BIN)/.mutation
 	$(BIN)/python mutation/run.py --full $(MUTATION_ARGS)
 # Ray may pull other versions of shared dependencies, so it gets its own environment,
 # without the sb3 extra (HG_MARL_REQUIRE_EXTRAS=0: the Ray tests need only Ray).
-$(RAY_VENV)/bin/.installed: pyproject.toml
+$(RAY_VENV)/bin/.installed: pyproject.toml $(BIN)/.installed
 	$(PYTHON) -m venv $(RAY_VENV)
-	$(RAY_VENV)/bin/python -m pip install --quiet --upgrade pip
-	$(RAY_VENV)/bin/python -m pip install --quiet -e ".[dev,ray]"
+	$(UV_PIP) --quiet --python $(RAY_VENV)/bin/python -e ".[dev,ray]"
 	touch $@
 
 test-ray: $(RAY_VENV)/bin/.installed
@@ -92,7 +95,7 @@ lint: setup
 # The documentation site (mkdocs.yml): strict, so a page missing from the nav, a broken
 # link or anchor fails the build. CI runs it as its own stage, after `make test`.
 $(BIN)/.docs: $(BIN)/.installed
-	$(BIN)/python -m pip install --quiet -e ".[docs]"
+	$(UV_PIP) --quiet --python $(BIN)/python -e ".[docs]"
 	touch $@
 
 docs: $(BIN)/.docs
