@@ -368,6 +368,23 @@ class WarmPool:
             runner.close()
 
 
+_INIT_LOCK = threading.Lock()
+
+
+def _init_session(path: Path, session: Path) -> None:
+    """``cosmic-ray init`` in this process: every mutant of ``path`` into a new session database.
+
+    The command's own interpreter spent about a second importing cosmic-ray and its
+    operators before the enumeration, once per module; the mutants are the same (the same
+    operators, none with arguments, as the stage's configuration names none).
+    """
+    import cosmic_ray.commands
+    from cosmic_ray.work_db import use_db
+
+    with _INIT_LOCK, use_db(str(session)) as db:  # one at a time: the operators' plugins load on first use
+        cosmic_ray.commands.init([path], db, {})
+
+
 def _execute_warm(session: Path, scratch: Path, warm: WarmRunner, args: list[str], timeout: float) -> None:
     """``cosmic-ray exec`` with the warm runner: apply each pending mutant, test it, record the result."""
     import cosmic_ray.plugins
@@ -472,7 +489,7 @@ def run_module(
         )
         session = scratch / "session.sqlite"
         cosmic = [sys.executable, "-m", "cosmic_ray.cli"]
-        subprocess.run([*cosmic, "init", str(config), str(session)], cwd=scratch, env=env, check=True)
+        _init_session(scratch / module.path, session)
         with use_db(str(session), WorkDB.Mode.open) as db:
             every = sorted(
                 db.work_items, key=lambda w: [(m.start_pos, m.operator_name, m.occurrence) for m in w.mutations]
