@@ -2995,6 +2995,127 @@ ROUND22_TESTS = "tests/training/test_pinned_round22.py"
 """The values round 22's missed bugs changed, pinned after the round: every round-22 bug runs them too."""
 FRESH22 = pinned_after(FRESH22, ROUND22_TESTS)
 
+# Round 23: the fourteen newest modules again (as rounds 19 and 20), written blind after this
+# round's CI changes; each bug differs from every earlier one in its file.
+FRESH23 = (
+    Bug(
+        "fresh23 belief: a partner's wait counts as 'the partner did something', so a stall hands the "
+        "decisions back to the belief after every shared wait (the planner never drives for long)",
+        "agents/robots/belief.py",
+        "human_acted = turn.last_actions[1] >= 0 and turn.last_actions[1] != world.n_actions(Agent.HUMAN) - 1",
+        "human_acted = turn.last_actions[1] >= 0",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh23 member models: a member read from the process memo is not counted in solved "
+        "(only solves and disk reads count; a second robot in the process reports 0)",
+        "agents/member_models.py",
+        "            else:\n"
+        "                _MEMO.move_to_end(key)\n"
+        "            self._results[m] = result\n"
+        "            self.solved += 1\n",
+        "                self.solved += 1\n"
+        "            else:\n"
+        "                _MEMO.move_to_end(key)\n"
+        "            self._results[m] = result\n",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh23 partner model: wait is no longer exempt from refused_kinds (a partner who never waits "
+        "gets WAIT refused, and the planner model drops waiting)",
+        "agents/partner_model.py",
+        "if k != int(Kind.WAIT) and n >= min_chances and self.taken.get(k, 0.0) / n < below",
+        "if n >= min_chances and self.taken.get(k, 0.0) / n < below",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh23 live: a live partner is asked without the robot action it saw (answers as if the "
+        "robot's action failed: a cooperative partner's model answers differently)",
+        "agents/models/live.py",
+        "self.partner.distribution(self.world, State(where, at, by, obj), seen) if p > 0.0]",
+        "self.partner.distribution(self.world, State(where, at, by, obj), -1) if p > 0.0]",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh23 forked: close() stops the workers but keeps the pool (started stays True and the next "
+        "map uses the terminated pool instead of forking new workers)",
+        "agents/models/forked.py",
+        "        self._pool = self._finalizer = None\n",
+        "",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh23 headroom: the time budget counts from the call, ignoring `started` (the process's start), "
+        "so seconds the process already spent are not charged",
+        "agents/headroom.py",
+        "start=start if started is None else started,",
+        "start=start,",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh23 headroom report: headroom.csv's ratios rounded to 2 decimals (the heatmap's format), not 6",
+        "training/headroom.py",
+        'frame.to_csv(tmp, float_format="%.6f")',
+        'frame.to_csv(tmp, float_format="%.2f")',
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh23 compiled: the clean-table answers (episodic mode) are compiled with no robot action seen, "
+        "so a partner who looks at the robot's action falls back to the live human there (fallbacks > 0)",
+        "agents/compiled.py",
+        "seen = np.full(len(clean), world.table.wait[Agent.ROBOT] if table.uses_robot_action else -1)",
+        "seen = np.full(len(clean), -1)",
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh23 compiled robot: any_answer's 'failing' human answer is the first feasible action, not the "
+        "first infeasible one (states after a human's failed action are not compiled: planned live)",
+        "agents/compiled_robot.py",
+        "actions = np.concatenate([actions, np.argmin(mask[fails], axis=1)])",
+        "actions = np.concatenate([actions, np.argmax(mask[fails], axis=1)])",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh23 answers: the next state's canonical key computed only for tables NOT relabelled "
+        "(condition inverted: a reduced model keeps non-canonical states, more states than the reduction)",
+        "agents/models/answers.py",
+        "if self.relabelled is not False:",
+        "if self.relabelled is False:",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh23 builder: the re-draw's cycle seconds are the partner's first answer alone, not the longer "
+        "of it and the robot's completing wait",
+        "agents/models/builder.py",
+        "np.maximum(world.durations.wait, first.d_human[entry])",
+        "first.d_human[entry]",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh23 progress: with a robot's ranking (prefer), the guard's options are sorted worst first, not best first",
+        "agents/progress.py",
+        "options.sort(key=lambda i: (-float(prefer[i]), i))",
+        "options.sort(key=lambda i: (float(prefer[i]), i))",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh23 chains: a policy's expected cost per state sums its transitions' seconds unweighted by "
+        "their probabilities (a stochastic partner's rate too low)",
+        "agents/models/chains.py",
+        "weights=(probs * taus)[from_ok]",
+        "weights=taus[from_ok]",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh23 oracle: symmetry=False ignored for an equivariant human (the model is reduced anyway: "
+        "fewer states, reduced=True)",
+        "agents/oracle.py",
+        "        if symmetry is None:\n            symmetry = bool(",
+        "        if not symmetry:\n            symmetry = bool(",
+        gate("oracle"),
+    ),
+)
+
 
 ALL = (
     BUGS
@@ -3020,6 +3141,7 @@ ALL = (
     + FRESH20
     + FRESH21
     + FRESH22
+    + FRESH23
 )
 
 

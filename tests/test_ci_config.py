@@ -74,7 +74,7 @@ def test_uv_gets_no_flags_where_pip_has_no_sources_configured() -> None:
 def test_every_install_in_the_makefile_goes_through_uv_with_pips_sources() -> None:
     """Only uv itself is installed with pip; every other install uses ``UV_PIP`` (pip's sources as uv flags)."""
     makefile = (ROOT / "Makefile").read_text()
-    assert "UV_PIP = $(BIN)/uv pip install $$($(BIN)/python .ci/uv_flags.py)" in makefile
+    assert "UV_PIP = $(BIN)/uv pip install --compile-bytecode $$($(BIN)/python .ci/uv_flags.py)" in makefile
     recipes = [line.strip() for line in makefile.splitlines() if line.startswith("\t")]
     pip_installs = [line for line in recipes if "pip install" in line and "UV_PIP" not in line]
     assert sum("$(UV_PIP)" in line for line in recipes) == 5  # set-up, browser, mutation, Ray, docs
