@@ -50,7 +50,7 @@ def uv_flags(config: str) -> list[str]:
             if name == "index-url":  # one default index: the last one configured
                 lists[name] = values[-1:]
             else:  # the same value from a file and from PIP_* is one source
-                lists[name] = [*lists.get(name, []), *(v for v in values if v not in lists.get(name, []))]
+                lists[name] = list(dict.fromkeys([*lists.get(name, []), *values]))
     out = [item for name, flag in FLAGS.items() for value in lists.get(name, []) for item in (flag, value)]
     if lists.get("extra-index-url"):
         out += ["--index-strategy", "unsafe-best-match"]
