@@ -5,7 +5,9 @@ For each module of ``mutation/modules.toml`` this script
 1. copies the sources and tests into a scratch folder laid out as the installed package
    (``agents/`` and ``training/`` appear as ``hg_marl/agents`` and ``hg_marl/training``),
    so the mutated file is the one the tests import and the worktree is never touched;
-2. runs the module's tests once unmutated (they must pass; their time sets the timeout);
+2. runs the module's tests once unmutated (they must pass; their time sets the timeout), or,
+   with ``--baseline-from``, reads both from the report of a test run of the same files
+   (CI's test stage: ``pytest --report-log``, with the key ``--write-key`` wrote beside it);
 3. lets cosmic-ray enumerate every mutant of the module, sets aside those that
    ``equivalent.toml`` justifies by their source line alone, draws a seeded sample among
    the rest (or keeps them all with ``--full``), marks the others skipped and executes
@@ -22,6 +24,9 @@ Usage::
     python mutation/run.py --full               # every mutant (long: see mutation/README.md)
     python mutation/run.py --changed main       # only modules whose file or tests differ from main
     python mutation/run.py --modules vpi,runner --sample 40
+    python mutation/run.py --write-key artifacts/test-report.key      # then, after
+    pytest --report-log artifacts/test-report.jsonl ...                  # the same files,
+    python mutation/run.py --baseline-from artifacts/test-report.jsonl   # no baselines run
 """
 
 from __future__ import annotations
@@ -30,8 +35,10 @@ import argparse
 import contextlib
 import difflib
 import functools
+import hashlib
 import itertools
 import json
+import math
 import os
 import re
 import shlex
@@ -132,6 +139,8 @@ class Outcome:
     """Mutants whose tests ran out of time (counted as killed, as cosmic-ray does): each one costs
     the whole timeout, so a test that fails fast on it shortens the stage."""
     baseline_s: float = 0.0
+    baseline_reported: bool = False
+    """``baseline_s`` read from ``--baseline-from``'s report (the unmutated tests not run again)."""
     wall_s: float = 0.0
     error: str = ""
 
@@ -265,6 +274,74 @@ def tests_from(rev: str, dest: Path) -> None:
     shutil.rmtree(dest / "tests")
     with tarfile.open(fileobj=BytesIO(archive)) as tar:
         tar.extractall(dest, filter="data")
+
+
+def content_key(root: Path = ROOT) -> str:
+    """A hash of everything a scratch copy holds (paths and bytes): what a test run's report stands for."""
+    digest = hashlib.sha256()
+    skip = {"__pycache__", ".hypothesis", ".pytest_cache"}
+    for name in COPIED:
+        src = root / name
+        files = sorted(p for p in src.rglob("*") if p.is_file()) if src.is_dir() else [src] if src.exists() else []
+        for f in files:
+            rel = f.relative_to(root)
+            if skip.intersection(rel.parts) or f.suffix == ".pyc":
+                continue
+            data = f.read_bytes()
+            digest.update(f"{rel.as_posix()}\0{len(data)}\0".encode())
+            digest.update(data)
+    return digest.hexdigest()
+
+
+@dataclass(frozen=True)
+class Baselines:
+    """A test run's outcome and seconds per test (setup, call and teardown), from ``pytest --report-log``.
+
+    The run must have tested the same files: its key (``--write-key``, written before it)
+    must equal the files' key now, or the report is refused.
+    """
+
+    passed: dict[str, bool]
+    seconds: dict[str, float]
+
+    @classmethod
+    def load(cls, report: Path) -> Baselines | None:
+        """Read ``report`` if the key beside it (``report`` with the suffix ``.key``) is the files' key now.
+
+        None, with a warning, where the files changed since (every module runs its baseline).
+        """
+        key_file = report.with_suffix(".key")
+        if not report.is_file() or not key_file.is_file():
+            raise ConfigError(f"--baseline-from: no report {report} with its key {key_file} (--write-key)")
+        if key_file.read_text().strip() != content_key():
+            print(f"warning: --baseline-from: {report} tested other files (its key differs)", file=sys.stderr)
+            return None
+        passed: dict[str, bool] = {}
+        seconds: dict[str, float] = {}
+        for number, line in enumerate(report.read_text().splitlines(), 1):
+            try:
+                entry = json.loads(line)
+            except json.JSONDecodeError as exc:
+                raise ConfigError(f"--baseline-from: {report}:{number}: not JSON ({exc.msg})") from exc
+            if not isinstance(entry, dict) or entry.get("$report_type") != "TestReport":
+                continue
+            node, outcome, duration = entry.get("nodeid"), entry.get("outcome"), entry.get("duration")
+            if not isinstance(node, str) or not isinstance(duration, int | float) or not math.isfinite(duration):
+                raise ConfigError(f"--baseline-from: {report}:{number}: a test report without its nodeid or duration")
+            ok = outcome in ("passed", "skipped")  # a test skipped at setup never reaches its call
+            passed[node] = passed.get(node, True) and ok
+            seconds[node] = seconds.get(node, 0.0) + float(duration)
+        return cls(passed, seconds)
+
+    def seconds_for(self, tests: tuple[str, ...]) -> float | None:
+        """The seconds ``tests`` (files, folders or node ids) took if each of them passed, else None.
+
+        None (the module's own baseline runs) where none of them is in the report or one failed.
+        """
+        chosen = [n for n in self.passed if any(n == t or n.startswith((t + "::", t + "[", t + "/")) for t in tests)]
+        if not chosen or not all(self.passed[n] for n in chosen):
+            return None
+        return sum(self.seconds[n] for n in chosen)
 
 
 def _prejudged(mutation: Any, lines: list[str], module: str, equivalents: list[Equivalent]) -> bool:
@@ -445,12 +522,15 @@ def run_module(
     rev: str | None = None,
     cold: bool = False,
     pool: WarmPool | None = None,
+    baselines: Baselines | None = None,
 ) -> Outcome:
     """Baseline, enumerate, sample, execute and score one module.
 
     ``cold``: run each mutant's tests in a new interpreter through ``cosmic-ray exec``
     (the reference the warm runner is checked against) instead of :class:`WarmRunner`.
     ``pool``: the warm servers to use (one is started and stopped for this module without it).
+    ``baselines``: a report of the unmutated tests (their pass and time); a module whose
+    tests are not all in it as passed runs its own baseline.
     """
     from cosmic_ray.work_db import WorkDB, use_db
     from cosmic_ray.work_item import TestOutcome, WorkerOutcome, WorkResult
@@ -466,14 +546,18 @@ def run_module(
     env = _env(scratch)
     command = shlex.join(_test_command(module.tests))  # cosmic-ray runs shlex.split(command)
     args = _pytest_args(module.tests)
+    reported = None if baselines is None or rev else baselines.seconds_for(module.tests)
     with _warm_runner(pool, cold) as warm:
         t0 = time.perf_counter()
-        if warm is not None:
+        if reported is not None:
+            code, output = 0, ""
+        elif warm is not None:
             code, _, output = warm.run(args, BASELINE_TIMEOUT, scratch)
         else:
             base = subprocess.run(shlex.split(command), cwd=scratch, env=env, capture_output=True, text=True)
             code, output = base.returncode, base.stdout
-        out.baseline_s = time.perf_counter() - t0
+        out.baseline_s = time.perf_counter() - t0 if reported is None else reported
+        out.baseline_reported = reported is not None
         if code != 0:
             out.error = f"tests fail before mutation:\n{output[-2000:]}"
             return out
@@ -608,6 +692,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--tests-from", metavar="REV", help="score the tests of commit REV (e.g. to compare)")
     parser.add_argument("--list", action="store_true", help="print the selected modules and their tests, run nothing")
     parser.add_argument("--rescore", type=Path, metavar="JSON", help="re-apply equivalent.toml to a --json file")
+    parser.add_argument(
+        "--baseline-from",
+        type=Path,
+        metavar="REPORT",
+        help="pytest --report-log of the same files (key: REPORT with suffix .key): no unmutated runs",
+    )
+    parser.add_argument("--write-key", type=Path, metavar="FILE", help="write the files' key for --baseline-from, exit")
     args = parser.parse_args(argv)
     try:
         modules, defaults = load_modules()
@@ -626,6 +717,14 @@ def main(argv: list[str] | None = None) -> int:
             raise ConfigError(f"--sample: expected a positive number, got {args.sample}")
         if args.jobs < 1:
             raise ConfigError(f"--jobs: expected a positive number, got {args.jobs}")
+        if args.write_key:
+            if not args.write_key.parent.is_dir():
+                raise ConfigError(f"--write-key: no folder {args.write_key.parent}")
+            partial = args.write_key.with_name(args.write_key.name + ".partial")
+            partial.write_text(content_key() + "\n")
+            partial.replace(args.write_key)  # atomic: a reader sees the whole key or none
+            return 0
+        baselines = Baselines.load(args.baseline_from) if args.baseline_from else None
     except (ConfigError, tomllib.TOMLDecodeError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
@@ -654,6 +753,7 @@ def main(argv: list[str] | None = None) -> int:
                     args.tests_from,
                     args.cold,
                     servers,
+                    baselines,
                 )
                 for m in selected
             ]

@@ -79,3 +79,17 @@ def test_every_install_in_the_makefile_goes_through_uv_with_pips_sources() -> No
     pip_installs = [line for line in recipes if "pip install" in line and "UV_PIP" not in line]
     assert sum("$(UV_PIP)" in line for line in recipes) == 5  # set-up, browser, mutation, Ray, docs
     assert pip_installs == ['$(BIN)/python -m pip install --progress-bar on "uv>=0.5"']
+
+
+def test_the_mutation_stage_reads_the_report_of_the_test_stage_keyed_before_it_ran() -> None:
+    """The key is the files' content before the tests run, beside the report the test stage
+    writes; the mutation stage reads that report (a key written after would hide an edit)."""
+    lines = [ln for ln in (ROOT / ".ci" / "run").read_text().splitlines() if not ln.lstrip().startswith("#")]
+    key_line = next(i for i, ln in enumerate(lines) if "--write-key" in ln)
+    test_line = next(i for i, ln in enumerate(lines) if re.search(r"\bmake test PYTEST_ARGS=", ln))
+    mutation_line = next(i for i, ln in enumerate(lines) if "make test-mutation" in ln)
+    key = Path(re.search(r"--write-key (\S+)", lines[key_line]).group(1))  # type: ignore[union-attr]
+    report = Path(re.search(r"--report-log=(\S+?)\"", lines[test_line]).group(1))  # type: ignore[union-attr]
+    read = Path(re.search(r"--baseline-from (\S+?)\"", lines[mutation_line]).group(1))  # type: ignore[union-attr]
+    assert key_line < test_line < mutation_line
+    assert read == report and report.with_suffix(".key") == key

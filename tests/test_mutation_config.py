@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib.util
+import json
 import sys
 from pathlib import Path
 
@@ -167,3 +168,69 @@ def test_one_warm_server_tests_each_scratch_copy_in_its_own_folder(mutation, tmp
         assert warm.run(args, 600, copies[2])[0] == 1
         assert warm.run(args, 600, copies[1])[0] == 0
     assert warm.proc.returncode == 0
+
+
+def _report_line(node: str, when: str, outcome: str, duration: float) -> str:
+    """One line as ``pytest --report-log`` writes it (the fields the stage reads)."""
+    fields = {"nodeid": node, "when": when, "outcome": outcome, "duration": duration}
+    return json.dumps({"$report_type": "TestReport", **fields})
+
+
+def test_a_report_stands_for_the_baselines_of_modules_whose_tests_all_passed(mutation, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    report = tmp_path / "report.jsonl"
+    lines = [json.dumps({"pytest_version": "9", "$report_type": "SessionStart"})]
+    for node, call, seconds in [
+        ("tests/a.py::test_x[1]", "passed", 2.0),
+        ("tests/a.py::test_x[2]", "passed", 1.0),
+        ("tests/a.py::test_xy", "passed", 4.0),
+        ("tests/sub/test_b.py::test_b", "failed", 8.0),
+        ("tests/sub/test_c.py::TestC::test_c", "passed", 16.0),
+    ]:
+        lines += [_report_line(node, "setup", "passed", 0.5), _report_line(node, "call", call, seconds)]
+        lines.append(_report_line(node, "teardown", "passed", 0.25))
+    report.write_text("\n".join(lines) + "\n")
+    (tmp_path / "report.key").write_text(mutation.content_key() + "\n")
+    baselines = mutation.Baselines.load(report)
+    # worked by hand: each test's setup 0.5 s and teardown 0.25 s beside its call
+    assert baselines.seconds_for(("tests/a.py::test_x",)) == 2.0 + 1.0 + 2 * 0.75  # both cases, not test_xy
+    assert baselines.seconds_for(("tests/a.py",)) == 2.0 + 1.0 + 4.0 + 3 * 0.75
+    assert baselines.seconds_for(("tests/sub/test_c.py",)) == 16.75  # a class's tests under their file
+    assert baselines.seconds_for(("tests/a.py", "tests/sub/test_c.py")) == 7.0 + 2.25 + 16.75
+    assert baselines.seconds_for(("tests/sub",)) is None  # one test of the folder failed: run the baseline
+    assert baselines.seconds_for(("tests/a.p",)) is None  # a prefix that is not the file names nothing
+    assert baselines.seconds_for(("tests/other.py",)) is None  # not in the report: run the baseline
+
+
+def test_a_report_without_its_key_is_refused_and_one_of_other_files_set_aside(
+    mutation, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:  # type: ignore[no-untyped-def]
+    report = tmp_path / "report.jsonl"
+    report.write_text(_report_line("tests/a.py::t", "call", "passed", 1.0) + "\n")
+    assert mutation.main(["--baseline-from", str(report), "--list"]) == 2  # no key beside it
+    assert "--baseline-from" in capsys.readouterr().err
+    assert mutation.main(["--write-key", str(tmp_path / "report.key")]) == 0
+    assert mutation.main(["--baseline-from", str(report), "--list"]) == 0
+    (tmp_path / "report.key").write_text("0" * 64 + "\n")  # the key of files as they were before an edit
+    assert mutation.Baselines.load(report) is None  # every module runs its own baseline, with a warning
+    assert "tested other files" in capsys.readouterr().err
+    report.write_text('{"$report_type": "TestReport", "nodeid": "tests/a.py::t", "duration": NaN}\n')
+    assert mutation.main(["--write-key", str(tmp_path / "report.key")]) == 0
+    assert mutation.main(["--baseline-from", str(report), "--list"]) == 2
+    assert f"{report}:1" in capsys.readouterr().err
+
+
+def test_the_key_covers_sources_and_tests_but_not_caches(mutation, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    (tmp_path / "tests").mkdir()
+    (tmp_path / "tests" / "test_a.py").write_text("def test_a():\n    pass\n")
+    (tmp_path / "pyproject.toml").write_text("[project]\n")
+    before = mutation.content_key(tmp_path)
+    (tmp_path / "tests" / "__pycache__").mkdir()
+    (tmp_path / "tests" / "__pycache__" / "test_a.cpython-311.pyc").write_bytes(b"\0")
+    (tmp_path / "notes.txt").write_text("not copied")  # outside what a scratch copy holds
+    assert mutation.content_key(tmp_path) == before
+    (tmp_path / "tests" / "test_a.py").write_text("def test_a():\n    assert False\n")
+    assert mutation.content_key(tmp_path) != before
+    (tmp_path / "tests" / "test_a.py").write_text("def test_a():\n    pass\n")
+    assert mutation.content_key(tmp_path) == before
+    (tmp_path / "tests" / "test_a.py").rename(tmp_path / "tests" / "test_b.py")  # same bytes, another name
+    assert mutation.content_key(tmp_path) != before
