@@ -246,19 +246,42 @@ def _test_command(tests: tuple[str, ...]) -> list[str]:
     return [sys.executable, "-m", "pytest", *_pytest_args(tests)]
 
 
-def _check_layout(scratch: Path, module: Module) -> None:
-    """The module the tests import must be the scratch copy (else every mutant survives)."""
-    dotted = module.path.removesuffix(".py").replace("/", ".")
-    for folder, installed in PACKAGE_DIRS.items():
-        if dotted.startswith(folder + "."):
-            dotted = installed.replace("/", ".") + dotted[len(folder) :]
+def _check_layout(scratch: Path, modules: list[Module]) -> dict[str, str]:
+    """The modules that the tests would not import from the scratch copy (else every mutant
+    survives): ``{key: why}``, empty when each is found there.
+
+    One interpreter imports them all: every scratch copy has the same layout, so the stage
+    checks one copy once instead of starting an interpreter per module.
+    """
+    names: dict[str, str] = {}
+    for m in modules:
+        dotted = m.path.removesuffix(".py").replace("/", ".")
+        for folder, installed in PACKAGE_DIRS.items():
+            if dotted.startswith(folder + "."):
+                dotted = installed.replace("/", ".") + dotted[len(folder) :]
+        names[m.key] = dotted
     # import_module, not ``import a.b as m``: a package may re-export a function under its
     # module's name (agents/models/__init__.py: ``from .solve import solve``)
-    code = f"import importlib, pathlib; print(pathlib.Path(importlib.import_module({dotted!r}).__file__).resolve())"
-    proc = subprocess.run([sys.executable, "-c", code], cwd=scratch, env=_env(scratch), capture_output=True, text=True)
-    where = Path(proc.stdout.strip() or "?")
-    if proc.returncode != 0 or not where.is_relative_to(scratch.resolve()):
-        raise RuntimeError(f"{module.key}: {dotted} imports from {where}, not the scratch copy: {proc.stderr[-300:]}")
+    code = (
+        "import importlib, json, pathlib, sys\n"
+        "found = {}\n"
+        "for key, name in json.loads(sys.argv[1]).items():\n"
+        "    try:\n"
+        "        found[key] = str(pathlib.Path(importlib.import_module(name).__file__).resolve())\n"
+        "    except Exception as exc:\n"
+        "        found[key] = f'nowhere ({type(exc).__name__}: {exc})'\n"
+        "print(json.dumps(found))\n"
+    )
+    cmd = [sys.executable, "-c", code, json.dumps(names)]
+    proc = subprocess.run(cmd, cwd=scratch, env=_env(scratch), capture_output=True, text=True)
+    lines = proc.stdout.strip().splitlines()
+    found = json.loads(lines[-1]) if proc.returncode == 0 and lines else {}
+    wrong = {}
+    for key, dotted in names.items():
+        where = str(found.get(key, f"nowhere: {proc.stderr[-300:]}"))
+        if where.startswith("nowhere") or not Path(where).is_relative_to(scratch.resolve()):
+            wrong[key] = f"{key}: {dotted} imports from {where}, not the scratch copy"
+    return wrong
 
 
 def _diff_lines(diff: str) -> tuple[str, str]:
@@ -523,6 +546,7 @@ def run_module(
     cold: bool = False,
     pool: WarmPool | None = None,
     baselines: Baselines | None = None,
+    layout_checked: bool = False,
 ) -> Outcome:
     """Baseline, enumerate, sample, execute and score one module.
 
@@ -531,6 +555,7 @@ def run_module(
     ``pool``: the warm servers to use (one is started and stopped for this module without it).
     ``baselines``: a report of the unmutated tests (their pass and time); a module whose
     tests are not all in it as passed runs its own baseline.
+    ``layout_checked``: :func:`_check_layout` already found the module in a scratch copy.
     """
     from cosmic_ray.work_db import WorkDB, use_db
     from cosmic_ray.work_item import TestOutcome, WorkerOutcome, WorkResult
@@ -542,7 +567,9 @@ def run_module(
         tests_from(rev, scratch)
         kept = tuple(t for t in module.tests if (scratch / t.split("::")[0]).exists())
         module = Module(module.key, module.path, kept, 0, 0.0)
-    _check_layout(scratch, module)
+    wrong = {} if layout_checked else _check_layout(scratch, [module])
+    if wrong:
+        raise RuntimeError(wrong[module.key])
     env = _env(scratch)
     command = shlex.join(_test_command(module.tests))  # cosmic-ray runs shlex.split(command)
     args = _pytest_args(module.tests)
@@ -741,9 +768,13 @@ def main(argv: list[str] | None = None) -> int:
     work = Path(tempfile.mkdtemp(prefix="hg-marl-mutation-"))
     start = time.perf_counter()
     try:
+        layout = scratch_copy(work / "_layout")  # every module's copy is laid out alike: one check for all
+        wrong = _check_layout(layout, selected)
+        shutil.rmtree(layout)
+        runnable = [m for m in selected if m.key not in wrong]
         with WarmPool() as servers, ThreadPoolExecutor(max_workers=args.jobs) as pool:
-            futures = [
-                pool.submit(
+            futures = {
+                m.key: pool.submit(
                     run_module,
                     m,
                     None if args.full else (args.sample or m.sample),
@@ -754,16 +785,20 @@ def main(argv: list[str] | None = None) -> int:
                     args.cold,
                     servers,
                     baselines,
+                    True,
                 )
-                for m in selected
-            ]
+                for m in runnable
+            }
             finished = itertools.count(1)
-            for m, f in zip(selected, futures, strict=True):  # a line per module as it ends: long runs show progress
-                f.add_done_callback(functools.partial(_progress, finished, len(selected), m))
+            for m in runnable:  # a line per module as it ends: long runs show progress
+                futures[m.key].add_done_callback(functools.partial(_progress, finished, len(runnable), m))
             outcomes = []
-            for m, f in zip(selected, futures, strict=True):
+            for m in selected:
+                if m.key in wrong:
+                    outcomes.append(Outcome(m.key, m.path, error=f"RuntimeError: {wrong[m.key]}"))
+                    continue
                 try:
-                    outcomes.append(f.result())
+                    outcomes.append(futures[m.key].result())
                 except Exception as exc:  # one module's failure is reported, not the end of the stage
                     outcomes.append(Outcome(m.key, m.path, error=f"{type(exc).__name__}: {exc}"))
     finally:

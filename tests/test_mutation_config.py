@@ -88,8 +88,14 @@ def test_a_module_its_package_shadows_is_found_in_the_scratch_copy(mutation, tmp
     its module: the layout check must still find the module file in the scratch copy."""
     modules, _ = mutation.load_modules()
     scratch = mutation.scratch_copy(tmp_path / "copy")
-    mutation._check_layout(scratch, modules["model_solve"])  # raises when the copy is not imported
-    mutation._check_layout(scratch, modules["world"])
+    assert mutation._check_layout(scratch, [modules["model_solve"], modules["world"]]) == {}
+    # and a module found elsewhere (the standard library's) or nowhere is named, with where it was found
+    elsewhere = mutation.Module("json_decoder", "json/decoder.py", ("tests",), 1, 0.0)
+    missing = mutation.Module("gone", "agents/gone.py", ("tests",), 1, 0.0)
+    wrong = mutation._check_layout(scratch, [modules["world"], elsewhere, missing])
+    assert sorted(wrong) == ["gone", "json_decoder"]
+    assert "not the scratch copy" in wrong["json_decoder"] and "decoder.py" in wrong["json_decoder"]
+    assert "ModuleNotFoundError" in wrong["gone"]
 
 
 def test_the_warm_runner_sees_each_edit_on_disk_and_stops_a_hung_run(mutation, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
