@@ -3122,6 +3122,127 @@ ROUND23_TESTS = "tests/training/test_pinned_round23.py"
 FRESH23 = pinned_after(FRESH23, ROUND23_TESTS)
 
 
+# Round 24: the fourteen newest modules a fourth time, 14 new bugs written blind (a helper who
+# read the sources and the earlier bugs in these files only); 12 caught, the two missed pinned.
+FRESH24 = (
+    Bug(
+        "fresh24 belief: a probe need only tell MIN_GAIN nats in all, not MIN_GAIN beyond the best "
+        "action's own reply (the robot pays for information it would get anyway)",
+        "agents/robots/belief.py",
+        "return (choice, gain) if gain >= base + MIN_GAIN else (best, base)",
+        "return (choice, gain) if gain >= MIN_GAIN else (best, base)",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh24 member models: a result read from the process memo is marked oldest instead of newest, "
+        "so the member just used is the next one dropped",
+        "agents/member_models.py",
+        "                _MEMO.move_to_end(key)\n",
+        "                _MEMO.move_to_end(key, last=False)\n",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh24 partner model: each ground action gets its kind's whole probability, not an equal "
+        "share of it (the answer distribution sums past 1 when a kind has several feasible actions)",
+        "agents/partner_model.py",
+        "return [(i, pk[int(acts[i].kind)] / by_kind[int(acts[i].kind)]) for i in feasible]",
+        "return [(i, pk[int(acts[i].kind)]) for i in feasible]",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh24 live: in parallel, check is told the chunks done as the answers done (the budget is "
+        "read a 32nd as far along; a refusal reports '3 of 4,000' answers)",
+        "agents/models/live.py",
+        "lambda done: check(min(done * CHUNK, len(rows)), len(rows))",
+        "lambda done: check(min(done, len(rows)), len(rows))",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh24 forked: check_jobs accepts a bool (jobs=True read as one job, jobs=False as one per "
+        "CPU) instead of refusing it",
+        "agents/models/forked.py",
+        "if isinstance(jobs, bool) or not isinstance(jobs, int) or not 0 <= jobs <= MAX_JOBS:",
+        "if not isinstance(jobs, int) or not 0 <= jobs <= MAX_JOBS:",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh24 headroom: the optimum against true partner t read from the matrix's diagonal rates[t, "
+        "t] (the cooperative row comes first), not from t's own row",
+        "agents/headroom.py",
+        "optimum = np.array([rates[list(rows).index(label), t] for t, (label, _) in enumerate(true)])",
+        "optimum = np.array([rates[t, t] for t, (label, _) in enumerate(true)])",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh24 headroom report: headroom.csv holds the tasks per hour, not the ratios to the optimum",
+        "training/headroom.py",
+        "frame = pd.DataFrame(result.ratio, index=list(result.assumed), columns=list(result.true))",
+        "frame = pd.DataFrame(result.rates, index=list(result.assumed), columns=list(result.true))",
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh24 compiled: with a closure, the compiled table holds the last closure human's answers, "
+        "not the compiled human's own",
+        "agents/compiled.py",
+        "    table = tables[0]\n",
+        "    table = tables[-1]\n",
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh24 compiled robot: canonical_plans refuses by the raw robot-turn state count, so a "
+        "scenario whose canonical states fit max_states is refused anyway",
+        "agents/compiled_robot.py",
+        "if len(first) > max_states:",
+        "if len(b) > max_states:",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh24 answers: an equivariant partner's live calls read before the batch only after it is "
+        "answered, so they are never counted (live_calls stays 0)",
+        "agents/models/answers.py",
+        "            before = self.canonical.live_calls\n            size, actions, probs_arr = "
+        "self.canonical(states, seen, self._check)\n",
+        "            size, actions, probs_arr = self.canonical(states, seen, self._check)\n            "
+        "before = self.canonical.live_calls\n",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh24 builder: a partner who looks at the robot's action is asked with the plain key (no "
+        "action seen) and one who does not with the seen key (mids index swapped)",
+        "agents/models/builder.py",
+        "u, inv = unique_inverse(mids[0 if t.uses_robot_action else 1])",
+        "u, inv = unique_inverse(mids[1 if t.uses_robot_action else 0])",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh24 progress: the array guard's reset_rows keeps a table's doubled patience W (the scalar "
+        "guard's reset goes back to PATIENCE_WAIT)",
+        "agents/progress.py",
+        '_RESET = tuple(name for name in _PER_TABLE if name not in ("_where", "_at", "_offer"))',
+        '_RESET = tuple(name for name in _PER_TABLE if name not in ("_where", "_at", "_offer", "patience"))',
+        gate("progress"),
+    ),
+    Bug(
+        "fresh24 chains: forward() leaves the seeds out unless a path leads back to them (the re-drawn "
+        "tables and done states are not 'reached': rates wrong or 0)",
+        "agents/models/chains.py",
+        "    frontier = unique(seeds)\n    found[frontier] = True\n",
+        "    frontier = unique(seeds)\n",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh24 oracle: the robot keeps its policy when reset on the same scenario with other "
+        "durations (not solved again)",
+        "agents/oracle.py",
+        "if self.result is None or self.result.scenario != world.scenario.name or self._solved[1] != table:",
+        "if self.result is None or self.result.scenario != world.scenario.name:",
+        gate("oracle"),
+    ),
+)
+ROUND24_TESTS = "tests/training/test_pinned_round24.py"
+"""The values round 24's missed bugs changed, pinned after the round: every round-24 bug runs them too."""
+FRESH24 = pinned_after(FRESH24, ROUND24_TESTS)
+
 ALL = (
     BUGS
     + FRESH
@@ -3147,6 +3268,7 @@ ALL = (
     + FRESH21
     + FRESH22
     + FRESH23
+    + FRESH24
 )
 
 
