@@ -34,6 +34,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import difflib
+import fnmatch
 import functools
 import hashlib
 import itertools
@@ -65,6 +66,8 @@ CONFIG = ROOT / "mutation" / "modules.toml"
 EQUIVALENT = ROOT / "mutation" / "equivalent.toml"
 COPIED = ("hg_marl", "agents", "training", "tests", "pyproject.toml", "populations", "studies", "docs", "README.md")
 """What a scratch copy holds (sources, tests, pytest's configuration, and the data and pages tests read)."""
+IGNORED = ("__pycache__", "*.pyc", ".hypothesis", ".pytest_cache")
+"""What a scratch copy leaves out (caches): patterns of file and folder names."""
 PACKAGE_DIRS = {"agents": "hg_marl/agents", "training": "hg_marl/training"}
 """pyproject's package-dir: these folders install under hg_marl."""
 
@@ -212,7 +215,7 @@ def changed_files(base: str) -> set[str]:
 
 def scratch_copy(dest: Path) -> Path:
     """Sources and tests laid out as installed, so ``import hg_marl.agents`` finds the copy."""
-    ignore = shutil.ignore_patterns("__pycache__", "*.pyc", ".hypothesis", ".pytest_cache")
+    ignore = shutil.ignore_patterns(*IGNORED)
     for name in COPIED:
         src = ROOT / name
         if not src.exists():  # an optional folder or page this checkout does not have
@@ -302,13 +305,12 @@ def tests_from(rev: str, dest: Path) -> None:
 def content_key(root: Path = ROOT) -> str:
     """A hash of everything a scratch copy holds (paths and bytes): what a test run's report stands for."""
     digest = hashlib.sha256()
-    skip = {"__pycache__", ".hypothesis", ".pytest_cache"}
     for name in COPIED:
         src = root / name
         files = sorted(p for p in src.rglob("*") if p.is_file()) if src.is_dir() else [src] if src.exists() else []
         for f in files:
             rel = f.relative_to(root)
-            if skip.intersection(rel.parts) or f.suffix == ".pyc":
+            if any(fnmatch.fnmatch(part, pattern) for part in rel.parts for pattern in IGNORED):
                 continue
             data = f.read_bytes()
             digest.update(f"{rel.as_posix()}\0{len(data)}\0".encode())
@@ -546,16 +548,14 @@ def run_module(
     cold: bool = False,
     pool: WarmPool | None = None,
     baselines: Baselines | None = None,
-    layout_checked: bool = False,
 ) -> Outcome:
-    """Baseline, enumerate, sample, execute and score one module.
+    """Baseline, enumerate, sample, execute and score one module (its layout checked by the caller).
 
     ``cold``: run each mutant's tests in a new interpreter through ``cosmic-ray exec``
     (the reference the warm runner is checked against) instead of :class:`WarmRunner`.
     ``pool``: the warm servers to use (one is started and stopped for this module without it).
     ``baselines``: a report of the unmutated tests (their pass and time); a module whose
     tests are not all in it as passed runs its own baseline.
-    ``layout_checked``: :func:`_check_layout` already found the module in a scratch copy.
     """
     from cosmic_ray.work_db import WorkDB, use_db
     from cosmic_ray.work_item import TestOutcome, WorkerOutcome, WorkResult
@@ -567,9 +567,6 @@ def run_module(
         tests_from(rev, scratch)
         kept = tuple(t for t in module.tests if (scratch / t.split("::")[0]).exists())
         module = Module(module.key, module.path, kept, 0, 0.0)
-    wrong = {} if layout_checked else _check_layout(scratch, [module])
-    if wrong:
-        raise RuntimeError(wrong[module.key])
     env = _env(scratch)
     command = shlex.join(_test_command(module.tests))  # cosmic-ray runs shlex.split(command)
     args = _pytest_args(module.tests)
@@ -785,7 +782,6 @@ def main(argv: list[str] | None = None) -> int:
                     args.cold,
                     servers,
                     baselines,
-                    True,
                 )
                 for m in runnable
             }
