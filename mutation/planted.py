@@ -3243,6 +3243,123 @@ ROUND24_TESTS = "tests/training/test_pinned_round24.py"
 """The values round 24's missed bugs changed, pinned after the round: every round-24 bug runs them too."""
 FRESH24 = pinned_after(FRESH24, ROUND24_TESTS)
 
+FRESH25 = (
+    Bug(
+        "fresh25 belief: the posterior (and the refusal score) is told the partner saw the robot's action even "
+        "when it failed, so members who look at the robot's action are scored on a move that never happened",
+        "agents/robots/belief.py",
+        "seen = robot_action if step.ok else -1  # what the partner saw the robot do",
+        "seen = robot_action  # what the partner saw the robot do",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh25 member models: every member's result is memoised under the first member's content key, so a "
+        "second member consulted in the process reads the first member's values (a wrong cache hit)",
+        "agents/member_models.py",
+        "key = result_key(self.world, self.specs[m], ORACLE_OPTIONS)",
+        "key = result_key(self.world, self.specs[0], ORACLE_OPTIONS)",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh25 partner model: the robot's action 0 is read as a failed action in the learned partner's "
+        "context (its answers counted under kind -1, not under action 0's kind)",
+        "agents/partner_model.py",
+        "kind = FAILED if robot_action < 0 else",
+        "kind = FAILED if robot_action <= 0 else",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh25 live: in parallel, a batch one question past a multiple of CHUNK loses its last question "
+        "(the chunking range stops one row early)",
+        "agents/models/live.py",
+        "for i in range(0, len(rows), CHUNK)]",
+        "for i in range(0, len(rows) - 1, CHUNK)]",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh25 forked: jobs=0 ('one per CPU', the documented default of --jobs 0) is refused by check_jobs",
+        "agents/models/forked.py",
+        "not 0 <= jobs <= MAX_JOBS",
+        "not 0 < jobs <= MAX_JOBS",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh25 headroom: the headroom number trims 20% from each end, not rliable's 25% IQM (with 4 held-out "
+        "partners it is the plain mean)",
+        "agents/headroom.py",
+        "trim_mean(np.array(values), 0.25)",
+        "trim_mean(np.array(values), 0.2)",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh25 headroom report: headroom.json's held_out lists every column (all true partners), not the "
+        "held-out ones the number is taken over",
+        "training/headroom.py",
+        '"held_out": list(result.held_out),',
+        '"held_out": list(result.true),',
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh25 compiled: the compiled sampler's loop is one step short, so a state with the most answers "
+        "never draws its last answer (a two-answer table always draws its first)",
+        "agents/compiled.py",
+        "for j in range(self.widest - 1):",
+        "for j in range(self.widest - 2):",
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh25 compiled robot: the disk cache key leaves out max_states, so a robot compiled under another "
+        "budget (own cold plans vs canonical plans) is read back (a wrong cache hit)",
+        "agents/compiled_robot.py",
+        '        "max_states": max_states,\n',
+        "",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh25 answers: the budget reading before answering on arrays records phase 'answers', not the "
+        "table's phase (a refusal or deadline then names the wrong phase)",
+        "agents/models/answers.py",
+        'self.budget.check(self.phase, 0, len(missing), "partner answers on arrays")',
+        'self.budget.check("answers", 0, len(missing), "partner answers on arrays")',
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh25 builder: a lazily kept model's regen(partner) returns the model's own partner's re-draw (partner "
+        "0), so every headroom column's rate uses the cooperative model's first answers",
+        "agents/models/builder.py",
+        "            return self.lazy.regen[partner]\n",
+        "            return self.lazy.regen[self.partner]\n",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh25 chains: a pair with exactly one transition leaving the alive set is not counted as leaking, so "
+        "certain_states keeps states that may reach a dead end (finite values where they are infinite)",
+        "agents/models/chains.py",
+        "leaks = np.bincount(t_pair, weights=~alive[chain.t_next], minlength=n_pairs) > 0",
+        "leaks = np.bincount(t_pair, weights=~alive[chain.t_next], minlength=n_pairs) > 1",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh25 progress: W stops doubling at 4 x PATIENCE_WAIT (160 turns), not 8 x (320), so a partner who "
+        "needs the robot still longer is never met",
+        "agents/progress.py",
+        "PATIENCE_MAX = 8 * PATIENCE_WAIT\n",
+        "PATIENCE_MAX = 4 * PATIENCE_WAIT\n",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh25 oracle: a result read from the disk cache is never marked reduced, so a symmetry-reduced "
+        "policy is looked up by raw states (off model / inf values at non-canonical states)",
+        "agents/oracle.py",
+        "reduced=bool(reduced),",
+        "reduced=False,",
+        gate("oracle"),
+    ),
+)
+ROUND25_TESTS = "tests/training/test_pinned_round25.py"
+"""The values round 25's missed bugs changed, pinned after the round: every round-25 bug runs them too."""
+FRESH25 = pinned_after(FRESH25, ROUND25_TESTS)
+
 ALL = (
     BUGS
     + FRESH
@@ -3269,6 +3386,7 @@ ALL = (
     + FRESH22
     + FRESH23
     + FRESH24
+    + FRESH25
 )
 
 
