@@ -70,12 +70,24 @@ def reference_cost(
             allowed += choice
         return sorted(set(allowed))
 
+    answered: dict[State, list[tuple[int, float, State]]] = {}
+
+    def answers(s1: State) -> list[tuple[int, float, State]]:
+        # the human's moves from a mid-cycle state, stepped once (many (state, robot action)
+        # pairs lead to the same mid-cycle state); priced per robot action below
+        out = answered.get(s1)
+        if out is None:
+            out = answered[s1] = []
+            for ah in human_moves(s1):
+                o = world.step(s1, Agent.HUMAN, ah)
+                out.append((ah, o.duration, o.state))
+        return out
+
     def replies(s1: State, d_r: float, ar: int, g: float) -> list[tuple[float, State]]:
         out = []
-        for ah in human_moves(s1):
-            o = world.step(s1, Agent.HUMAN, ah)
-            t = reference_terms(world, d_r, ar, o.duration, ah, hand_h in o.state.where)
-            out.append((g + reference_price(weights, t), o.state))
+        for ah, d_h, s2 in answers(s1):
+            t = reference_terms(world, d_r, ar, d_h, ah, hand_h in s2.where)
+            out.append((g + reference_price(weights, t), s2))
         return out
 
     counter = itertools.count()
