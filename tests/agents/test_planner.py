@@ -148,7 +148,7 @@ def test_optimal_four_objects_many_seeds(scenario: str, weights: CostWeights) ->
 @pytest.mark.slow
 @pytest.mark.parametrize(("seed", "weights"), [(0, "default"), (1, "time_only"), (2, "default")])
 def test_optimal_on_roboergosum(seed: int, weights: str) -> None:
-    """20-35 s per case on a quiet 2-core machine: the exhaustive reference explores every joint cycle.
+    """The file's slowest cases: the exhaustive reference explores every joint cycle.
 
     Three layouts, each weighting on at least one (every seed with every weighting
     doubled the slow stage's longest tests for the same check on the same table).
