@@ -3360,6 +3360,119 @@ ROUND25_TESTS = "tests/training/test_pinned_round25.py"
 """The values round 25's missed bugs changed, pinned after the round: every round-25 bug runs them too."""
 FRESH25 = pinned_after(FRESH25, ROUND25_TESTS)
 
+FRESH26 = (
+    Bug(
+        "fresh26 runner: max_decisions=N lets the robot take N + 1 decisions (the log has one row too many)",
+        "training/runner.py",
+        "if config.max_decisions is not None and len(rows) >= config.max_decisions:",
+        "if config.max_decisions is not None and len(rows) > config.max_decisions:",
+        gate("runner"),
+    ),
+    Bug(
+        "fresh26 switching: a change into a phase exactly min_phase long is skipped by the recovery measure "
+        "(period == min_phase gives no recovery at all)",
+        "training/switching.py",
+        "        if end - start < min_phase:\n",
+        "        if end - start <= min_phase:\n",
+        gate("switching"),
+    ),
+    Bug(
+        "fresh26 population generator: haste drawn from (0, 0.5) and p_idle from (0, 0.3), "
+        "the documented ranges swapped",
+        "training/population_gen.py",
+        'for key, top in (("haste", 0.3), ("p_idle", 0.5)):',
+        'for key, top in (("haste", 0.5), ("p_idle", 0.3)):',
+        gate("population_gen"),
+    ),
+    Bug(
+        "fresh26 aggregate: a robot's runs counted as its seeds per task (the matrix's rows), not seeds x tasks",
+        "training/aggregate.py",
+        '"runs": int(matrices[r].size),',
+        '"runs": int(matrices[r].shape[0]),',
+        gate("aggregate"),
+    ),
+    Bug(
+        "fresh26 report: report.md says the reused runs were run now and the runs made were reused",
+        "training/report.py",
+        "({stats['ran']} run now, {stats['reused']} reused from the store)",
+        "({stats['reused']} run now, {stats['ran']} reused from the store)",
+        gate("report"),
+    ),
+    Bug(
+        "fresh26 store: the run key reads the decision-cost model from the human's params, so a robot's cost= "
+        "change reuses the old run",
+        "training/store.py",
+        '"cost_model": _plain_tree(self.robot_params.get("cost", default_cost_model())),',
+        '"cost_model": _plain_tree(self.human_params.get("cost", default_cost_model())),',
+        gate("store"),
+    ),
+    Bug(
+        "fresh26 sweep: jobs sharing a key are run and stored as the last of them, not the first "
+        "(result.json and the summaries name the last job's label and params)",
+        "training/sweep.py",
+        "first = {key: at[0] for key, at in positions.items()}",
+        "first = {key: at[-1] for key, at in positions.items()}",
+        gate("sweep"),
+    ),
+    Bug(
+        "fresh26 stalls: guard moves/run divides each robot's guard moves by every run of the study, "
+        "not by that robot's runs",
+        "training/stalls.py",
+        'guard = sum(r["guard_moves"] for r in rs) / len(rs)',
+        'guard = sum(r["guard_moves"] for r in rs) / len(rows)',
+        gate("stalls"),
+    ),
+    Bug(
+        "fresh26 memory robot: a guard move charges no decision time (its row's decision_time is 0, "
+        "not the habit cost)",
+        "agents/robots/memory.py",
+        "reason=self.progress.reason, decision_time=self.cost.habit_cost(wall))",
+        "reason=self.progress.reason, decision_time=0.0)",
+        gate("memory_robot"),
+    ),
+    Bug(
+        "fresh26 family-out: fo_bursts refuses rest=0 (a partner that never rests)",
+        "agents/humans/family_out.py",
+        "and work > 0 and rest >= 0):",
+        "and work > 0 and rest > 0):",
+        gate("family_out"),
+    ),
+    Bug(
+        "fresh26 batched: the human seat's work (and effort-weighted reward) is measured from the robot's "
+        "effort before the cycle, not its own",
+        "hg_marl/envs/batched.py",
+        "effort_before = self.effort[rows, 1].copy()",
+        "effort_before = self.effort[rows, 0].copy()",
+        gate("batched"),
+    ),
+    Bug(
+        "fresh26 world: a layout group's spots drawn with replacement (two objects can start on one spot, "
+        "and every seeded layout changes)",
+        "hg_marl/core/world.py",
+        "chosen = rng.choice(len(group.spots), size=group.count, replace=False)",
+        "chosen = rng.choice(len(group.spots), size=group.count, replace=True)",
+        gate("world"),
+    ),
+    Bug(
+        "fresh26 adaptation: tasks lost measured to the last logged decision, not the end of the run",
+        "training/adaptation.py",
+        "tasks_lost(log, sw.last, oracle_rate, end=duration)",
+        "tasks_lost(log, sw.last, oracle_rate)",
+        gate("adaptation"),
+    ),
+    Bug(
+        "fresh26 cycle: what the human sees of the robot's action follows whether the human's own action "
+        "succeeded, not the robot's",
+        "hg_marl/core/cycle.py",
+        "seen(robot_action, robot.ok)",
+        "seen(robot_action, human.ok)",
+        gate("cycle"),
+    ),
+)
+ROUND26_TESTS = "tests/training/test_pinned_round26.py"
+"""The values round 26's missed bugs changed, pinned after the round: every round-26 bug runs them too."""
+FRESH26 = pinned_after(FRESH26, ROUND26_TESTS)
+
 ALL = (
     BUGS
     + FRESH
@@ -3387,6 +3500,7 @@ ALL = (
     + FRESH23
     + FRESH24
     + FRESH25
+    + FRESH26
 )
 
 
