@@ -85,11 +85,11 @@ def test_the_partners_action_zero_is_counted() -> None:
     wait_r = world.n_actions(Agent.ROBOT) - 1
     for seed in range(50):  # a first table where the human may take its action 0 (a pick)
         state = world.initial_state(np.random.default_rng(seed))
-        if 0 in world.feasible_indices(world.step(state, Agent.ROBOT, wait_r).state, Agent.HUMAN):
+        after_robot = world.step(state, Agent.ROBOT, wait_r).state
+        if 0 in world.feasible_indices(after_robot, Agent.HUMAN):
             break
     else:
         pytest.fail("no first table lets the human take its action 0")
-    after_robot = world.step(state, Agent.ROBOT, wait_r).state
     after_human = world.step(after_robot, Agent.HUMAN, 0).state
     turn = Turn(world, after_human, Agent.ROBOT, {}, last_actions=(wait_r, 0))
     model = LearnedPartner()

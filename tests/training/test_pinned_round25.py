@@ -96,8 +96,9 @@ def test_a_compiled_partner_draws_every_answer_of_its_widest_state_with_its_prob
     for t in range(200):
         agent = Agent(t % 2)
         masks = rules.masks(batch, agent)
-        if agent is Agent.HUMAN and masks.sum(1).max() == compiled.widest:
-            found = batch.state(int(masks.sum(1).argmax()))
+        widths = masks.sum(1)
+        if agent is Agent.HUMAN and widths.max() == compiled.widest:
+            found = batch.state(int(widths.argmax()))
             break
         rules.step(batch, agent, (rng.random(masks.shape) * masks).argmax(1))
     assert found is not None and compiled.widest >= 3
