@@ -68,6 +68,7 @@ from tqdm import tqdm
 from hg_marl.agents import content
 from hg_marl.agents.compiled import CompileError, Packer, default_cache, save_table
 from hg_marl.agents.models.packing import StatePacker
+from hg_marl.agents.models.partners import Shared
 from hg_marl.agents.progress import PROGRESS_AFTER, ArrayProgressGuard
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules, BatchState
@@ -132,8 +133,8 @@ def any_answer(world: World) -> Any:
     """Every feasible human action and the first infeasible one (standing for all: nothing happens), on arrays."""
     rules = BatchedRules(world)
 
-    def answers(b: BatchState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        mask = rules.masks(b, Agent.HUMAN)
+    def answers(b: BatchState, shared: Shared | None = None, /) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        mask = rules.masks(b, Agent.HUMAN) if shared is None else shared.mask
         fails = ~mask.all(axis=1)
         rows, actions = np.nonzero(mask)
         rows = np.concatenate([rows, np.flatnonzero(fails)])

@@ -13,6 +13,7 @@ read every :data:`CHECK_EVERY` live answers: a planner-driven human may spend a 
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -20,14 +21,14 @@ import numpy as np
 from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.equivariant import canonical_answers
-from hg_marl.agents.models.keyed import SegmentTable
-from hg_marl.agents.models.live import LiveAnswers, questions
+from hg_marl.agents.models.keyed import SegmentTable, known
+from hg_marl.agents.models.live import Asked, LiveAnswers, questions
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.models.partners import Answers, batch_answers
 from hg_marl.core import Agent, World
 from hg_marl.core.errors import HumanError
 from hg_marl.core.spec import AgentSpec
-from hg_marl.envs.batched import BatchedRules
+from hg_marl.envs.batched import BatchedRules, BatchState
 
 CHECK_EVERY = 4
 """Live answers computed between two budget readings (one answer may cost a planner search; the
@@ -35,6 +36,60 @@ time budget's timer, ``Budget.deadline``, interrupts a long one anyway)."""
 
 FIELDS = {"actions": np.int64, "probs": np.float64, "next": np.int64, "canonical": np.int64, "d_human": np.float64}
 """Per-entry arrays (a key's entries are contiguous, at :meth:`AnswerTable.lookup`'s positions)."""
+
+
+class KeyBatch:
+    """Distinct sorted mid-cycle keys, unpacked and with the human's masks, each computed once when first read.
+
+    Why: a joint model's partners are asked the same keys at each step of the build
+    (twenty on the headroom's), and unpacking them and computing the human's masks
+    once, not once per partner, is about a third of the build. Readers must not change
+    the arrays (:meth:`AnswerTable.ensure` steps copies).
+    """
+
+    def __init__(self, packer: StatePacker, rules: BatchedRules, keys: np.ndarray) -> None:
+        self.packer, self.rules, self.keys = packer, rules, keys
+        self._unpacked: tuple[BatchState, np.ndarray] | None = None
+        self._mask: np.ndarray | None = None
+        self._subset: tuple[np.ndarray, KeyBatch] | None = None
+        self._derived: dict[str, Any] = {}
+
+    @property
+    def unpacked(self) -> tuple[BatchState, np.ndarray]:
+        """The states and the robot actions seen (:meth:`StatePacker.unpack`)."""
+        if self._unpacked is None:
+            self._unpacked = self.packer.unpack(self.keys)
+        return self._unpacked
+
+    @property
+    def mask(self) -> np.ndarray:
+        """The human's masks of the states (:meth:`BatchedRules.masks`)."""
+        if self._mask is None:
+            self._mask = self.rules.masks(self.unpacked[0], Agent.HUMAN)
+        return self._mask
+
+    def derived(self, name: str, make: Callable[[], Any]) -> Any:
+        """``make()``, computed once for every partner that asks for ``name`` (``partners.Shared``)."""
+        if name not in self._derived:
+            self._derived[name] = make()
+        return self._derived[name]
+
+    def rows(self, rows: np.ndarray) -> KeyBatch:
+        """The keys at ``rows``, kept for the next table that lacks the same (what is computed is taken)."""
+        if self._subset is not None and np.array_equal(self._subset[0], rows):
+            return self._subset[1]
+        out = KeyBatch(self.packer, self.rules, self.keys[rows])
+        self._subset = (rows, out)
+        if self._unpacked is not None:
+            b, seen = self._unpacked
+            out._unpacked = (_rows(b, rows), seen[rows])
+        if self._mask is not None:
+            out._mask = self._mask[rows]
+        return out
+
+
+def _rows(b: BatchState, rows: np.ndarray) -> BatchState:
+    return BatchState(b.where[rows], b.robot_at[rows], b.offer_by[rows], b.offer_obj[rows])
 
 
 class AnswerTable:
@@ -78,6 +133,8 @@ class AnswerTable:
         """Whether entries carry their next state's canonical key (the builder sets it on a new
         table: a model without symmetry reduction never reads it); None: computed."""
         self.phase = "answers"
+        self._pending: tuple[np.ndarray, Asked] | None = None
+        """Keys handed to the live human by :meth:`prefetch`, and their answers to come."""
 
     @property
     def keys(self) -> np.ndarray:
@@ -89,36 +146,79 @@ class AnswerTable:
         """Per-entry arrays by :data:`FIELDS` name (positions from :meth:`lookup`)."""
         return self.table.entries
 
-    def lookup(self, keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(first entry, entry count) per key; every key must be known (see :meth:`ensure`)."""
-        return self.table.lookup(keys)
+    def lookup(self, keys: np.ndarray, at: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(first entry, entry count) per key; every key must be known (see :meth:`ensure`).
+
+        ``at``: the keys' positions among :attr:`keys` where known (:meth:`SegmentTable.lookup`).
+        """
+        return self.table.lookup(keys, at)
 
     def compact(self) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
         """(keys, starts, entries), key ``i``'s entries at ``starts[i]:starts[i + 1]``: as compiled partners store."""
         return self.table.compact()
 
-    def ensure(self, keys: np.ndarray) -> None:
-        """Answer the distinct sorted ``keys`` the table lacks with the live human, and store them."""
-        missing = self.table.missing(keys)
-        if not len(missing):
+    def ensure(self, keys: np.ndarray, batch: KeyBatch | None = None) -> None:
+        """Answer the distinct sorted ``keys`` the table lacks with the live human, and store them.
+
+        ``batch``: the same keys as a :class:`KeyBatch` shared with other tables (their
+        unpacking and masks are then computed once for all).
+        """
+        lack = ~known(self.table.keys, keys)
+        if not lack.any():
             return
-        states, seen = self.packer.unpack(missing)
+        every = bool(lack.all())
+        missing = keys if every else keys[lack]
+        if batch is None:
+            batch = KeyBatch(self.packer, self.rules, missing)
+        elif not every:
+            batch = batch.rows(np.flatnonzero(lack))
+        states, seen = batch.unpacked
         if self.batch is not None:
             if self.budget is not None:
                 self.budget.check(self.phase, 0, len(missing), "partner answers on arrays")
-            size, actions, probs_arr = self.batch(states)
-            self._store(missing, size, actions, probs_arr)
+            size, actions, probs_arr = self.batch(states, batch)
+            self._store(batch, size, actions, probs_arr)
             return
         if self.canonical is not None:
             before = self.canonical.live_calls
             size, actions, probs_arr = self.canonical(states, seen, self._check)
             self.live_calls += self.canonical.live_calls - before
-            self._store(missing, size, actions, probs_arr)
+            self._store(batch, size, actions, probs_arr)
+            return
+        pending, self._pending = self._pending, None
+        if pending is not None and np.array_equal(pending[0], missing):
+            size, actions, probs_arr = pending[1].collect(self._check)
+        else:
+            if pending is not None:  # another batch's: its answers are dropped (the builder never does this)
+                pending[1].collect(self._check)
+            asked = questions(states.where, states.robot_at, states.offer_by, states.offer_obj, seen)
+            size, actions, probs_arr = self.live(asked, self._check)
+        self.live_calls += len(missing)
+        self._store(batch, size, actions, probs_arr)
+
+    @property
+    def answers_live(self) -> bool:
+        """Whether keys the table lacks are answered by the live human (not on arrays)."""
+        return self.batch is None
+
+    def prefetch(self, keys: np.ndarray) -> None:
+        """Start the live human's answers to the distinct sorted ``keys`` the table lacks, in its workers.
+
+        The next :meth:`ensure` of the same keys collects them instead of asking: the
+        builder steps the other partners' answers meanwhile. Nothing starts without
+        workers, for a human answered on arrays, or while answers are pending.
+        """
+        if self.batch is not None or not self.live.workers.parallel or self._pending is not None:
+            return
+        missing = self.table.missing(keys)
+        if not len(missing):
+            return
+        states, seen = self.packer.unpack(missing)
+        if self.canonical is not None:
+            self.canonical.prefetch(states, seen)
             return
         asked = questions(states.where, states.robot_at, states.offer_by, states.offer_obj, seen)
-        size, actions, probs_arr = self.live(asked, self._check)
-        self.live_calls += len(missing)
-        self._store(missing, size, actions, probs_arr)
+        self._pending = (missing, self.live.submit(asked))
 
     def close(self) -> None:
         """Stop the live human's worker processes, if it has any (a later :meth:`ensure` forks new ones)."""
@@ -128,10 +228,11 @@ class AnswerTable:
         if self.budget is not None and i % CHECK_EVERY == 0:
             self.budget.check(self.phase, i, total, "partner answers of this step", memory=i % 4096 == 0)
 
-    def _store(self, missing: np.ndarray, size: np.ndarray, actions: np.ndarray, probs: np.ndarray) -> None:
-        """Step the answers of ``missing`` once and merge them into the table."""
-        b, _ = self.packer.unpack(np.repeat(missing, size))
-        _, d_human, _ = self.rules.step(b, Agent.HUMAN, actions)
+    def _store(self, batch: KeyBatch, size: np.ndarray, actions: np.ndarray, probs: np.ndarray) -> None:
+        """Step the answers of the keys of ``batch`` once and merge them into the table."""
+        rep = np.repeat(np.arange(len(size)), size)
+        b = _rows(batch.unpacked[0], rep)  # a copy: stepped in place
+        _, d_human, _ = self.rules.step(b, Agent.HUMAN, actions, batch.mask[rep])
         nxt = self.packer.pack(b)
         if self.relabelled is not False:
             self.packer.canonical(b)
@@ -142,7 +243,7 @@ class AnswerTable:
             "canonical": nxt if self.relabelled is False else self.packer.pack(b),
             "d_human": d_human,
         }
-        self.table.add(missing, size, new)
+        self.table.add(batch.keys, size, new)
 
 
 def stationary_human(human: Any, world: World) -> Any:

@@ -28,7 +28,7 @@ import numpy as np
 from scipy import sparse
 from tqdm import tqdm
 
-from hg_marl.agents.models.answers import AnswerTable
+from hg_marl.agents.models.answers import AnswerTable, KeyBatch
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.keyed import first_unique, positions, ranges, starts_of, unique, unique_inverse
 from hg_marl.agents.models.lazy import TableTransitions
@@ -202,8 +202,8 @@ class _Index:
 class _Answered:
     """Answers of distinct mid-cycle keys: per key a block of (next key, probability, seconds)."""
 
-    def __init__(self, table: AnswerTable, mids: np.ndarray, canonical: bool) -> None:
-        table.ensure(mids)
+    def __init__(self, table: AnswerTable, mids: np.ndarray, canonical: bool, batch: KeyBatch | None = None) -> None:
+        table.ensure(mids, batch)
         start, size = table.lookup(mids)
         self.block = np.concatenate([[0], np.cumsum(size)]).astype(np.int64)
         entry = np.repeat(start - self.block[:-1], size) + np.arange(self.block[-1])
@@ -309,9 +309,18 @@ def build_model(
                     keyed[live] = mid
                     parts[name].append(keyed)
                 parts["d_robot"].append(d_robot)
-            for t in tables:
-                u, inv = unique_inverse(mids[0 if t.uses_robot_action else 1])
-                ans = _Answered(t, u, canonical)
+            distinct = {uses: unique_inverse(mids[0 if uses else 1]) for uses in {t.uses_robot_action for t in tables}}
+            shared = {uses: KeyBatch(packer, rules, u) for uses, (u, _) in distinct.items()}
+            for t in tables:  # the live partners' searches start in their workers ...
+                t.prefetch(distinct[t.uses_robot_action][0])
+            answered: dict[int, _Answered] = {}
+            for i in sorted(range(len(tables)), key=lambda i: tables[i].answers_live):
+                # ... while the partners on arrays are answered here (each table's answers are its own)
+                uses = tables[i].uses_robot_action
+                answered[i] = _Answered(tables[i], distinct[uses][0], canonical, shared[uses])
+            for i, t in enumerate(tables):
+                inv = distinct[t.uses_robot_action][1]
+                ans = answered[i]
                 if not keep:
                     found.append(ans.next)
                     continue

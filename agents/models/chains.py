@@ -103,12 +103,14 @@ def policy_rate(chain: Chain, done: np.ndarray, policy: tuple[np.ndarray, np.nda
     the task. The chain of the policy is restricted to the states it reaches from the
     re-drawn tables; there, the states that may reach one that cannot complete get
     infinite seconds (graph search), and the others' expected seconds to the next
-    success solve ``(I - P) V = c`` (``spsolve``).
+    success solve ``(I - P) V = c`` (``spsolve``). Where a re-drawn table has such a
+    state, the rate is 0 whatever the others' seconds, and no system is solved (most of
+    a headroom matrix's entries are 0).
     """
     t_start, cols, probs, taus = policy
     n = len(done)
     rows = np.repeat(np.arange(n), np.diff(t_start))  # the state of each of the policy's transitions
-    graph = sparse.csr_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)), shape=(n, n))
+    graph = sparse.csr_matrix((np.ones(len(cols), dtype=np.int8), cols, t_start), shape=(n, n))  # already CSR
     seen = forward(graph, chain.regen_next)
     sub = np.flatnonzero(seen)
     pos = np.full(n, -1, dtype=np.int64)
@@ -120,6 +122,8 @@ def policy_rate(chain: Chain, done: np.ndarray, policy: tuple[np.ndarray, np.nda
     small = sparse.csr_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)), shape=(m, m))
     reach = backward(small, done)
     certain = ~backward(small, ~reach)
+    if not certain[pos[chain.regen_next]][chain.regen_prob > 0].all():
+        return 0.0  # a re-drawn table may lead where completion is not certain: infinite seconds, rate 0
     values = np.full(m, math.inf)
     idx = np.flatnonzero(certain)
     if len(idx):

@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.models.keyed import SegmentTable, known, ranges, unique_first_inverse
-from hg_marl.agents.models.live import Check, LiveAnswers, questions
+from hg_marl.agents.models.live import Asked, Check, LiveAnswers, Row, questions
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.core import Agent, Kind, World
 from hg_marl.core.relabel import Relabel
@@ -96,13 +96,12 @@ class CanonicalAnswers:
         """The partner's answers by canonical key (actions in canonical labelling)."""
         self.live_calls = 0
         """Distributions asked of the live partner (one per canonical key)."""
+        self._pending: tuple[np.ndarray, Asked] | None = None
+        """Keys handed to the live partner by :meth:`prefetch`, and their answers to come."""
 
     def __call__(self, states: BatchState, seen: np.ndarray, check: Check) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(entries per state, actions, probabilities) of a batch, entries in index order per state."""
-        canon, orig = canonical_copy(self.packer, states)
-        rep = self.rep[seen] if self.uses_robot_action else np.full(len(seen), -1, dtype=np.int64)
-        keys = self.packer.pack(canon, rep)
-        uniq, first, inv = unique_first_inverse(keys)
+        canon, orig, rep, keys, uniq, first, inv = self._keys(states, seen)
         self._ask(uniq, first, canon, rep, check)
         start, size = self.table.lookup(uniq)
         start, size = start[inv], size[inv]
@@ -113,16 +112,44 @@ class CanonicalAnswers:
         order = np.lexsort((back, rows))  # the live partner lists a distribution in index order
         return size, back[order], entries["probs"][entry][order]
 
+    def prefetch(self, states: BatchState, seen: np.ndarray) -> None:
+        """Start asking the live partner for the canonical keys of a batch it lacks (kept until the next call)."""
+        if self._pending is None:
+            canon, _, rep, _, uniq, first, _ = self._keys(states, seen)
+            new = np.flatnonzero(~known(self.table.keys, uniq))
+            if len(new):
+                self._pending = (uniq[new], self.live.submit(self._questions(first[new], canon, rep)))
+
+    def _keys(
+        self, states: BatchState, seen: np.ndarray
+    ) -> tuple[BatchState, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """The canonical batch, ``orig``, the representatives seen, the keys, and their distinct ones."""
+        canon, orig = canonical_copy(self.packer, states)
+        rep = self.rep[seen] if self.uses_robot_action else np.full(len(seen), -1, dtype=np.int64)
+        keys = self.packer.pack(canon, rep)
+        uniq, first, inv = unique_first_inverse(keys)
+        return canon, orig, rep, keys, uniq, first, inv
+
+    @staticmethod
+    def _questions(rows: np.ndarray, canon: BatchState, rep: np.ndarray) -> list[Row]:
+        at = rows.tolist()
+        return questions(canon.where[at], canon.robot_at[at], canon.offer_by[at], canon.offer_obj[at], rep[at])
+
     def _ask(self, uniq: np.ndarray, first: np.ndarray, canon: BatchState, rep: np.ndarray, check: Check) -> None:
-        """Ask the live partner for the canonical keys of ``uniq`` not known yet, and store them."""
+        """Ask the live partner for the canonical keys of ``uniq`` not known yet, and store them.
+
+        The keys of a :meth:`prefetch` are stored first (their answers are the partner's
+        whichever batch asks for them), so a batch that was prefetched asks nothing more.
+        """
+        if self._pending is not None:
+            keys, asked = self._pending
+            self._pending = None
+            sizes, acts, probs = asked.collect(check)
+            self.live_calls += len(keys)
+            self.table.add(keys, sizes, {"actions": acts, "probs": probs})
         new = np.flatnonzero(~known(self.table.keys, uniq))
         if not len(new):
             return
-        rows = first[new].tolist()
-        asked = questions(
-            canon.where[rows], canon.robot_at[rows], canon.offer_by[rows], canon.offer_obj[rows], rep[rows]
-        )
-        sizes, acts, probs = self.live(asked, check)
-        self.live_calls += len(rows)
-        answers = {"actions": acts, "probs": probs}
-        self.table.add(uniq[new], sizes, answers)
+        sizes, acts, probs = self.live(self._questions(first[new], canon, rep), check)
+        self.live_calls += len(new)
+        self.table.add(uniq[new], sizes, {"actions": acts, "probs": probs})

@@ -21,7 +21,7 @@ import gc
 import multiprocessing
 import os
 import weakref
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Any, Generic, TypeVar
 
 T = TypeVar("T")
@@ -74,25 +74,19 @@ class Forked(Generic[T, R]):
 
     def map(self, items: Sequence[T], check: Callable[[int], None] | None = None) -> list[R]:
         """``function(item)`` for each item, in order; ``check(done)`` before the first and after each result."""
-        out: list[R] = []
-        if check is not None:
-            check(0)
+        return self.submit(items).collect(check)
+
+    def submit(self, items: Sequence[T]) -> Submitted[T, R]:
+        """Hand ``items`` to the workers now; :meth:`Submitted.collect` gives what :meth:`map` would.
+
+        Why: the caller can work in this process while the workers compute (the model
+        builder steps the array partners' answers while a live partner's are searched).
+        In this process (one job, no ``fork``, fewer than two items) nothing starts before
+        :meth:`Submitted.collect`.
+        """
         if not self.parallel or len(items) < 2:
-            for item in items:
-                out.append(self.function(item))
-                if check is not None:
-                    check(len(out))
-            return out
-        pool = self._start()
-        try:
-            for result in pool.imap(_call, [(self._key, item) for item in items]):
-                out.append(result)
-                if check is not None:
-                    check(len(out))
-        except BaseException:
-            self.close()
-            raise
-        return out
+            return Submitted(self, items, None)
+        return Submitted(self, items, self._start().imap(_call, [(self._key, item) for item in items]))
 
     def _start(self) -> Any:
         if self._pool is None:
@@ -116,6 +110,34 @@ class Forked(Generic[T, R]):
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+
+class Submitted(Generic[T, R]):
+    """Items handed to a :class:`Forked`'s workers (or kept to be mapped in this process), collected once."""
+
+    def __init__(self, owner: Forked[T, R], items: Sequence[T], results: Iterator[R] | None) -> None:
+        self.owner, self.items, self.results = owner, items, results
+
+    def collect(self, check: Callable[[int], None] | None = None) -> list[R]:
+        """The results in the order of the items; ``check(done)`` before the first and after each result."""
+        out: list[R] = []
+        if check is not None:
+            check(0)
+        if self.results is None:
+            for item in self.items:
+                out.append(self.owner.function(item))
+                if check is not None:
+                    check(len(out))
+            return out
+        try:
+            for result in self.results:
+                out.append(result)
+                if check is not None:
+                    check(len(out))
+        except BaseException:
+            self.owner.close()
+            raise
+        return out
 
 
 def _stop(pool: Any, key: int) -> None:

@@ -111,9 +111,13 @@ class SegmentTable:
         """The entry arrays (in order of insertion; a key's entries are contiguous, in its given order)."""
         return {name: buf[: self.n_entries] for name, buf in self._buffers.items()}
 
-    def lookup(self, keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(first entry, entry count) per key; every key must be in the table."""
-        at = positions(self.keys, keys)
+    def lookup(self, keys: np.ndarray, at: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(first entry, entry count) per key; every key must be in the table.
+
+        ``at``: the keys' positions among the table's keys, where the caller has them
+        (:func:`positions`; tables with the same keys share them).
+        """
+        at = positions(self.keys, keys) if at is None else at
         return self.first[at], self.size[at]
 
     def missing(self, keys: np.ndarray) -> np.ndarray:

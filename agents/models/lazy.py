@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.models.answers import AnswerTable
-from hg_marl.agents.models.keyed import ranges, starts_of
+from hg_marl.agents.models.keyed import positions, ranges, starts_of
 
 
 class TableTransitions:
@@ -33,8 +33,11 @@ class TableTransitions:
         self.tables, self.index, self.canonical = tables, index, canonical
         self.mid_seen, self.mid_plain, self.d_robot, self.regen = mid_seen, mid_plain, d_robot, regen
         self._ids: dict[int, np.ndarray] = {}
-        self._order: dict[bool, np.ndarray] = {}
+        self._order: dict[bool, tuple[np.ndarray, np.ndarray]] = {}
+        """Per kind of key: the live pairs in key order, and their keys."""
         self._last: tuple[int, np.ndarray, np.ndarray] | None = None
+        self._searched: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
+        """(table keys, sorted pair keys, positions) of each distinct table searched."""
 
     def entries_of(self, partner: int, terminal: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(first entry, entry count) of every pair in ``partner``'s table (0 entries: the completing ``wait``).
@@ -47,15 +50,29 @@ class TableTransitions:
             return self._last[1], self._last[2]
         table = self.tables[partner]
         keys = self.mid_seen if table.uses_robot_action else self.mid_plain
-        order = self._order.get(table.uses_robot_action)
-        if order is None:
+        if table.uses_robot_action not in self._order:
             live = np.flatnonzero(~terminal)
-            order = self._order[table.uses_robot_action] = live[np.argsort(keys[live], kind="stable")]
+            order = live[np.argsort(keys[live], kind="stable")]
+            self._order[table.uses_robot_action] = (order, keys[order])
+        order, asked = self._order[table.uses_robot_action]
         first = np.zeros(len(keys), dtype=np.int64)
         size = np.zeros(len(keys), dtype=np.int64)
-        first[order], size[order] = table.lookup(keys[order])
+        first[order], size[order] = table.lookup(asked, self._positions(table.keys, asked))
         self._last = (partner, first, size)
         return first, size
+
+    def _positions(self, table_keys: np.ndarray, asked: np.ndarray) -> np.ndarray:
+        """``asked``'s positions among ``table_keys``, searched once for tables with the same keys.
+
+        The partners of a joint model answered on arrays were asked the same keys, so
+        their tables hold the same keys (the headroom's twenty): one search serves them all.
+        """
+        for keys, queries, at in self._searched:
+            if queries is asked and (keys is table_keys or np.array_equal(keys, table_keys)):
+                return at
+        at = positions(table_keys, asked)
+        self._searched.append((table_keys, asked, at))
+        return at
 
     def gather(
         self, partner: int, pairs: np.ndarray, terminal: np.ndarray

@@ -18,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from hg_marl.agents.models.forked import Forked
+from hg_marl.agents.models.forked import Forked, Submitted
 from hg_marl.core import State, World
 
 Check = Callable[[int, int], None]
@@ -58,20 +58,45 @@ class LiveAnswers:
 
     def __call__(self, rows: Sequence[Row], check: Check) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(entries per row, actions, probabilities): the answers with probability > 0, as the partner lists them."""
-        answers: list[list[tuple[int, float]]] = []
+        return self.submit(rows).collect(check)
+
+    def submit(self, rows: Sequence[Row]) -> Asked:
+        """Start answering ``rows`` in the workers (where there are workers and enough rows); collect with
+        :meth:`Asked.collect`, which gives what :meth:`__call__` gives."""
         if self.workers.parallel and len(rows) >= MIN_PARALLEL:
-            chunks = [list(rows[i : i + CHUNK]) for i in range(0, len(rows), CHUNK)]
-            for chunk in self.workers.map(chunks, lambda done: check(min(done * CHUNK, len(rows)), len(rows))):
-                answers.extend(chunk)
-        else:
-            for i, row in enumerate(rows):
-                check(i, len(rows))
-                answers.append(self._answer(row))
-        sizes = np.array([len(a) for a in answers], dtype=np.int64)
-        actions = np.array([h for a in answers for h, _ in a], dtype=np.int64)
-        probs = np.array([p for a in answers for _, p in a], dtype=np.float64)
-        return sizes, actions, probs
+            return Asked(
+                self, rows, self.workers.submit([list(rows[i : i + CHUNK]) for i in range(0, len(rows), CHUNK)])
+            )
+        return Asked(self, rows, None)
 
     def close(self) -> None:
         """Stop the workers, if any."""
         self.workers.close()
+
+
+class Asked:
+    """Questions handed to a :class:`LiveAnswers` (being answered in its workers, or to be answered here)."""
+
+    def __init__(
+        self,
+        owner: LiveAnswers,
+        rows: Sequence[Row],
+        chunks: Submitted[list[Row], list[list[tuple[int, float]]]] | None,
+    ) -> None:
+        self.owner, self.rows, self.chunks = owner, rows, chunks
+
+    def collect(self, check: Check) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(entries per row, actions, probabilities), as :meth:`LiveAnswers.__call__`."""
+        rows = self.rows
+        answers: list[list[tuple[int, float]]] = []
+        if self.chunks is not None:
+            for chunk in self.chunks.collect(lambda done: check(min(done * CHUNK, len(rows)), len(rows))):
+                answers.extend(chunk)
+        else:
+            for i, row in enumerate(rows):
+                check(i, len(rows))
+                answers.append(self.owner._answer(row))
+        sizes = np.array([len(a) for a in answers], dtype=np.int64)
+        actions = np.array([h for a in answers for h, _ in a], dtype=np.int64)
+        probs = np.array([p for a in answers for _, p in a], dtype=np.float64)
+        return sizes, actions, probs

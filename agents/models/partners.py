@@ -17,17 +17,53 @@ same floating-point order, and a test compares them with the live humans state b
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
 from hg_marl.core import Agent, Kind, World
 from hg_marl.envs.batched import BatchedRules, BatchState
 
-Answers = Callable[[BatchState], tuple[np.ndarray, np.ndarray, np.ndarray]]
-"""A batch of mid-cycle states -> (entries per state, actions, probabilities), entries in index order."""
+
+class Shared(Protocol):
+    """What the partners asked about one batch of states share (:class:`~hg_marl.agents.models.answers.KeyBatch`)."""
+
+    @property
+    def mask(self) -> np.ndarray:
+        """The human's masks of the batch (:meth:`BatchedRules.masks`)."""
+        ...
+
+    def derived(self, name: str, make: Callable[[], Any]) -> Any:
+        """``make()``, computed once per batch for every partner that asks for ``name``."""
+        ...
+
+
+class Answers(Protocol):
+    """A batch of mid-cycle states -> (entries per state, actions, probabilities), entries in index order.
+
+    ``shared``: what the batch's partners share where the caller has it (a joint model
+    asks twenty partners the same states): the human's masks and what every partner of
+    a kind derives from the states alone, computed once.
+    """
+
+    def __call__(self, b: BatchState, shared: Shared | None = None, /) -> tuple[np.ndarray, np.ndarray, np.ndarray]: ...
+
 
 _TIE = 1e-9  # agents/humans/preference.py's tie rule
+
+
+class _Alone:
+    """The :class:`Shared` of a batch asked of one partner: everything computed when read."""
+
+    def __init__(self, rules: BatchedRules, b: BatchState) -> None:
+        self.rules, self.b = rules, b
+
+    @property
+    def mask(self) -> np.ndarray:
+        return self.rules.masks(self.b, Agent.HUMAN)
+
+    def derived(self, name: str, make: Callable[[], Any]) -> Any:
+        return make()
 
 
 def batch_answers(world: World, human: Any) -> Answers | None:
@@ -43,8 +79,8 @@ def batch_answers(world: World, human: Any) -> Answers | None:
 
 
 def _uniform(rules: BatchedRules) -> Answers:
-    def answers(b: BatchState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        mask = rules.masks(b, Agent.HUMAN)
+    def answers(b: BatchState, shared: Shared | None = None, /) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        mask = (shared or _Alone(rules, b)).mask
         sizes = mask.sum(axis=1)
         rows, actions = np.nonzero(mask)
         return sizes, actions, 1.0 / sizes[rows]
@@ -76,32 +112,48 @@ def _preference(world: World, h: Any) -> Answers:
     pick_cost = [h.haste * specs[pick + o].duration for o in range(n)]
     bonus_colour = [h.colour_bonus if colour_match[o] else 0.0 for o in range(n)]
 
-    def answers(b: BatchState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    human_spots = np.flatnonzero(spot_human[:m])
+    # per object, the score of placing it on each spot the human can place on (-inf: never better)
+    place_score = np.array([held[place + o * m + human_spots] for o in range(n)]).reshape(n, len(human_spots))
+
+    def targets(b: BatchState) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """What a pick of each object may be followed by, from the states alone (the same for every
+        preference human): (throw ok, give ok, place ok per spot, on the robot's side, offered)."""
         size = len(b)
-        rows = np.arange(size)
-        mask = rules.masks(b, Agent.HUMAN)
+        occupied = np.zeros((size, t.n_places), dtype=bool)
+        occupied[np.arange(size)[:, None], b.where] = True
+        side = robot_reaches[b.where]  # (size, objects): the object lies on the robot's side
+        throw_ok = throw_to[b.robot_at] >= 0  # (size, objects)
+        give_ok = rules.give_ok[b.robot_at]
+        spots = human_spots[:, None]
+        place_ok = (
+            ~occupied.T[human_spots][None, :, :]
+            & (b.where.T[:, None, :] != spots[None])
+            & (robot_reaches[spots][None] != side.T[:, None, :])
+        )  # (objects, spots, size): one object's spots are contiguous rows
+        offered = (b.offer_by == Agent.ROBOT) & ~(b.where == hand).any(axis=1)
+        return throw_ok, give_ok, place_ok, side, offered
+
+    def answers(b: BatchState, shared: Shared | None = None, /) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        size = len(b)
+        shared = shared or _Alone(rules, b)
+        mask = shared.mask
+        throw_ok, give_ok, place_ok, side_of, offered_any = shared.derived("preference targets", lambda: targets(b))
         score = np.where(mask, held[None, :], -np.inf)
         score[:, wait] = 0.0
         score[:, take : take + n] = -np.inf
-        occupied = np.zeros((size, t.n_places), dtype=bool)
-        occupied[rows[:, None], b.where] = True
         for o in range(n):
-            can = mask[:, pick + o]
-            if not can.any():
+            rows = np.flatnonzero(mask[:, pick + o])  # the other rows' pick is infeasible: -inf already
+            if not len(rows):
                 continue
-            origin = b.where[:, o]
-            side = robot_reaches[origin]
-            best = np.full(size, -np.inf)
-            best = np.where(throw_to[b.robot_at, o] >= 0, np.maximum(best, held[throw + o]), best)
-            best = np.where(rules.give_ok[b.robot_at], np.maximum(best, held[give + o]), best)
-            for s in range(m):
-                if not spot_human[s] or held[place + o * m + s] == -np.inf:
-                    continue  # a spot the human cannot place on: never better (skipped, not computed)
-                ok = ~occupied[:, s] & (origin != s) & (robot_reaches[s] != side)
-                best = np.where(ok, np.maximum(best, held[place + o * m + s]), best)
-            bonus = np.where(side, h.robot_side, 0.0) + bonus_colour[o]
+            best = np.full(len(rows), -np.inf)  # the best target of the object once picked
+            best = np.where(throw_ok[rows, o], np.maximum(best, held[throw + o]), best)
+            best = np.where(give_ok[rows], np.maximum(best, held[give + o]), best)
+            for j in np.flatnonzero(place_score[o] > -np.inf).tolist():  # other spots: never better
+                best = np.where(place_ok[o, j, rows], np.maximum(best, place_score[o, j]), best)
+            bonus = np.where(side_of[rows, o], h.robot_side, 0.0) + bonus_colour[o]
             value = (best + bonus) - pick_cost[o]
-            score[:, pick + o] = np.where(can & np.isfinite(best), value, -np.inf)
+            score[rows, pick + o] = np.where(np.isfinite(best), value, -np.inf)
         choice = np.full(size, wait, dtype=np.int64)
         top = np.full(size, _TIE)
         never = score.max(axis=0, initial=-np.inf) <= top[0] + _TIE if size else np.ones(n_actions, dtype=bool)
@@ -111,7 +163,7 @@ def _preference(world: World, h: Any) -> Answers:
             better = score[:, a] > top + _TIE
             choice[better] = a
             top[better] = score[better, a]
-        offered = (b.offer_by == Agent.ROBOT) & ~(b.where == hand).any(axis=1) & (h.accept > 0.0)
+        offered = offered_any & (h.accept > 0.0)
         # up to three entries per state: the offer's take, the choice, the idle wait
         act = np.stack([np.where(offered, take + b.offer_obj, -1), choice, np.full(size, wait)], axis=1)
         prob = np.stack([np.full(size, h.accept), np.where(offered, (1.0 - h.accept) * 1.0, 1.0), np.zeros(size)], 1)
