@@ -45,7 +45,7 @@ from tqdm import tqdm
 
 from hg_marl.agents.models import AnswerTable, Model, StatePacker, build_model
 from hg_marl.agents.models.answers import stationary_human
-from hg_marl.agents.models.chains import Chain, certain_states, policy_rate, transitions
+from hg_marl.agents.models.chains import Chain, certain_states, policy_rate, reached_rate, transitions
 from hg_marl.agents.models.forked import Forked
 from hg_marl.agents.models.solve import TIE, sweeps
 from hg_marl.agents.oracle import (
@@ -270,9 +270,10 @@ class JointModel:
 
     def rate(self, choice: np.ndarray, i: int) -> float:
         """Exact tasks per hour of the policy ``choice`` (a pair per state) against human ``i``."""
-        if self.model is not None:  # only the chosen pairs' transitions are read
-            chain = Chain(*([np.zeros(0)] * 4), *self.model.regen(i))
-            return policy_rate(chain, self.terminal[choice], self.model.gather(i, choice))
+        if self.model is not None:  # only the chosen pairs' transitions from the states reached are read
+            model = self.model
+            chain = Chain(*([np.zeros(0)] * 4), *model.regen(i))
+            return reached_rate(chain, self.terminal[choice], lambda states: model.gather(i, choice[states]))
         chain = self.chain(i)
         lo, size = chain.t_start[choice], np.diff(chain.t_start)[choice]
         at = np.repeat(lo - np.concatenate([[0], np.cumsum(size)[:-1]]), size) + np.arange(size.sum())

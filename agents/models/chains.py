@@ -19,6 +19,7 @@ pair (:class:`Chain`), so:
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import TypeAlias
 
 import numpy as np
@@ -26,7 +27,7 @@ from scipy import sparse
 from scipy.sparse.linalg import spsolve
 
 from hg_marl.agents.models.builder import Dynamics
-from hg_marl.agents.models.keyed import unique
+from hg_marl.agents.models.keyed import ranges, starts_of, unique
 
 HOUR = 3600.0
 
@@ -95,34 +96,60 @@ def backward(graph: sparse.csr_matrix, seeds: np.ndarray) -> np.ndarray:
     return forward(graph.T.tocsr(), np.flatnonzero(seeds))
 
 
+Transitions: TypeAlias = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]]
+"""States (ids, in a given order) -> a policy's transitions from each: (starts, next state, probability,
+seconds), CSR over those states in that order."""
+
+
 def policy_rate(chain: Chain, done: np.ndarray, policy: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]) -> float:
-    """Exact tasks per hour of a policy against ``chain``'s partner (only its re-draw is read from ``chain``).
+    """Exact tasks per hour of a policy given as its transitions at every state (:func:`reached_rate`).
 
     ``policy``: the transitions of the policy's pair at each state, CSR over the states
-    (starts, next state, probability, seconds); ``done``: the states whose pair completes
-    the task. The chain of the policy is restricted to the states it reaches from the
-    re-drawn tables; there, the states that may reach one that cannot complete get
+    (starts, next state, probability, seconds).
+    """
+    t_start, cols, probs, taus = policy
+
+    def transitions_of(states: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        size = t_start[states + 1] - t_start[states]
+        at = ranges(t_start[states], size)
+        return starts_of(size), cols[at], probs[at], taus[at]
+
+    return reached_rate(chain, done, transitions_of)
+
+
+def reached_rate(chain: Chain, done: np.ndarray, transitions_of: Transitions) -> float:
+    """Exact tasks per hour of a policy against ``chain``'s partner (only its re-draw is read from ``chain``).
+
+    ``transitions_of``: the policy's transitions from given states; ``done``: the states
+    whose pair completes the task. The chain of the policy is restricted to the states it
+    reaches from the re-drawn tables, found forward and asked for their transitions alone
+    (a tenth of a headroom model's states or less; asking every state's would cost more
+    than the rest); there, the states that may reach one that cannot complete get
     infinite seconds (graph search), and the others' expected seconds to the next
     success solve ``(I - P) V = c`` (``spsolve``). Where a re-drawn table has such a
     state, the rate is 0 whatever the others' seconds, and no system is solved (most of
     a headroom matrix's entries are 0).
     """
-    t_start, cols, probs, taus = policy
     n = len(done)
-    rows = np.repeat(np.arange(n), np.diff(t_start))  # the state of each of the policy's transitions
-    graph = sparse.csr_matrix((np.ones(len(cols), dtype=np.int8), cols, t_start), shape=(n, n))  # already CSR
-    seen = forward(graph, chain.regen_next)
-    sub = np.flatnonzero(seen)
+    seen = np.zeros(n, dtype=bool)
+    frontier = unique(chain.regen_next)
+    seen[frontier] = True
+    while len(frontier):
+        hit = transitions_of(frontier)[1]
+        frontier = unique(hit[~seen[hit]])
+        seen[frontier] = True
+    sub = np.flatnonzero(seen)  # in id order: the transitions below are those of the whole chain's rows
     pos = np.full(n, -1, dtype=np.int64)
     pos[sub] = np.arange(len(sub))
-    keep = seen[rows]
-    rows, cols, probs, taus = pos[rows[keep]], pos[cols[keep]], probs[keep], taus[keep]
+    t_start, cols, probs, taus = transitions_of(sub)
+    rows = np.repeat(np.arange(len(sub)), np.diff(t_start))
+    cols = pos[cols]
     m = len(sub)
     done = done[sub]
     small = sparse.csr_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)), shape=(m, m))
     reach = backward(small, done)
     certain = ~backward(small, ~reach)
-    if not certain[pos[chain.regen_next]][chain.regen_prob > 0].all():
+    if not certain[pos[chain.regen_next]].all():  # (the builder keeps no re-draw of probability 0)
         return 0.0  # a re-drawn table may lead where completion is not certain: infinite seconds, rate 0
     values = np.full(m, math.inf)
     idx = np.flatnonzero(certain)
