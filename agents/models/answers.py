@@ -163,15 +163,11 @@ class AnswerTable:
         ``batch``: the same keys as a :class:`KeyBatch` shared with other tables (their
         unpacking and masks are then computed once for all).
         """
-        lack = ~known(self.table.keys, keys)
+        lack = self._lacking(keys)
         if not lack.any():
             return
-        every = bool(lack.all())
-        missing = keys if every else keys[lack]
-        if batch is None:
-            batch = KeyBatch(self.packer, self.rules, missing)
-        elif not every:
-            batch = batch.rows(np.flatnonzero(lack))
+        batch = self._rows_lacking(keys, lack, batch)
+        missing = batch.keys
         states, seen = batch.unpacked
         if self.batch is not None:
             if self.budget is not None:
@@ -196,29 +192,42 @@ class AnswerTable:
         self.live_calls += len(missing)
         self._store(batch, size, actions, probs_arr)
 
+    def _lacking(self, keys: np.ndarray) -> np.ndarray:
+        return ~known(self.table.keys, keys)
+
+    def _rows_lacking(self, keys: np.ndarray, lack: np.ndarray, batch: KeyBatch | None) -> KeyBatch:
+        """The keys the table lacks as a :class:`KeyBatch` (of ``batch``'s rows where given: shared)."""
+        if batch is None:
+            return KeyBatch(self.packer, self.rules, keys[lack])
+        return batch if lack.all() else batch.rows(np.flatnonzero(lack))
+
     @property
     def answers_live(self) -> bool:
         """Whether keys the table lacks are answered by the live human (not on arrays)."""
         return self.batch is None
 
-    def prefetch(self, keys: np.ndarray) -> None:
+    def prefetch(self, keys: np.ndarray, batch: KeyBatch | None = None) -> None:
         """Start the live human's answers to the distinct sorted ``keys`` the table lacks, in its workers.
 
-        The next :meth:`ensure` of the same keys collects them instead of asking: the
-        builder steps the other partners' answers meanwhile. Nothing starts without
-        workers, for a human answered on arrays, or while answers are pending.
+        The next :meth:`ensure` of the same keys (and ``batch``) collects them instead of
+        asking: the builder steps the other partners' answers meanwhile. What storing the
+        answers needs of the states (their unpacking, the human's masks) is computed here,
+        while the workers search. Nothing starts without workers, for a human answered on
+        arrays, or while answers are pending.
         """
         if self.batch is not None or not self.live.workers.parallel or self._pending is not None:
             return
-        missing = self.table.missing(keys)
-        if not len(missing):
+        lack = self._lacking(keys)
+        if not lack.any():
             return
-        states, seen = self.packer.unpack(missing)
+        batch = self._rows_lacking(keys, lack, batch)
+        states, seen = batch.unpacked
         if self.canonical is not None:
             self.canonical.prefetch(states, seen)
-            return
-        asked = questions(states.where, states.robot_at, states.offer_by, states.offer_obj, seen)
-        self._pending = (missing, self.live.submit(asked))
+        else:
+            asked = questions(states.where, states.robot_at, states.offer_by, states.offer_obj, seen)
+            self._pending = (batch.keys, self.live.submit(asked))
+        _ = batch.mask  # computed now, read by the ensure that stores the answers
 
     def close(self) -> None:
         """Stop the live human's worker processes, if it has any (a later :meth:`ensure` forks new ones)."""

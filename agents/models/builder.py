@@ -309,10 +309,14 @@ def build_model(
                     keyed[live] = mid
                     parts[name].append(keyed)
                 parts["d_robot"].append(d_robot)
-            distinct = {uses: unique_inverse(mids[0 if uses else 1]) for uses in {t.uses_robot_action for t in tables}}
-            shared = {uses: KeyBatch(packer, rules, u) for uses, (u, _) in distinct.items()}
-            for t in tables:  # the live partners' searches start in their workers ...
-                t.prefetch(distinct[t.uses_robot_action][0])
+            distinct: dict[bool, tuple[np.ndarray, np.ndarray]] = {}
+            shared: dict[bool, KeyBatch] = {}
+            for t in sorted(tables, key=lambda t: not t.answers_live):  # the live partners' searches start
+                uses = t.uses_robot_action  # in their workers first ...
+                if uses not in distinct:
+                    distinct[uses] = unique_inverse(mids[0 if uses else 1])
+                    shared[uses] = KeyBatch(packer, rules, distinct[uses][0])
+                t.prefetch(distinct[uses][0], shared[uses])
             answered: dict[int, _Answered] = {}
             for i in sorted(range(len(tables)), key=lambda i: tables[i].answers_live):
                 # ... while the partners on arrays are answered here (each table's answers are its own)

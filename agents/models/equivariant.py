@@ -98,10 +98,14 @@ class CanonicalAnswers:
         """Distributions asked of the live partner (one per canonical key)."""
         self._pending: tuple[np.ndarray, Asked] | None = None
         """Keys handed to the live partner by :meth:`prefetch`, and their answers to come."""
+        self._kept: tuple[BatchState, np.ndarray, Any] | None = None
+        """The last prefetched batch (states and seen, by identity) and its canonical keys."""
 
     def __call__(self, states: BatchState, seen: np.ndarray, check: Check) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(entries per state, actions, probabilities) of a batch, entries in index order per state."""
-        canon, orig, rep, keys, uniq, first, inv = self._keys(states, seen)
+        kept, self._kept = self._kept, None
+        same = kept is not None and kept[0] is states and kept[1] is seen  # the batch of the last prefetch
+        canon, orig, rep, keys, uniq, first, inv = kept[2] if same and kept is not None else self._keys(states, seen)
         self._ask(uniq, first, canon, rep, check)
         start, size = self.table.lookup(uniq)
         start, size = start[inv], size[inv]
@@ -115,10 +119,12 @@ class CanonicalAnswers:
     def prefetch(self, states: BatchState, seen: np.ndarray) -> None:
         """Start asking the live partner for the canonical keys of a batch it lacks (kept until the next call)."""
         if self._pending is None:
-            canon, _, rep, _, uniq, first, _ = self._keys(states, seen)
+            computed = self._keys(states, seen)
+            canon, _, rep, _, uniq, first, _ = computed
             new = np.flatnonzero(~known(self.table.keys, uniq))
             if len(new):
                 self._pending = (uniq[new], self.live.submit(self._questions(first[new], canon, rep)))
+            self._kept = (states, seen, computed)  # the same batch's call reads them back
 
     def _keys(
         self, states: BatchState, seen: np.ndarray

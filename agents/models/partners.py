@@ -160,9 +160,10 @@ def _preference(world: World, h: Any) -> Answers:
         for a in np.flatnonzero(~never).tolist():  # a column no row scores above the first bar never wins
             if a == wait:
                 continue
-            better = score[:, a] > top + _TIE
-            choice[better] = a
-            top[better] = score[better, a]
+            column = score[:, a]
+            better = column > top + _TIE
+            np.copyto(choice, a, where=better)
+            np.copyto(top, column, where=better)
         offered = offered_any & (h.accept > 0.0)
         # up to three entries per state: the offer's take, the choice, the idle wait
         act = np.stack([np.where(offered, take + b.offer_obj, -1), choice, np.full(size, wait)], axis=1)

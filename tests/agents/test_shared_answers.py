@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import multiprocessing
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 import pytest
@@ -242,3 +243,41 @@ def test_transitions_of_tables_with_other_keys_are_not_read_at_shared_positions(
         a, b = kept.chain(i), lazy.chain(i)
         for field in ("t_start", "t_next", "t_prob", "t_tau"):
             assert np.array_equal(getattr(a, field), getattr(b, field)), (i, field)
+
+
+def test_a_prefetched_batchs_canonical_keys_and_masks_are_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    from hg_marl.agents.models.equivariant import CanonicalAnswers
+
+    monkeypatch.setattr(live, "MIN_PARALLEL", 1)
+    world = World("paper2015")
+    packer = StatePacker(world)
+    states = BatchState.of(mid_states(world, 300))
+    seen = np.arange(len(states)) % world.n_actions(Agent.ROBOT)
+    keys = np.unique(packer.pack(states, seen))
+    computed: list[int] = []
+    original = CanonicalAnswers._keys
+
+    def counted(self: CanonicalAnswers, b: BatchState, s: np.ndarray) -> Any:
+        computed.append(len(b))
+        return original(self, b, s)
+
+    monkeypatch.setattr(CanonicalAnswers, "_keys", counted)
+    table = AnswerTable(world, stationary_human("cooperative", world), packer, jobs=2)
+    shared = KeyBatch(packer, BatchedRules(world), keys)
+    try:
+        table.prefetch(keys, shared)
+        assert shared._mask is not None  # the masks the answers are stepped with: computed while they are searched
+        table.ensure(keys, shared)
+        assert computed == [len(keys)]  # the ensure read the prefetch's canonical keys back
+        more = np.unique(np.concatenate([keys, packer.pack(states, np.zeros(len(states), dtype=np.int64))]))
+        table.ensure(more)  # a batch that was not prefetched computes its own
+    finally:
+        table.close()
+    assert len(computed) == 2
+    plain = AnswerTable(world, stationary_human("cooperative", world), packer)
+    plain.ensure(more)
+    start, size = table.lookup(more)
+    s0, n0 = plain.lookup(more)
+    assert np.array_equal(size, n0)
+    for name in ("actions", "probs", "next"):
+        assert np.array_equal(table.entries[name][ranges(start, size)], plain.entries[name][ranges(s0, n0)]), name
