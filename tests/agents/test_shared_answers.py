@@ -16,11 +16,10 @@ import numpy as np
 import pytest
 
 import hg_marl.agents.models.live as live
-from hg_marl.agents.models import AnswerTable, StatePacker, build_model
+from hg_marl.agents.models import AnswerTable, StatePacker
 from hg_marl.agents.models.answers import KeyBatch, stationary_human
 from hg_marl.agents.models.forked import Forked
 from hg_marl.agents.models.keyed import ranges
-from hg_marl.agents.models.layouts import layout_distribution
 from hg_marl.agents.models.partners import batch_answers
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules, BatchState
@@ -48,6 +47,14 @@ def _keys(n: int, seen: int = -1) -> np.ndarray:
     """Distinct sorted keys of paper2015's mid-cycle states (at most ``n``), with the robot action ``seen``."""
     b = BatchState.of(mid_states(PAPER, n))
     return np.unique(StatePacker(PAPER).pack(b, np.full(len(b), seen, dtype=np.int64)))[:n]
+
+
+def _seen_keys(world: World) -> tuple[StatePacker, BatchState, np.ndarray]:
+    """Mid-cycle states of ``world``, each with a robot action seen, and their distinct keys."""
+    packer = StatePacker(world)
+    states = BatchState.of(mid_states(world, 300))
+    seen = np.arange(len(states)) % world.n_actions(Agent.ROBOT)
+    return packer, states, np.unique(packer.pack(states, seen))
 
 
 def test_submitted_items_come_back_in_order_with_the_readings_of_map() -> None:
@@ -119,10 +126,7 @@ def test_the_planner_partner_prefetched_answers_as_asked(monkeypatch: pytest.Mon
     """The equivariant path: a prefetch of canonical keys, collected by the same batch's ensure."""
     monkeypatch.setattr(live, "MIN_PARALLEL", 1)
     world = World("paper2015")
-    packer = StatePacker(world)
-    states = BatchState.of(mid_states(world, 300))
-    seen = np.arange(len(states)) % world.n_actions(Agent.ROBOT)
-    keys = np.unique(packer.pack(states, seen))
+    packer, _, keys = _seen_keys(world)
     plain = AnswerTable(world, stationary_human("cooperative", world), packer)
     plain.ensure(keys)
     early = AnswerTable(world, stationary_human("cooperative", world), packer, jobs=2)
@@ -222,38 +226,12 @@ def test_array_answers_with_and_without_a_shared_batch_agree() -> None:
             assert np.array_equal(x, y) and x.dtype == y.dtype, spec
 
 
-def test_transitions_of_tables_with_other_keys_are_not_read_at_shared_positions() -> None:
-    """Two partners of a kind whose tables hold different keys (one answered extra states before)."""
-    world = World("paper2015")
-    layouts = layout_distribution(world)
-    b = BatchState.of(mid_states(world, 200))
-    extra = np.unique(
-        StatePacker(world).pack(b, np.zeros(len(b), dtype=np.int64))
-    )  # a plain partner is never asked these
-    models, held = [], []
-    for keep in (True, False):
-        packer = StatePacker(world)
-        tables = [AnswerTable(world, stationary_human(h, world), packer) for h in ("random", "preference")]
-        tables[1].ensure(extra)
-        models.append(build_model(world, tables, layouts, keep=keep))
-        held.append([len(t.keys) for t in tables])
-    kept, lazy = models
-    assert held[1][1] > held[1][0]  # the second table holds keys the first does not
-    for i in (0, 1, 0, 1):
-        a, b = kept.chain(i), lazy.chain(i)
-        for field in ("t_start", "t_next", "t_prob", "t_tau"):
-            assert np.array_equal(getattr(a, field), getattr(b, field)), (i, field)
-
-
 def test_a_prefetched_batchs_canonical_keys_and_masks_are_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
     from hg_marl.agents.models.equivariant import CanonicalAnswers
 
     monkeypatch.setattr(live, "MIN_PARALLEL", 1)
     world = World("paper2015")
-    packer = StatePacker(world)
-    states = BatchState.of(mid_states(world, 300))
-    seen = np.arange(len(states)) % world.n_actions(Agent.ROBOT)
-    keys = np.unique(packer.pack(states, seen))
+    packer, states, keys = _seen_keys(world)
     computed: list[int] = []
     original = CanonicalAnswers._keys
 
