@@ -230,8 +230,15 @@ class AnswerTable:
         _ = batch.mask  # computed now, read by the ensure that stores the answers
 
     def close(self) -> None:
-        """Stop the live human's worker processes, if it has any (a later :meth:`ensure` forks new ones)."""
+        """Stop the live human's worker processes, if it has any (a later :meth:`ensure` forks new ones).
+
+        Answers prefetched and not collected are dropped with the workers (a later
+        :meth:`ensure` asks for them again).
+        """
         self.live.close()
+        self._pending = None
+        if self.canonical is not None:
+            self.canonical.drop_pending()
 
     def _check(self, i: int, total: int) -> None:
         if self.budget is not None and i % CHECK_EVERY == 0:

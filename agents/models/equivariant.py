@@ -126,6 +126,10 @@ class CanonicalAnswers:
                 self._pending = (uniq[new], self.live.submit(self._questions(first[new], canon, rep)))
             self._kept = (states, seen, computed)  # the same batch's call reads them back
 
+    def drop_pending(self) -> None:
+        """Forget a :meth:`prefetch` whose workers were stopped (its keys are asked again when needed)."""
+        self._pending = self._kept = None
+
     def _keys(
         self, states: BatchState, seen: np.ndarray
     ) -> tuple[BatchState, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:

@@ -259,3 +259,29 @@ def test_a_prefetched_batchs_canonical_keys_and_masks_are_computed_once(monkeypa
     assert np.array_equal(size, n0)
     for name in ("actions", "probs", "next"):
         assert np.array_equal(table.entries[name][ranges(start, size)], plain.entries[name][ranges(s0, n0)]), name
+
+
+def test_a_closed_table_asks_again_what_it_had_prefetched(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Workers stopped before their answers were collected (a refusal between the two): the keys
+    are asked again, not waited for."""
+    monkeypatch.setattr(live, "MIN_PARALLEL", 1)
+    world = World("paper2015")
+    packer, _, seen_keys = _seen_keys(world)
+    echo_keys = _keys(40, seen=2)
+    echo = AnswerTable(world, Echo(), packer, jobs=2)
+    planner = AnswerTable(world, stationary_human("cooperative", world), packer, jobs=2)
+    for table, keys in ((echo, echo_keys), (planner, seen_keys)):
+        try:
+            table.prefetch(keys)
+            table.close()
+            assert multiprocessing.active_children() == []
+            table.ensure(keys)
+        finally:
+            table.close()
+        assert table.live_calls > 0 and np.array_equal(table.keys, keys)
+    start, _ = echo.lookup(echo_keys)
+    assert echo.entries["actions"][start].tolist() == _echoed(echo, echo_keys)
+    plain = AnswerTable(world, stationary_human("cooperative", world), packer)
+    plain.ensure(seen_keys)
+    for name in ("actions", "probs", "next"):
+        assert np.array_equal(planner.entries[name], plain.entries[name]), name
