@@ -68,7 +68,7 @@ from tqdm import tqdm
 from hg_marl.agents import content
 from hg_marl.agents.compiled import CompileError, Packer, default_cache, save_table
 from hg_marl.agents.models.packing import StatePacker
-from hg_marl.agents.models.partners import Shared
+from hg_marl.agents.models.partners import Alone, Shared
 from hg_marl.agents.progress import PROGRESS_AFTER, ArrayProgressGuard
 from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchedRules, BatchState
@@ -134,7 +134,7 @@ def any_answer(world: World) -> Any:
     rules = BatchedRules(world)
 
     def answers(b: BatchState, shared: Shared | None = None, /) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        mask = rules.masks(b, Agent.HUMAN) if shared is None else shared.mask
+        mask = (shared or Alone(rules, b)).mask
         fails = ~mask.all(axis=1)
         rows, actions = np.nonzero(mask)
         rows = np.concatenate([rows, np.flatnonzero(fails)])

@@ -21,7 +21,7 @@ import numpy as np
 from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.equivariant import canonical_answers
-from hg_marl.agents.models.keyed import SegmentTable, known
+from hg_marl.agents.models.keyed import SegmentTable
 from hg_marl.agents.models.live import Asked, LiveAnswers, questions
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.models.partners import Answers, batch_answers
@@ -163,7 +163,7 @@ class AnswerTable:
         ``batch``: the same keys as a :class:`KeyBatch` shared with other tables (their
         unpacking and masks are then computed once for all).
         """
-        lack = self._lacking(keys)
+        lack = self.table.lacks(keys)
         if not lack.any():
             return
         batch = self._rows_lacking(keys, lack, batch)
@@ -192,9 +192,6 @@ class AnswerTable:
         self.live_calls += len(missing)
         self._store(batch, size, actions, probs_arr)
 
-    def _lacking(self, keys: np.ndarray) -> np.ndarray:
-        return ~known(self.table.keys, keys)
-
     def _rows_lacking(self, keys: np.ndarray, lack: np.ndarray, batch: KeyBatch | None) -> KeyBatch:
         """The keys the table lacks as a :class:`KeyBatch` (of ``batch``'s rows where given: shared)."""
         if batch is None:
@@ -217,7 +214,7 @@ class AnswerTable:
         """
         if self.batch is not None or not self.live.workers.parallel or self._pending is not None:
             return
-        lack = self._lacking(keys)
+        lack = self.table.lacks(keys)
         if not lack.any():
             return
         batch = self._rows_lacking(keys, lack, batch)

@@ -104,8 +104,10 @@ class CanonicalAnswers:
     def __call__(self, states: BatchState, seen: np.ndarray, check: Check) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(entries per state, actions, probabilities) of a batch, entries in index order per state."""
         kept, self._kept = self._kept, None
-        same = kept is not None and kept[0] is states and kept[1] is seen  # the batch of the last prefetch
-        canon, orig, rep, keys, uniq, first, inv = kept[2] if same and kept is not None else self._keys(states, seen)
+        if kept is not None and kept[0] is states and kept[1] is seen:  # the batch of the last prefetch
+            canon, orig, rep, keys, uniq, first, inv = kept[2]
+        else:
+            canon, orig, rep, keys, uniq, first, inv = self._keys(states, seen)
         self._ask(uniq, first, canon, rep, check)
         start, size = self.table.lookup(uniq)
         start, size = start[inv], size[inv]

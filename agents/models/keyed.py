@@ -120,9 +120,13 @@ class SegmentTable:
         at = positions(self.keys, keys) if at is None else at
         return self.first[at], self.size[at]
 
+    def lacks(self, keys: np.ndarray) -> np.ndarray:
+        """Per key of ``keys``, whether the table lacks it."""
+        return ~known(self.keys, keys)
+
     def missing(self, keys: np.ndarray) -> np.ndarray:
         """The keys of ``keys`` not in the table (in their order)."""
-        return keys[~known(self.keys, keys)]
+        return keys[self.lacks(keys)]
 
     def add(self, keys: np.ndarray, sizes: np.ndarray, new: Mapping[str, np.ndarray]) -> None:
         """Store distinct ``keys`` not in the table; key ``i``'s entries are the next ``sizes[i]`` of ``new``."""

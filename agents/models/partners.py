@@ -52,7 +52,7 @@ class Answers(Protocol):
 _TIE = 1e-9  # agents/humans/preference.py's tie rule
 
 
-class _Alone:
+class Alone:
     """The :class:`Shared` of a batch asked of one partner: everything computed when read."""
 
     def __init__(self, rules: BatchedRules, b: BatchState) -> None:
@@ -80,7 +80,7 @@ def batch_answers(world: World, human: Any) -> Answers | None:
 
 def _uniform(rules: BatchedRules) -> Answers:
     def answers(b: BatchState, shared: Shared | None = None, /) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        mask = (shared or _Alone(rules, b)).mask
+        mask = (shared or Alone(rules, b)).mask
         sizes = mask.sum(axis=1)
         rows, actions = np.nonzero(mask)
         return sizes, actions, 1.0 / sizes[rows]
@@ -136,7 +136,7 @@ def _preference(world: World, h: Any) -> Answers:
 
     def answers(b: BatchState, shared: Shared | None = None, /) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         size = len(b)
-        shared = shared or _Alone(rules, b)
+        shared = shared or Alone(rules, b)
         mask = shared.mask
         throw_ok, give_ok, place_ok, side_of, offered_any = shared.derived("preference targets", lambda: targets(b))
         score = np.where(mask, held[None, :], -np.inf)
