@@ -21,7 +21,7 @@ import numpy as np
 from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.equivariant import canonical_answers
-from hg_marl.agents.models.keyed import SegmentTable
+from hg_marl.agents.models.keyed import SegmentTable, known
 from hg_marl.agents.models.live import Asked, LiveAnswers, questions
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.models.partners import Answers, batch_answers
@@ -133,8 +133,10 @@ class AnswerTable:
         """Whether entries carry their next state's canonical key (the builder sets it on a new
         table: a model without symmetry reduction never reads it); None: computed."""
         self.phase = "answers"
-        self._pending: tuple[np.ndarray, Asked] | None = None
-        """Keys handed to the live human by :meth:`prefetch`, and their answers to come."""
+        self._pending: list[tuple[np.ndarray, Asked]] = []
+        """Keys handed to the live human by :meth:`prefetch`, and their answers to come, oldest first."""
+        self._inflight: list[np.ndarray] = []
+        """The keys of every :meth:`prefetch` not stored yet (a later prefetch leaves them out)."""
 
     @property
     def keys(self) -> np.ndarray:
@@ -181,16 +183,19 @@ class AnswerTable:
             self.live_calls += self.canonical.live_calls - before
             self._store(batch, size, actions, probs_arr)
             return
-        pending, self._pending = self._pending, None
-        if pending is not None and np.array_equal(pending[0], missing):
-            size, actions, probs_arr = pending[1].collect(self._check)
-        else:
-            if pending is not None:  # another batch's: its answers are dropped (the builder never does this)
-                pending[1].collect(self._check)
-            asked = questions(states.where, states.robot_at, states.offer_by, states.offer_obj, seen)
-            size, actions, probs_arr = self.live(asked, self._check)
+        answered = None
+        while answered is None and self._pending:  # prefetches are collected in the order they were made
+            keys_asked, asked = self._pending.pop(0)
+            if np.array_equal(keys_asked, missing):
+                answered = asked.collect(self._check)
+            else:  # another batch's, made before this one's: dropped (the builder never does this)
+                asked.collect(self._check)
+                self._inflight = [k for k in self._inflight if k is not keys_asked]
+        if answered is None:
+            asked_now = questions(states.where, states.robot_at, states.offer_by, states.offer_obj, seen)
+            answered = self.live(asked_now, self._check)
         self.live_calls += len(missing)
-        self._store(batch, size, actions, probs_arr)
+        self._store(batch, *answered)
 
     def _rows_lacking(self, keys: np.ndarray, lack: np.ndarray, batch: KeyBatch | None) -> KeyBatch:
         """The keys the table lacks as a :class:`KeyBatch` (of ``batch``'s rows where given: shared)."""
@@ -209,12 +214,17 @@ class AnswerTable:
         The next :meth:`ensure` of the same keys (and ``batch``) collects them instead of
         asking: the builder steps the other partners' answers meanwhile. What storing the
         answers needs of the states (their unpacking, the human's masks) is computed here,
-        while the workers search. Nothing starts without workers, for a human answered on
-        arrays, or while answers are pending.
+        while the workers search. Several batches may be prefetched before the first is
+        collected (the builder asks for the next batch's while this one's are searched):
+        keys an earlier prefetch asked are left out, and each ensure collects the
+        prefetches in the order they were made. Nothing starts without workers or for a
+        human answered on arrays.
         """
-        if self.batch is not None or not self.live.workers.parallel or self._pending is not None:
+        if self.batch is not None or not self.live.workers.parallel:
             return
         lack = self.table.lacks(keys)
+        for earlier in self._inflight:  # asked by an earlier prefetch, stored by that batch's ensure
+            lack &= ~known(earlier, keys)
         if not lack.any():
             return
         batch = self._rows_lacking(keys, lack, batch)
@@ -223,7 +233,8 @@ class AnswerTable:
             self.canonical.prefetch(states, seen)
         else:
             asked = questions(states.where, states.robot_at, states.offer_by, states.offer_obj, seen)
-            self._pending = (batch.keys, self.live.submit(asked))
+            self._pending.append((batch.keys, self.live.submit(asked)))
+        self._inflight.append(batch.keys)
         _ = batch.mask  # computed now, read by the ensure that stores the answers
 
     def close(self) -> None:
@@ -233,7 +244,7 @@ class AnswerTable:
         :meth:`ensure` asks for them again).
         """
         self.live.close()
-        self._pending = None
+        self._pending, self._inflight = [], []
         if self.canonical is not None:
             self.canonical.drop_pending()
 
@@ -257,6 +268,7 @@ class AnswerTable:
             "d_human": d_human,
         }
         self.table.add(batch.keys, size, new)
+        self._inflight = [k for k in self._inflight if self.table.lacks(k).any()]
 
 
 def stationary_human(human: Any, world: World) -> Any:

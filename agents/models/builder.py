@@ -199,6 +199,73 @@ class _Index:
         return np.concatenate(self.by_id) if self.by_id else np.zeros(0, dtype=np.int64)
 
 
+@dataclass
+class _Front:
+    """A batch's robot side, stepped before any partner answers it: its pairs and distinct mid-cycle keys.
+
+    Why apart: while one batch's live answers are searched in the workers, the next
+    batch's front is computed and its searches queued behind them (its boundary does not
+    depend on what this batch finds once enough states are known), so the workers do
+    not wait for this process between batches.
+    """
+
+    hi: int
+    ps: np.ndarray
+    """The state of each pair, as a row of the batch."""
+    pa: np.ndarray
+    d_robot: np.ndarray
+    terminal: np.ndarray
+    live: np.ndarray
+    """The pairs that are not the completing ``wait``."""
+    mids: tuple[np.ndarray, np.ndarray]
+    """The live pairs' mid-cycle keys, with and without the robot action seen."""
+    distinct: dict[bool, tuple[np.ndarray, np.ndarray]]
+    """Per kind of key (seen or not): the distinct keys sorted, and each live pair's among them."""
+    shared: dict[bool, KeyBatch]
+
+    @classmethod
+    def of(
+        cls,
+        rules: BatchedRules,
+        packer: StatePacker,
+        index: _Index,
+        lo: int,
+        hi: int,
+        tables: list[AnswerTable],
+        failed_actions: bool,
+    ) -> _Front:
+        """The front of the known states ``lo:hi``."""
+        b, _ = packer.unpack(index.keys()[lo:hi] if len(index.by_id) > 1 else index.by_id[0][lo:hi])
+        mask = rules.masks(b, Agent.ROBOT)
+        n_robot = rules.n_actions[Agent.ROBOT]
+        if failed_actions:  # an extra column: the first infeasible action, after the feasible ones
+            fails = np.logical_not(mask.all(axis=1)).reshape(-1, 1)
+            ps, pa = np.nonzero(np.concatenate([mask, fails], axis=1))  # row-major: in option order
+            failing = pa == n_robot
+            pa[failing] = np.argmin(mask[ps[failing]], axis=1)
+        else:
+            ps, pa = np.nonzero(mask)
+        clean = rules.is_clean(b)[ps]
+        pb = _rows(b, ps)
+        ok, d_robot, _ = rules.step(pb, Agent.ROBOT, pa, mask[ps])
+        terminal = ok & (pa == rules.wait[Agent.ROBOT]) & clean
+        live = np.flatnonzero(~terminal)
+        live_b = _rows(pb, live)
+        mids = (packer.pack(live_b, np.where(ok[live], pa[live], -1)), packer.pack(live_b))
+        distinct: dict[bool, tuple[np.ndarray, np.ndarray]] = {}
+        shared: dict[bool, KeyBatch] = {}
+        for uses in sorted({t.uses_robot_action for t in tables}):
+            distinct[uses] = unique_inverse(mids[0 if uses else 1])
+            shared[uses] = KeyBatch(packer, rules, distinct[uses][0])
+        return cls(hi, ps, pa, d_robot, terminal, live, mids, distinct, shared)
+
+    def prefetch(self, tables: list[AnswerTable]) -> None:
+        """Start the live partners' searches of the batch's keys (nothing for the others, or asked already)."""
+        for t in tables:
+            if t.answers_live:
+                t.prefetch(self.distinct[t.uses_robot_action][0], self.shared[t.uses_robot_action])
+
+
 class _Answered:
     """Answers of distinct mid-cycle keys: per key a block of (next key, probability, seconds)."""
 
@@ -257,8 +324,6 @@ def build_model(
     budget = budget or Budget(None, None, None)
     rules = BatchedRules(world)
     packer = tables[0].packer
-    wait = rules.wait[Agent.ROBOT]
-    n_robot = rules.n_actions[Agent.ROBOT]
     lay = BatchState.of([s for s, _ in layouts])
     lay_p = np.array([p for _, p in layouts], dtype=np.float64)
     for t in tables:
@@ -280,46 +345,36 @@ def build_model(
         desc=f"{label}: states", unit=" states", disable=not progress, file=sys.stderr, dynamic_ncols=True, leave=False
     )
     lo, size = 0, FIRST_CHUNK
+    ahead: _Front | None = None
     try:
         while lo < index.n:
             hi = min(lo + size, index.n)
             size = min(2 * size, CHUNK)
             budget.check("explore", lo, unit=f"states explored ({index.n:,} known)", states=index.n)
-            b, _ = packer.unpack(index.keys()[lo:hi] if len(index.by_id) > 1 else index.by_id[0][lo:hi])
-            mask = rules.masks(b, Agent.ROBOT)
-            if failed_actions:  # an extra column: the first infeasible action, after the feasible ones
-                fails = np.logical_not(mask.all(axis=1)).reshape(-1, 1)
-                ps, pa = np.nonzero(np.concatenate([mask, fails], axis=1))  # row-major: in option order
-                failing = pa == n_robot
-                pa[failing] = np.argmin(mask[ps[failing]], axis=1)
-            else:
-                ps, pa = np.nonzero(mask)
-            clean = rules.is_clean(b)[ps]
-            pb = _rows(b, ps)
-            ok, d_robot, _ = rules.step(pb, Agent.ROBOT, pa, mask[ps])
-            terminal = ok & (pa == wait) & clean
-            live = np.flatnonzero(~terminal)
-            live_b = _rows(pb, live)
+            front = (
+                ahead
+                if ahead is not None and ahead.hi == hi
+                else _Front.of(rules, packer, index, lo, hi, tables, failed_actions)
+            )
+            ahead = None
+            ps, pa, d_robot, terminal, live = front.ps, front.pa, front.d_robot, front.terminal, front.live
+            distinct, shared = front.distinct, front.shared
             outcomes = []
             found: list[np.ndarray] = []
-            mids = (packer.pack(live_b, np.where(ok[live], pa[live], -1)), packer.pack(live_b))
             if not keep:
-                for name, mid in zip(("mid_seen", "mid_plain"), mids, strict=True):
+                for name, mid in zip(("mid_seen", "mid_plain"), front.mids, strict=True):
                     keyed = np.full(len(pa), -1, dtype=np.int64)
                     keyed[live] = mid
                     parts[name].append(keyed)
                 parts["d_robot"].append(d_robot)
-            distinct: dict[bool, tuple[np.ndarray, np.ndarray]] = {}
-            shared: dict[bool, KeyBatch] = {}
-            for t in sorted(tables, key=lambda t: not t.answers_live):  # the live partners' searches start
-                uses = t.uses_robot_action  # in their workers first ...
-                if uses not in distinct:
-                    distinct[uses] = unique_inverse(mids[0 if uses else 1])
-                    shared[uses] = KeyBatch(packer, rules, distinct[uses][0])
-                t.prefetch(distinct[uses][0], shared[uses])
+            front.prefetch(tables)  # the live partners' searches start in their workers first ...
             answered: dict[int, _Answered] = {}
             for i in sorted(range(len(tables)), key=lambda i: tables[i].answers_live):
                 # ... while the partners on arrays are answered here (each table's answers are its own)
+                if tables[i].answers_live and ahead is None and index.n >= hi + size:
+                    # the next batch is known whatever this one finds: its searches queue behind these
+                    ahead = _Front.of(rules, packer, index, hi, hi + size, tables, failed_actions)
+                    ahead.prefetch(tables)
                 uses = tables[i].uses_robot_action
                 answered[i] = _Answered(tables[i], distinct[uses][0], canonical, shared[uses])
             for i, t in enumerate(tables):

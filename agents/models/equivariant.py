@@ -26,6 +26,9 @@ from hg_marl.core import Agent, Kind, World
 from hg_marl.core.relabel import Relabel
 from hg_marl.envs.batched import BatchState
 
+KEPT = 4
+"""Prefetched batches whose canonical keys are kept for their call at most (the builder has two)."""
+
 
 def canonical_answers(
     world: World, human: Any, packer: StatePacker, live: LiveAnswers | None = None
@@ -96,16 +99,17 @@ class CanonicalAnswers:
         """The partner's answers by canonical key (actions in canonical labelling)."""
         self.live_calls = 0
         """Distributions asked of the live partner (one per canonical key)."""
-        self._pending: tuple[np.ndarray, Asked] | None = None
-        """Keys handed to the live partner by :meth:`prefetch`, and their answers to come."""
-        self._kept: tuple[BatchState, np.ndarray, Any] | None = None
-        """The last prefetched batch (states and seen, by identity) and its canonical keys."""
+        self._pending: list[tuple[np.ndarray, Asked]] = []
+        """Keys handed to the live partner by :meth:`prefetch`, and their answers to come, oldest first."""
+        self._kept: list[tuple[BatchState, np.ndarray, Any]] = []
+        """The prefetched batches not answered yet (states and seen, by identity) and their canonical keys."""
 
     def __call__(self, states: BatchState, seen: np.ndarray, check: Check) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(entries per state, actions, probabilities) of a batch, entries in index order per state."""
-        kept, self._kept = self._kept, None
-        if kept is not None and kept[0] is states and kept[1] is seen:  # the batch of the last prefetch
-            canon, orig, rep, keys, uniq, first, inv = kept[2]
+        at = next((i for i, (b, s, _) in enumerate(self._kept) if b is states and s is seen), None)
+        if at is not None:  # a prefetched batch (those prefetched before it are not asked any more)
+            canon, orig, rep, keys, uniq, first, inv = self._kept[at][2]
+            del self._kept[: at + 1]
         else:
             canon, orig, rep, keys, uniq, first, inv = self._keys(states, seen)
         self._ask(uniq, first, canon, rep, check)
@@ -119,18 +123,21 @@ class CanonicalAnswers:
         return size, back[order], entries["probs"][entry][order]
 
     def prefetch(self, states: BatchState, seen: np.ndarray) -> None:
-        """Start asking the live partner for the canonical keys of a batch it lacks (kept until the next call)."""
-        if self._pending is None:
-            computed = self._keys(states, seen)
-            canon, _, rep, _, uniq, first, _ = computed
-            new = np.flatnonzero(~known(self.table.keys, uniq))
-            if len(new):
-                self._pending = (uniq[new], self.live.submit(self._questions(first[new], canon, rep)))
-            self._kept = (states, seen, computed)  # the same batch's call reads them back
+        """Start asking the live partner for the canonical keys of a batch that neither the table nor an
+        earlier prefetch holds (the batch's keys are kept for its call)."""
+        computed = self._keys(states, seen)
+        canon, _, rep, _, uniq, first, _ = computed
+        new = ~known(self.table.keys, uniq)
+        for asked, _ in self._pending:
+            new &= ~known(asked, uniq)
+        at = np.flatnonzero(new)
+        if len(at):
+            self._pending.append((uniq[at], self.live.submit(self._questions(first[at], canon, rep))))
+        self._kept = [*self._kept[1 - KEPT :], (states, seen, computed)]  # the same batch's call reads them back
 
     def drop_pending(self) -> None:
-        """Forget a :meth:`prefetch` whose workers were stopped (its keys are asked again when needed)."""
-        self._pending = self._kept = None
+        """Forget the :meth:`prefetch` es whose workers were stopped (their keys are asked again when needed)."""
+        self._pending, self._kept = [], []
 
     def _keys(
         self, states: BatchState, seen: np.ndarray
@@ -150,16 +157,18 @@ class CanonicalAnswers:
     def _ask(self, uniq: np.ndarray, first: np.ndarray, canon: BatchState, rep: np.ndarray, check: Check) -> None:
         """Ask the live partner for the canonical keys of ``uniq`` not known yet, and store them.
 
-        The keys of a :meth:`prefetch` are stored first (their answers are the partner's
-        whichever batch asks for them), so a batch that was prefetched asks nothing more.
+        The prefetches are collected in the order they were made while this batch lacks keys
+        (their answers are the partner's whichever batch asks for them), so a batch that was
+        prefetched asks nothing more, and a later batch's prefetch is left in its workers.
         """
-        if self._pending is not None:
-            keys, asked = self._pending
-            self._pending = None
+        lacking = ~known(self.table.keys, uniq)
+        while self._pending and lacking.any():
+            keys, asked = self._pending.pop(0)
             sizes, acts, probs = asked.collect(check)
             self.live_calls += len(keys)
             self.table.add(keys, sizes, {"actions": acts, "probs": probs})
-        new = np.flatnonzero(~known(self.table.keys, uniq))
+            lacking &= ~known(keys, uniq)
+        new = np.flatnonzero(lacking)
         if not len(new):
             return
         sizes, acts, probs = self.live(self._questions(first[new], canon, rep), check)

@@ -28,10 +28,19 @@ Row = tuple[tuple[int, ...], int, int, int, int]
 """One question: the state's (where, robot_at, offer_by, offer_obj) and the robot action seen."""
 
 CHUNK = 32
-"""States a worker answers per message: small enough that the budget is read often (a
+"""States a worker answers per message at most: small enough that the budget is read often (a
 planner search is about a millisecond), large enough that messages cost little beside it."""
 MIN_PARALLEL = 4 * CHUNK
-"""Fewer questions than this are answered in this process (a message costs more than it saves)."""
+"""Fewer questions than this do not start the workers (forking costs more than it saves); once
+they run, any two questions or more go to them: the builder's first batches are small, and
+answered here they would keep the workers idle while this process searches alone."""
+
+
+def chunks(n: int, jobs: int) -> list[tuple[int, int]]:
+    """(start, stop) of the messages of ``n`` questions for ``jobs`` workers: :data:`CHUNK` each,
+    smaller where that leaves a worker without one (at least two per worker where ``n`` allows)."""
+    size = max(1, min(CHUNK, -(-n // (2 * jobs))))
+    return [(i, min(i + size, n)) for i in range(0, n, size)]
 
 
 def questions(
@@ -63,10 +72,10 @@ class LiveAnswers:
     def submit(self, rows: Sequence[Row]) -> Asked:
         """Start answering ``rows`` in the workers (where there are workers and enough rows); collect with
         :meth:`Asked.collect`, which gives what :meth:`__call__` gives."""
-        if self.workers.parallel and len(rows) >= MIN_PARALLEL:
-            return Asked(
-                self, rows, self.workers.submit([list(rows[i : i + CHUNK]) for i in range(0, len(rows), CHUNK)])
-            )
+        workers = self.workers
+        if workers.parallel and len(rows) >= (2 if workers.started else MIN_PARALLEL):
+            spans = chunks(len(rows), workers.jobs)
+            return Asked(self, rows, workers.submit([list(rows[a:b]) for a, b in spans]), [b for _, b in spans])
         return Asked(self, rows, None)
 
     def close(self) -> None:
@@ -82,15 +91,19 @@ class Asked:
         owner: LiveAnswers,
         rows: Sequence[Row],
         chunks: Submitted[list[Row], list[list[tuple[int, float]]]] | None,
+        ends: list[int] | None = None,
     ) -> None:
         self.owner, self.rows, self.chunks = owner, rows, chunks
+        self.ends = ends or []
+        """The questions answered once each chunk is back (the budget's readings)."""
 
     def collect(self, check: Check) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(entries per row, actions, probabilities), as :meth:`LiveAnswers.__call__`."""
         rows = self.rows
         answers: list[list[tuple[int, float]]] = []
         if self.chunks is not None:
-            for chunk in self.chunks.collect(lambda done: check(min(done * CHUNK, len(rows)), len(rows))):
+            ends = [0, *self.ends]
+            for chunk in self.chunks.collect(lambda done: check(ends[done], len(rows))):
                 answers.extend(chunk)
         else:
             for i, row in enumerate(rows):

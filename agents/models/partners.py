@@ -66,6 +66,17 @@ class Alone:
         return make()
 
 
+def feasible_rows(mask: np.ndarray) -> list[np.ndarray]:
+    """Per action, the rows of ``mask`` (states x actions) where it is feasible, in row order.
+
+    Why: a preference human's choice scans the actions that may win, each over the states
+    where it is feasible (a few per state): shared by every partner of a batch, this is one
+    pass over the masks instead of a dense score per partner.
+    """
+    by_action = np.ascontiguousarray(mask.T)
+    return [np.flatnonzero(column) for column in by_action]
+
+
 def batch_answers(world: World, human: Any) -> Answers | None:
     """An array version of ``human``'s distribution, or None when it has none (answered live)."""
     from hg_marl.agents.humans.preference import PreferenceHuman
@@ -134,36 +145,40 @@ def _preference(world: World, h: Any) -> Answers:
         offered = (b.offer_by == Agent.ROBOT) & ~(b.where == hand).any(axis=1)
         return throw_ok, give_ok, place_ok, side, offered
 
+    bar = _TIE + _TIE  # the first best score plus the tie: an action scoring no more never wins
+    picks = set(range(pick, pick + n))
+    contenders = [a for a in range(n_actions) if a in picks or (a != wait and held[a] > bar)]
+    """The actions that may beat ``wait``, in index order (the others score -inf, 0 or too little)."""
+
+    def pick_scores(o: int, rows: np.ndarray, targets: tuple[np.ndarray, ...]) -> np.ndarray:
+        """The score of picking object ``o`` at ``rows`` (where it is feasible): its best target once held."""
+        throw_ok, give_ok, place_ok, side_of, _ = targets
+        best = np.full(len(rows), -np.inf)
+        best = np.where(throw_ok[rows, o], np.maximum(best, held[throw + o]), best)
+        best = np.where(give_ok[rows], np.maximum(best, held[give + o]), best)
+        for j in np.flatnonzero(place_score[o] > -np.inf).tolist():  # other spots: never better
+            best = np.where(place_ok[o, j, rows], np.maximum(best, place_score[o, j]), best)
+        bonus = np.where(side_of[rows, o], h.robot_side, 0.0) + bonus_colour[o]
+        value = (best + bonus) - pick_cost[o]
+        return np.where(np.isfinite(best), value, -np.inf)
+
     def answers(b: BatchState, shared: Shared | None = None, /) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         size = len(b)
         shared = shared or Alone(rules, b)
-        mask = shared.mask
-        throw_ok, give_ok, place_ok, side_of, offered_any = shared.derived("preference targets", lambda: targets(b))
-        score = np.where(mask, held[None, :], -np.inf)
-        score[:, wait] = 0.0
-        score[:, take : take + n] = -np.inf
-        for o in range(n):
-            rows = np.flatnonzero(mask[:, pick + o])  # the other rows' pick is infeasible: -inf already
-            if not len(rows):
-                continue
-            best = np.full(len(rows), -np.inf)  # the best target of the object once picked
-            best = np.where(throw_ok[rows, o], np.maximum(best, held[throw + o]), best)
-            best = np.where(give_ok[rows], np.maximum(best, held[give + o]), best)
-            for j in np.flatnonzero(place_score[o] > -np.inf).tolist():  # other spots: never better
-                best = np.where(place_ok[o, j, rows], np.maximum(best, place_score[o, j]), best)
-            bonus = np.where(side_of[rows, o], h.robot_side, 0.0) + bonus_colour[o]
-            value = (best + bonus) - pick_cost[o]
-            score[rows, pick + o] = np.where(np.isfinite(best), value, -np.inf)
+        feasible = shared.derived("feasible rows", lambda: feasible_rows(shared.mask))
+        found = shared.derived("preference targets", lambda: targets(b))
         choice = np.full(size, wait, dtype=np.int64)
         top = np.full(size, _TIE)
-        never = score.max(axis=0, initial=-np.inf) <= top[0] + _TIE if size else np.ones(n_actions, dtype=bool)
-        for a in np.flatnonzero(~never).tolist():  # a column no row scores above the first bar never wins
-            if a == wait:
+        for a in contenders:  # the live rule's scan in index order, over the rows where ``a`` is feasible
+            rows = feasible[a]
+            if not len(rows):
                 continue
-            column = score[:, a]
-            better = column > top + _TIE
-            np.copyto(choice, a, where=better)
-            np.copyto(top, column, where=better)
+            value = pick_scores(a - pick, rows, found) if a in picks else held[a]
+            better = value > top[rows] + _TIE
+            won = rows[better]
+            choice[won] = a
+            top[won] = value[better] if a in picks else value
+        offered_any = found[4]
         offered = offered_any & (h.accept > 0.0)
         # up to three entries per state: the offer's take, the choice, the idle wait
         act = np.stack([np.where(offered, take + b.offer_obj, -1), choice, np.full(size, wait)], axis=1)

@@ -173,7 +173,8 @@ def test_answers_by_hand_and_the_budget_read_per_chunk(monkeypatch: pytest.Monke
     want_actions = [a for i in range(100) for a in ([1, 2] if i % 3 == 0 else [i + 10 * (i % 2)])]
     want_probs = [p for i in range(100) for p in ([0.5, 0.5] if i % 3 == 0 else [1.0])]
     assert sizes.tolist() == want_sizes and actions.tolist() == want_actions and probs.tolist() == want_probs
-    assert readings == [(0, 100), (32, 100), (64, 100), (96, 100), (100, 100)]  # chunks of 32
+    # 100 questions for 2 workers: 4 chunks of 25 (two per worker; 32 would leave one with a short second)
+    assert readings == [(0, 100), (25, 100), (50, 100), (75, 100), (100, 100)]
 
 
 def test_one_process_reads_the_budget_before_each_answer() -> None:
