@@ -235,7 +235,8 @@ class JointModel:
         """
         chain = self.chain(i)
         n = self.n
-        cost = transitions(chain, n, chain.t_prob * chain.t_tau) @ np.ones(n)
+        # each pair's sum in transition order from 0, as the CSR product of the sweeps adds
+        cost = np.bincount(chain.t_pair, weights=chain.t_prob * chain.t_tau, minlength=self.n_pairs)
         alive, ok = certain_states(n, self.pair_state, self.terminal, chain)
         matrix = transitions(chain, n)
 
@@ -257,6 +258,7 @@ class JointModel:
             tolerance=tolerance,
             max_iterations=max_iterations,
             budget=self.budget,
+            t_pair=chain.t_pair,
         )  # the oracle's sweeps (agents/models/solve.py): self-loops in closed form
         q = q_of(values)
         best = np.minimum.reduceat(q, self.starts)

@@ -23,6 +23,7 @@ from __future__ import annotations
 import sys
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 from scipy import sparse
@@ -58,6 +59,11 @@ class Dynamics:
     regen_prob: np.ndarray
     regen_tau: np.ndarray
 
+    @cached_property
+    def t_pair(self) -> np.ndarray:
+        """The pair of each transition (computed once: the certain states, the costs and the sweeps read it)."""
+        return np.repeat(np.arange(len(self.t_start) - 1), np.diff(self.t_start))
+
 
 @dataclass
 class Model:
@@ -83,9 +89,11 @@ class Model:
         """Partner ``partner``'s transitions (built from its answer table when not kept)."""
         if self.lazy is None:
             return self.dynamics[partner]
-        t_start, t_next, t_prob, t_tau = self.gather(partner, np.arange(self.n_pairs))
+        t_start, t_next, t_prob, t_tau, t_pair = self.lazy.every(partner, self.pair_terminal)
         regen_next, regen_prob, regen_tau = self.lazy.regen[partner]
-        return Dynamics(t_start, t_next, t_prob, t_tau, regen_next, regen_prob, regen_tau)
+        chain = Dynamics(t_start, t_next, t_prob, t_tau, regen_next, regen_prob, regen_tau)
+        chain.t_pair = t_pair  # known here: not computed again
+        return chain
 
     def regen(self, partner: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Partner ``partner``'s re-draw: next states, probabilities, seconds."""

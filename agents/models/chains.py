@@ -52,14 +52,16 @@ def certain_states(n: int, pair_state: np.ndarray, terminal: np.ndarray, chain: 
     fixpoint (``python_model.certain_states``), its inner growth done as a backward search.
     """
     n_pairs = len(terminal)
-    t_pair = np.repeat(np.arange(n_pairs), np.diff(chain.t_start))
+    t_pair = chain.t_pair
     reverse = sparse.csr_matrix(
         (np.ones(len(t_pair), dtype=np.int8), (chain.t_next, t_pair)), shape=(n, n_pairs)
     )  # state -> the pairs with a transition into it
     alive = np.ones(n, dtype=bool)
     while True:
-        leaks = np.bincount(t_pair, weights=~alive[chain.t_next], minlength=n_pairs) > 0
-        ok = terminal | ~leaks
+        if alive.all():  # the first round: no pair can leave
+            ok = np.ones(n_pairs, dtype=bool)
+        else:
+            ok = terminal | ~(np.bincount(t_pair, weights=~alive[chain.t_next], minlength=n_pairs) > 0)
         reach = np.zeros(n, dtype=bool)
         reach[pair_state[ok & terminal]] = True
         frontier = np.flatnonzero(reach)

@@ -78,13 +78,27 @@ class TableTransitions:
         self, partner: int, pairs: np.ndarray, terminal: np.ndarray
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """As the builder's kept transitions: a pair's transitions are its key's entries, in order."""
+        return self._gather(partner, pairs, terminal)[:4]
+
+    def every(
+        self, partner: int, terminal: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Every pair's transitions (as :meth:`gather` of all pairs), and the pair of each transition."""
+        return self._gather(partner, None, terminal)
+
+    def _gather(
+        self, partner: int, pairs: np.ndarray | None, terminal: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         table = self.tables[partner]
         ids = self._ids.get(partner)
         if ids is None:  # every entry's next state is known: each answer was some pair's transition
             ids = self._ids[partner] = self.index.id_of(table.entries["canonical" if self.canonical else "next"])
         first, count = self.entries_of(partner, terminal)
-        lo, size = first[pairs], count[pairs]
+        if pairs is None:
+            lo, size, pair_of = first, count, np.repeat(np.arange(len(count)), count)
+        else:
+            lo, size = first[pairs], count[pairs]
+            pair_of = np.repeat(pairs, size)
         at = ranges(lo, size)
-        pair_of = np.repeat(pairs, size)
         tau = np.maximum(self.d_robot[pair_of], table.entries["d_human"][at])
-        return starts_of(size), ids[at], table.entries["probs"][at], tau
+        return starts_of(size), ids[at], table.entries["probs"][at], tau, pair_of

@@ -83,27 +83,37 @@ def certain_states(model: Model, transitions: sparse.csr_matrix) -> tuple[np.nda
 
 
 def without_self_loops(
-    pair_state: np.ndarray, t_start: np.ndarray, t_next: np.ndarray, t_prob: np.ndarray, cost: np.ndarray, n: int
+    pair_state: np.ndarray,
+    t_start: np.ndarray,
+    t_next: np.ndarray,
+    t_prob: np.ndarray,
+    cost: np.ndarray,
+    n: int,
+    t_pair: np.ndarray | None = None,
 ) -> tuple[sparse.csr_matrix, np.ndarray, np.ndarray]:
     """The sweeps' operator with self-loops solved (module docstring): (pairs, states) CSR, cost, looping pairs.
 
     Row ``a`` holds ``a``'s transitions to other states divided by their total probability
     ``1 - p_a(s)`` (summed from those transitions, not as one minus the loop's: no
     cancellation), the cost is ``cost / (1 - p_a(s))``; ``looping`` marks the pairs with
-    transitions that all return to their state (their value is infinite).
+    transitions that all return to their state (their value is infinite). ``t_pair``: the
+    pair of each transition, where the caller has it.
     """
     n_pairs = len(t_start) - 1
     counts = np.diff(t_start)
-    t_pair = np.repeat(np.arange(n_pairs), counts)
+    if t_pair is None:
+        t_pair = np.repeat(np.arange(n_pairs), counts)
     # a self-loop keeps its place in the rows with probability 0: the products add exact
     # zeros in the same order, and the transitions' index arrays are shared, not copied
     leaving = np.where(t_next == pair_state[t_pair], 0.0, t_prob)
     out = np.bincount(t_pair, weights=leaving, minlength=n_pairs)
     looping = (out == 0) & (counts > 0)
     scale = 1.0 / np.where(out > 0, out, 1.0)
-    leaving *= scale[t_pair]
+    if (scale != 1.0).any():  # (times 1 is the identity: most partners' pairs leave with probability 1)
+        leaving *= scale[t_pair]
+        cost = cost * scale
     matrix = sparse.csr_matrix((leaving, t_next, t_start), shape=(n_pairs, n))
-    return matrix, cost * scale, looping
+    return matrix, cost, looping
 
 
 def sweeps(
@@ -120,6 +130,7 @@ def sweeps(
     tolerance: float,
     max_iterations: int,
     budget: Budget,
+    t_pair: np.ndarray | None = None,
 ) -> tuple[np.ndarray, int, bool]:
     """Value iteration from 0 with self-loops in closed form: (values, sweeps, converged).
 
@@ -132,7 +143,7 @@ def sweeps(
     values = np.zeros(n)
     if not alive.any():
         return values, 0, False
-    fast, fast_cost, looping = without_self_loops(pair_state, t_start, t_next, t_prob, cost, n)
+    fast, fast_cost, looping = without_self_loops(pair_state, t_start, t_next, t_prob, cost, n, t_pair)
     zero_at, inf_at, dead = np.flatnonzero(terminal & ok), np.flatnonzero(~ok | looping), np.flatnonzero(~alive)
     for iteration in range(1, max_iterations + 1):
         q = fast @ values
