@@ -1,0 +1,225 @@
+"""The build's pipeline: the next batch's live questions queued behind this one's, small batches
+sent to running workers, and the headroom's shortcuts that must not change a float.
+
+Expected values are stated apart from the code under test: by hand (the ``Echo`` stub's
+answers, chunk spans, feasible rows), from the same table or model filled in one process
+without any prefetch, or from the plain ``numpy`` / ``scipy`` computation the shortcut skips.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+import numpy as np
+import pytest
+
+import hg_marl.agents.models.builder as builder
+import hg_marl.agents.models.live as live
+from hg_marl.agents.models import AnswerTable, StatePacker, build_model
+from hg_marl.agents.models.answers import stationary_human
+from hg_marl.agents.models.builder import Dynamics
+from hg_marl.agents.models.chains import transitions
+from hg_marl.agents.models.layouts import layout_distribution
+from hg_marl.agents.models.partners import feasible_rows
+from hg_marl.agents.models.solve import without_self_loops
+from hg_marl.core import State, World
+from hg_marl.envs.batched import BatchState
+from tests.agents.test_models import mid_states
+
+PAPER = World("paper2015")
+PARENT = os.getpid()
+
+
+class Echo:
+    """Answers the robot's place plus ten times the action seen (known by hand for every key)."""
+
+    def distribution(self, world: object, state: State, seen: int) -> list[tuple[int, float]]:
+        return [(state.robot_at + 10 * max(seen, 0), 1.0)]
+
+    def reset(self, *args: object) -> None:
+        pass
+
+
+class Where:
+    """Answers 1 in a forked worker and 0 in the test's own process."""
+
+    def distribution(self, world: object, state: State, seen: int) -> list[tuple[int, float]]:
+        return [(int(os.getpid() != PARENT), 1.0)]
+
+
+def _keys(n: int, seen: int = -1) -> np.ndarray:
+    b = BatchState.of(mid_states(PAPER, n))
+    return np.unique(StatePacker(PAPER).pack(b, np.full(len(b), seen, dtype=np.int64)))[:n]
+
+
+def _echoed(packer: StatePacker, keys: np.ndarray) -> list[int]:
+    states, seen = packer.unpack(keys)
+    return (states.robot_at + 10 * np.maximum(seen, 0)).tolist()
+
+
+@pytest.mark.parametrize(
+    ("n", "spans"),
+    [
+        (100, [(0, 25), (25, 50), (50, 75), (75, 100)]),  # two per worker: 25, not 32
+        (72, [(0, 18), (18, 36), (36, 54), (54, 72)]),
+        (3, [(0, 1), (1, 2), (2, 3)]),
+        (200, [(i, min(i + 32, 200)) for i in range(0, 200, 32)]),  # large: chunks of 32, the last 8
+    ],
+)
+def test_questions_are_split_into_chunks_of_at_most_32_and_two_per_worker(n: int, spans: list[tuple[int, int]]) -> None:
+    assert live.chunks(n, 2) == spans
+
+
+def test_once_the_workers_run_a_small_batch_goes_to_them() -> None:
+    answers = live.LiveAnswers(PAPER, Where(), jobs=2)
+    row: live.Row = ((0, 1, 2), 0, -1, -1, -1)
+    try:
+        _, first, _ = answers([row] * 5, lambda done, total: None)  # under 128 questions: not worth a fork
+        assert not answers.workers.started and first.tolist() == [0] * 5
+        answers([row] * 128, lambda done, total: None)
+        _, small, _ = answers([row] * 5, lambda done, total: None)
+    finally:
+        answers.close()
+    assert small.tolist() == [1] * 5  # answered in the workers that were running
+    one = live.LiveAnswers(PAPER, Where(), jobs=2)
+    try:
+        one([row] * 128, lambda done, total: None)
+        _, alone, _ = one([row], lambda done, total: None)  # one question: no message for it
+    finally:
+        one.close()
+    assert alone.tolist() == [0]
+
+
+def test_two_prefetches_in_flight_ask_each_key_once_and_store_every_answer(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(live, "MIN_PARALLEL", 1)
+    keys = _keys(200, seen=1)[:60]
+    first, second = keys[:40], keys[20:]
+    asked: list[int] = []
+    submit = live.LiveAnswers.submit
+
+    def counted(self: live.LiveAnswers, rows: Any) -> live.Asked:
+        asked.append(len(rows))
+        return submit(self, rows)
+
+    monkeypatch.setattr(live.LiveAnswers, "submit", counted)
+    packer = StatePacker(PAPER)
+    table = AnswerTable(PAPER, Echo(), packer, jobs=2)
+    try:
+        table.prefetch(first)
+        table.prefetch(second)  # the 20 keys the first asked are left out
+        monkeypatch.setattr(live.LiveAnswers, "__call__", lambda *a: pytest.fail("asked again"))
+        table.ensure(first)
+        assert table._pending and np.array_equal(table.keys, first)  # the second's answers still in the workers
+        table.ensure(second)
+    finally:
+        table.close()
+    assert len(keys) == 60 and asked == [40, 20] and table.live_calls == 60
+    assert table._pending == [] and table._inflight == []
+    start, size = table.lookup(keys)
+    assert size.tolist() == [1] * 60 and table.entries["actions"][start].tolist() == _echoed(packer, keys)
+
+
+def test_the_planner_partner_with_two_prefetches_answers_as_asked_in_one_process(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(live, "MIN_PARALLEL", 1)
+    world = World("paper2015")
+    packer = StatePacker(world)
+    states = BatchState.of(mid_states(world, 300))
+    seen = np.arange(len(states)) % world.n_actions(0)
+    keys = np.unique(packer.pack(states, seen))
+    first, second = keys[: 2 * len(keys) // 3], keys[len(keys) // 3 :]
+    plain = AnswerTable(world, stationary_human("cooperative", world), packer)
+    plain.ensure(first)
+    plain.ensure(second)
+    early = AnswerTable(world, stationary_human("cooperative", world), packer, jobs=2)
+    try:
+        early.prefetch(first)
+        early.prefetch(second)
+        assert early.canonical is not None and len(early.canonical._pending) == 2
+        monkeypatch.setattr(live.LiveAnswers, "__call__", lambda *a: pytest.fail("asked again"))
+        early.ensure(first)
+        assert len(early.canonical._pending) == 1  # the first batch waited for its own answers only
+        early.ensure(second)
+    finally:
+        early.close()
+    assert early.canonical._pending == [] and early.live_calls == plain.live_calls
+    for name in ("actions", "probs", "next", "d_human"):
+        assert np.array_equal(early.entries[name], plain.entries[name]), name
+
+
+def test_the_builder_queues_the_next_batchs_searches_before_collecting_this_ones(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(live, "MIN_PARALLEL", 1)
+    monkeypatch.setattr(builder, "FIRST_CHUNK", 8)  # batches small beside the states known: the next
+    monkeypatch.setattr(builder, "CHUNK", 16)  # batch's boundary is known before this one is answered
+    world = World("paper2015")
+    events: list[str] = []
+    prefetch, ensure = AnswerTable.prefetch, AnswerTable.ensure
+
+    def spy_prefetch(self: AnswerTable, keys: np.ndarray, batch: Any = None) -> None:
+        events.append("prefetch")
+        prefetch(self, keys, batch)
+
+    def spy_ensure(self: AnswerTable, keys: np.ndarray, batch: Any = None) -> None:
+        events.append("ensure")
+        ensure(self, keys, batch)
+
+    models = []
+    for jobs in (1, 2):
+        table = AnswerTable(world, stationary_human("cooperative", world), StatePacker(world), jobs=jobs)
+        if jobs == 2:
+            monkeypatch.setattr(AnswerTable, "prefetch", spy_prefetch)
+            monkeypatch.setattr(AnswerTable, "ensure", spy_ensure)
+        try:
+            models.append((build_model(world, table, layout_distribution(world)), table))
+        finally:
+            table.close()
+    (m1, t1), (m2, t2) = models
+    # per batch: its own keys (nothing left to ask where they were asked ahead), the next batch's, then
+    # this batch's answers collected
+    assert "".join("p" if e == "prefetch" else "e" for e in events).count("ppe") > 10
+    assert t1.live_calls == t2.live_calls > 0
+    assert m1.n == m2.n and np.array_equal(m1.keys, m2.keys) and np.array_equal(m1.pair_action, m2.pair_action)
+    for d1, d2 in zip(m1.dynamics, m2.dynamics, strict=True):
+        for name in ("t_start", "t_next", "t_prob", "t_tau"):
+            assert np.array_equal(getattr(d1, name), getattr(d2, name)), name
+
+
+def test_feasible_rows_by_hand() -> None:
+    mask = np.array([[True, False, True], [True, True, False], [False, True, True]])
+    rows = feasible_rows(mask)
+    assert [r.tolist() for r in rows] == [[0, 1], [1, 2], [0, 2]]
+
+
+def test_a_chains_transition_pairs_are_its_rows() -> None:
+    chain = Dynamics(np.array([0, 2, 2, 5]), np.zeros(5, np.int64), np.ones(5), np.ones(5), *([np.zeros(0)] * 3))
+    assert chain.t_pair.tolist() == [0, 0, 2, 2, 2]
+    assert chain.t_pair is chain.t_pair  # computed once
+
+
+@pytest.mark.parametrize("loop", [0.0, 0.25])
+def test_the_closed_form_matches_the_plain_scaling_with_and_without_loops(loop: float) -> None:
+    # state 0: pair 0 -> state 1 (and back to 0 with ``loop``), pair 1 -> state 1; state 1: pair 2 completes
+    t_start = np.array([0, 2, 3, 3]) if loop else np.array([0, 1, 2, 2])
+    t_next = np.array([0, 1, 1]) if loop else np.array([1, 1])
+    t_prob = np.array([loop, 1.0 - loop, 1.0]) if loop else np.array([1.0, 1.0])
+    pair_state = np.array([0, 0, 1])
+    cost = np.array([3.0, 4.0, 0.0])
+    matrix, scaled, looping = without_self_loops(pair_state, t_start, t_next, t_prob, cost, 2)
+    leave = 1.0 - loop
+    assert matrix.toarray().tolist() == [[0.0, leave / leave], [0.0, 1.0], [0.0, 0.0]]
+    assert scaled.tolist() == [3.0 / leave, 4.0, 0.0] and looping.tolist() == [False, False, False]
+
+
+def test_costs_summed_per_pair_equal_the_csr_product() -> None:
+    rng = np.random.default_rng(5)
+    counts = rng.integers(0, 4, 300)
+    t_start = np.concatenate([[0], np.cumsum(counts)])
+    m = int(t_start[-1])
+    chain = Dynamics(t_start, rng.integers(0, 50, m), rng.random(m), rng.random(m) * 7, *([np.zeros(0)] * 3))
+    product = transitions(chain, 50, chain.t_prob * chain.t_tau) @ np.ones(50)
+    summed = np.bincount(chain.t_pair, weights=chain.t_prob * chain.t_tau, minlength=300)
+    assert np.array_equal(product, summed)
