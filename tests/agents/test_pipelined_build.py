@@ -71,6 +71,10 @@ def test_questions_are_split_into_chunks_of_at_most_32_and_two_per_worker(n: int
     assert live.chunks(n, 2) == spans
 
 
+def test_three_workers_get_two_chunks_each() -> None:
+    assert live.chunks(120, 3) == [(i, i + 20) for i in range(0, 120, 20)]
+
+
 def test_once_the_workers_run_a_small_batch_goes_to_them() -> None:
     answers = live.LiveAnswers(PAPER, Where(), jobs=2)
     row: live.Row = ((0, 1, 2), 0, -1, -1, -1)
@@ -167,12 +171,20 @@ def test_the_builder_queues_the_next_batchs_searches_before_collecting_this_ones
         events.append("ensure")
         ensure(self, keys, batch)
 
+    fronts: list[tuple[int, int]] = []
+    front_of = builder._Front.of.__func__  # type: ignore[attr-defined]
+
+    def spy_front(cls: Any, rules: Any, packer: Any, index: Any, lo: int, hi: int, *rest: Any) -> Any:
+        fronts.append((lo, hi))
+        return front_of(cls, rules, packer, index, lo, hi, *rest)
+
     models = []
     for jobs in (1, 2):
         table = AnswerTable(world, stationary_human("cooperative", world), StatePacker(world), jobs=jobs)
         if jobs == 2:
             monkeypatch.setattr(AnswerTable, "prefetch", spy_prefetch)
             monkeypatch.setattr(AnswerTable, "ensure", spy_ensure)
+            monkeypatch.setattr(builder._Front, "of", classmethod(spy_front))
         try:
             models.append((build_model(world, table, layout_distribution(world)), table))
         finally:
@@ -181,6 +193,8 @@ def test_the_builder_queues_the_next_batchs_searches_before_collecting_this_ones
     # per batch: its own keys (nothing left to ask where they were asked ahead), the next batch's, then
     # this batch's answers collected
     assert "".join("p" if e == "prefetch" else "e" for e in events).count("ppe") > 10
+    # each batch's front computed once (ahead or in its own step), the batches one after the other
+    assert [lo for lo, _ in fronts] == [0] + [hi for _, hi in fronts[:-1]] and fronts[-1][1] == m2.n
     assert t1.live_calls == t2.live_calls > 0
     assert m1.n == m2.n and np.array_equal(m1.keys, m2.keys) and np.array_equal(m1.pair_action, m2.pair_action)
     for d1, d2 in zip(m1.dynamics, m2.dynamics, strict=True):
