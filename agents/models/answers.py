@@ -21,7 +21,7 @@ import numpy as np
 from hg_marl.agents.humans.registry import make_human
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.equivariant import canonical_answers
-from hg_marl.agents.models.keyed import SegmentTable, known
+from hg_marl.agents.models.keyed import Searches, SegmentTable, known
 from hg_marl.agents.models.live import Asked, LiveAnswers, questions
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.models.partners import Answers, batch_answers
@@ -53,6 +53,8 @@ class KeyBatch:
         self._mask: np.ndarray | None = None
         self._subset: tuple[np.ndarray, KeyBatch] | None = None
         self._derived: dict[str, Any] = {}
+        self.searches = Searches()
+        """The tables' look-ups of these keys, made once for tables holding the same keys."""
 
     @property
     def unpacked(self) -> tuple[BatchState, np.ndarray]:
@@ -148,12 +150,15 @@ class AnswerTable:
         """Per-entry arrays by :data:`FIELDS` name (positions from :meth:`lookup`)."""
         return self.table.entries
 
-    def lookup(self, keys: np.ndarray, at: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    def lookup(
+        self, keys: np.ndarray, at: np.ndarray | None = None, batch: KeyBatch | None = None
+    ) -> tuple[np.ndarray, np.ndarray]:
         """(first entry, entry count) per key; every key must be known (see :meth:`ensure`).
 
-        ``at``: the keys' positions among :attr:`keys` where known (:meth:`SegmentTable.lookup`).
+        ``at``: the keys' positions among :attr:`keys` where known (:meth:`SegmentTable.lookup`);
+        ``batch``: ``keys`` as a :class:`KeyBatch` shared with other tables (searched once for all).
         """
-        return self.table.lookup(keys, at)
+        return self.table.lookup(keys, at, None if batch is None else batch.searches)
 
     def compact(self) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
         """(keys, starts, entries), key ``i``'s entries at ``starts[i]:starts[i + 1]``: as compiled partners store."""
@@ -165,7 +170,7 @@ class AnswerTable:
         ``batch``: the same keys as a :class:`KeyBatch` shared with other tables (their
         unpacking and masks are then computed once for all).
         """
-        lack = self.table.lacks(keys)
+        lack = self.table.lacks(keys, None if batch is None else batch.searches)
         if not lack.any():
             return
         batch = self._rows_lacking(keys, lack, batch)
@@ -224,7 +229,7 @@ class AnswerTable:
             return
         lack = self.table.lacks(keys)
         for earlier in self._inflight:  # asked by an earlier prefetch, stored by that batch's ensure
-            lack &= ~known(earlier, keys)
+            lack = lack & ~known(earlier, keys)
         if not lack.any():
             return
         batch = self._rows_lacking(keys, lack, batch)
@@ -267,7 +272,7 @@ class AnswerTable:
             "canonical": nxt if self.relabelled is False else self.packer.pack(b),
             "d_human": d_human,
         }
-        self.table.add(batch.keys, size, new)
+        self.table.add(batch.keys, size, new, batch.searches)
         self._inflight = [k for k in self._inflight if self.table.lacks(k).any()]
 
 

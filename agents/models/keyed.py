@@ -18,7 +18,8 @@ the keys, not the entries; :meth:`SegmentTable.compact` gives the contiguous lay
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -89,6 +90,40 @@ def known(sorted_keys: np.ndarray, queries: np.ndarray) -> np.ndarray:
     return sorted_keys[at] == queries
 
 
+class Searches:
+    """Look-ups of the same queries in tables holding the same keys, each made once.
+
+    Why: a joint model's partners answered on arrays are asked the same keys at every
+    step, so their tables hold the same keys; what a look-up or a merge finds is then the
+    same for all of them. A result is reused for a table whose keys are the array it was
+    computed on, or an array equal to it, which the table then shares (so the next
+    look-up matches by identity). Results hold their arrays: nothing is matched by an
+    address that could be reused.
+    """
+
+    def __init__(self) -> None:
+        self._done: list[tuple[str, np.ndarray, np.ndarray, Any]] = []
+
+    def get(self, kind: str, table: SegmentTable, queries: np.ndarray, compute: Callable[[], Any]) -> Any:
+        """``compute()`` for ``table``'s keys and ``queries``, or what it gave a table with the same keys
+        (the same ``queries`` object)."""
+        for done, keys, asked, result in self._done:
+            if done != kind or asked is not queries:
+                continue
+            if keys is table.keys or (len(keys) == len(table.keys) and np.array_equal(keys, table.keys)):
+                table.keys = keys
+                return result
+        result = compute()
+        for array in result if isinstance(result, tuple) else (result,):
+            array.flags.writeable = False  # shared: a reader that wrote into it would change the others'
+        self._done.append((kind, table.keys, queries, result))
+        return result
+
+
+_NO_KEYS = np.zeros(0, dtype=np.int64)
+_NO_KEYS.flags.writeable = False  # every new table starts from this one array (never written: merged into copies)
+
+
 class SegmentTable:
     """Sorted distinct keys, each with a segment of entries in append-only arrays.
 
@@ -97,8 +132,8 @@ class SegmentTable:
     """
 
     def __init__(self, fields: Mapping[str, type | np.dtype]) -> None:
-        self.keys = np.zeros(0, dtype=np.int64)
-        """(k,) sorted."""
+        self.keys = _NO_KEYS
+        """(k,) sorted; replaced, never written (tables holding the same keys may share it: :class:`Searches`)."""
         self.first = np.zeros(0, dtype=np.int64)
         """(k,) position of each key's first entry in the entry arrays."""
         self.size = np.zeros(0, dtype=np.int64)
@@ -111,25 +146,39 @@ class SegmentTable:
         """The entry arrays (in order of insertion; a key's entries are contiguous, in its given order)."""
         return {name: buf[: self.n_entries] for name, buf in self._buffers.items()}
 
-    def lookup(self, keys: np.ndarray, at: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    def lookup(
+        self, keys: np.ndarray, at: np.ndarray | None = None, searches: Searches | None = None
+    ) -> tuple[np.ndarray, np.ndarray]:
         """(first entry, entry count) per key; every key must be in the table.
 
         ``at``: the keys' positions among the table's keys, where the caller has them
-        (:func:`positions`; tables with the same keys share them).
+        (:func:`positions`; tables with the same keys share them). ``searches``: where
+        other tables are asked the same keys (:class:`Searches`).
         """
-        at = positions(self.keys, keys) if at is None else at
+        if at is None:
+            at = self._search("positions", keys, lambda: positions(self.keys, keys), searches)
         return self.first[at], self.size[at]
 
-    def lacks(self, keys: np.ndarray) -> np.ndarray:
-        """Per key of ``keys``, whether the table lacks it."""
-        return ~known(self.keys, keys)
+    def lacks(self, keys: np.ndarray, searches: Searches | None = None) -> np.ndarray:
+        """Per key of ``keys``, whether the table lacks it (``searches``: as :meth:`lookup`)."""
+        lack: np.ndarray = self._search("lacks", keys, lambda: ~known(self.keys, keys), searches)
+        return lack
+
+    def _search(self, kind: str, keys: np.ndarray, compute: Callable[[], Any], searches: Searches | None) -> Any:
+        return compute() if searches is None else searches.get(kind, self, keys, compute)
 
     def missing(self, keys: np.ndarray) -> np.ndarray:
         """The keys of ``keys`` not in the table (in their order)."""
         return keys[self.lacks(keys)]
 
-    def add(self, keys: np.ndarray, sizes: np.ndarray, new: Mapping[str, np.ndarray]) -> None:
-        """Store distinct ``keys`` not in the table; key ``i``'s entries are the next ``sizes[i]`` of ``new``."""
+    def add(
+        self, keys: np.ndarray, sizes: np.ndarray, new: Mapping[str, np.ndarray], searches: Searches | None = None
+    ) -> None:
+        """Store distinct ``keys`` not in the table; key ``i``'s entries are the next ``sizes[i]`` of ``new``.
+
+        ``searches``: where tables with the same keys store the same ``keys`` (the merged
+        keys are then computed once and shared: :class:`Searches`).
+        """
         total = int(sizes.sum())
         end = self.n_entries + total
         for name, buf in self._buffers.items():
@@ -140,9 +189,13 @@ class SegmentTable:
             buf[self.n_entries : end] = new[name]
         first = self.n_entries + starts_of(sizes)[:-1]
         self.n_entries = end
-        order = np.argsort(keys, kind="stable")
-        at = np.searchsorted(self.keys, keys[order])
-        self.keys = np.insert(self.keys, at, keys[order])
+
+        def merged() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+            order = np.argsort(keys, kind="stable")
+            at = np.searchsorted(self.keys, keys[order])
+            return order, at, np.insert(self.keys, at, keys[order])
+
+        order, at, self.keys = self._search("add", keys, merged, searches)
         self.first = np.insert(self.first, at, first[order])
         self.size = np.insert(self.size, at, sizes[order].astype(np.int64))
 

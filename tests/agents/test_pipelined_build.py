@@ -20,10 +20,11 @@ from hg_marl.agents.models import AnswerTable, StatePacker, build_model
 from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.builder import Dynamics
 from hg_marl.agents.models.chains import transitions
+from hg_marl.agents.models.keyed import Searches, SegmentTable, ranges
 from hg_marl.agents.models.layouts import layout_distribution
 from hg_marl.agents.models.partners import feasible_rows
 from hg_marl.agents.models.solve import without_self_loops
-from hg_marl.core import State, World
+from hg_marl.core import Agent, State, World
 from hg_marl.envs.batched import BatchState
 from tests.agents.test_models import mid_states
 
@@ -131,7 +132,7 @@ def test_the_planner_partner_with_two_prefetches_answers_as_asked_in_one_process
     world = World("paper2015")
     packer = StatePacker(world)
     states = BatchState.of(mid_states(world, 300))
-    seen = np.arange(len(states)) % world.n_actions(0)
+    seen = np.arange(len(states)) % world.n_actions(Agent.ROBOT)
     keys = np.unique(packer.pack(states, seen))
     first, second = keys[: 2 * len(keys) // 3], keys[len(keys) // 3 :]
     plain = AnswerTable(world, stationary_human("cooperative", world), packer)
@@ -172,7 +173,7 @@ def test_the_builder_queues_the_next_batchs_searches_before_collecting_this_ones
         ensure(self, keys, batch)
 
     fronts: list[tuple[int, int]] = []
-    front_of = builder._Front.of.__func__  # type: ignore[attr-defined]
+    front_of = builder._Front.of.__func__
 
     def spy_front(cls: Any, rules: Any, packer: Any, index: Any, lo: int, hi: int, *rest: Any) -> Any:
         fronts.append((lo, hi))
@@ -237,3 +238,56 @@ def test_costs_summed_per_pair_equal_the_csr_product() -> None:
     product = transitions(chain, 50, chain.t_prob * chain.t_tau) @ np.ones(50)
     summed = np.bincount(chain.t_pair, weights=chain.t_prob * chain.t_tau, minlength=300)
     assert np.array_equal(product, summed)
+
+
+def _table(keys: list[int], sizes: list[int]) -> SegmentTable:
+    table = SegmentTable({"v": np.int64})
+    table.add(np.array(keys, dtype=np.int64), np.array(sizes), {"v": np.arange(sum(sizes), dtype=np.int64)})
+    return table
+
+
+def test_tables_with_the_same_keys_search_once_and_share_the_merged_keys() -> None:
+    a, b, c = _table([3, 7, 9], [1, 2, 1]), _table([3, 7, 9], [2, 1, 1]), _table([3, 7, 8], [1, 1, 1])
+    assert a.keys is not b.keys
+    searches = Searches()
+    queries = np.array([7, 8, 9], dtype=np.int64)
+    assert a.lacks(queries, searches).tolist() == [False, True, False]
+    calls: list[str] = []
+    compute = searches.get
+
+    def counted(kind: str, table: SegmentTable, asked: np.ndarray, make: Any) -> Any:
+        def searched() -> Any:
+            calls.append(kind)
+            return make()
+
+        return compute(kind, table, asked, searched)
+
+    searches.get = counted
+    assert b.lacks(queries, searches).tolist() == [False, True, False] and calls == []  # a's answer, not searched
+    assert b.keys is a.keys  # equal keys: b now shares a's array
+    assert c.lacks(queries, searches).tolist() == [False, False, True] and calls == ["lacks"]  # other keys: its own
+    new = np.array([8], dtype=np.int64)
+    for table, v in ((a, 10), (b, 20)):
+        table.add(new, np.array([1]), {"v": np.array([v])}, searches)
+    assert a.keys is b.keys and a.keys.tolist() == [3, 7, 8, 9] and not a.keys.flags.writeable
+    # each keeps its own entries: a's 8 is its fifth entry (10), b's its fifth (20)
+    for table, want in ((a, [(0, 1), (1, 2), (4, 1), (3, 1)]), (b, [(0, 2), (2, 1), (4, 1), (3, 1)])):
+        first, size = table.lookup(np.array([3, 7, 8, 9]), searches=searches)
+        assert list(zip(first.tolist(), size.tolist(), strict=True)) == want
+    assert int(a.entries["v"][4]) == 10 and int(b.entries["v"][4]) == 20
+
+
+def test_the_headrooms_array_partners_share_one_keys_array() -> None:
+    world = World("paper2015")
+    packer = StatePacker(world)
+    specs = ["preference", "preference:handover=1.0,shared=-1.0", "random"]
+    tables = [AnswerTable(world, stationary_human(spec, world), packer) for spec in specs]
+    build_model(world, tables, layout_distribution(world), keep=False)
+    alone = AnswerTable(world, stationary_human("random", world), packer)
+    alone.ensure(tables[2].keys.copy())
+    assert tables[0].keys is tables[1].keys is tables[2].keys and len(tables[0].keys) > 1000
+    start, size = tables[2].lookup(tables[2].keys)
+    s0, n0 = alone.lookup(tables[2].keys)
+    assert np.array_equal(size, n0)
+    for name in ("actions", "probs", "next"):
+        assert np.array_equal(tables[2].entries[name][ranges(start, size)], alone.entries[name][ranges(s0, n0)])
