@@ -24,7 +24,7 @@ from hg_marl.agents.models.keyed import Searches, SegmentTable, ranges
 from hg_marl.agents.models.layouts import layout_distribution
 from hg_marl.agents.models.partners import feasible_rows
 from hg_marl.agents.models.solve import without_self_loops
-from hg_marl.core import Agent, State, World
+from hg_marl.core import State, World
 from hg_marl.envs.batched import BatchState
 from tests.agents.test_models import mid_states
 
@@ -123,35 +123,6 @@ def test_two_prefetches_in_flight_ask_each_key_once_and_store_every_answer(monke
     assert table._pending == [] and table._inflight == []
     start, size = table.lookup(keys)
     assert size.tolist() == [1] * 60 and table.entries["actions"][start].tolist() == _echoed(packer, keys)
-
-
-def test_the_planner_partner_with_two_prefetches_answers_as_asked_in_one_process(
-    monkeypatch: pytest.MonkeyPatch,
-) -> None:
-    monkeypatch.setattr(live, "MIN_PARALLEL", 1)
-    world = World("paper2015")
-    packer = StatePacker(world)
-    states = BatchState.of(mid_states(world, 300))
-    seen = np.arange(len(states)) % world.n_actions(Agent.ROBOT)
-    keys = np.unique(packer.pack(states, seen))
-    first, second = keys[: 2 * len(keys) // 3], keys[len(keys) // 3 :]
-    plain = AnswerTable(world, stationary_human("cooperative", world), packer)
-    plain.ensure(first)
-    plain.ensure(second)
-    early = AnswerTable(world, stationary_human("cooperative", world), packer, jobs=2)
-    try:
-        early.prefetch(first)
-        early.prefetch(second)
-        assert early.canonical is not None and len(early.canonical._pending) == 2
-        monkeypatch.setattr(live.LiveAnswers, "__call__", lambda *a: pytest.fail("asked again"))
-        early.ensure(first)
-        assert len(early.canonical._pending) == 1  # the first batch waited for its own answers only
-        early.ensure(second)
-    finally:
-        early.close()
-    assert early.canonical._pending == [] and early.live_calls == plain.live_calls
-    for name in ("actions", "probs", "next", "d_human"):
-        assert np.array_equal(early.entries[name], plain.entries[name]), name
 
 
 def test_the_builder_queues_the_next_batchs_searches_before_collecting_this_ones(

@@ -122,22 +122,29 @@ def test_no_prefetch_for_a_partner_on_arrays_or_without_workers() -> None:
     assert not arrays.answers_live and alone.answers_live
 
 
-def test_the_planner_partner_prefetched_answers_as_asked(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The equivariant path: a prefetch of canonical keys, collected by the same batch's ensure."""
+@pytest.mark.parametrize("batches", [1, 2])
+def test_the_planner_partner_prefetched_answers_as_asked(monkeypatch: pytest.MonkeyPatch, batches: int) -> None:
+    """The equivariant path: prefetches of canonical keys (two in flight, overlapping), each collected
+    by its own batch's ensure, the same answers as a table filled in one process without them."""
     monkeypatch.setattr(live, "MIN_PARALLEL", 1)
     world = World("paper2015")
     packer, _, keys = _seen_keys(world)
+    parts = [keys] if batches == 1 else [keys[: 2 * len(keys) // 3], keys[len(keys) // 3 :]]
     plain = AnswerTable(world, stationary_human("cooperative", world), packer)
-    plain.ensure(keys)
+    for part in parts:
+        plain.ensure(part)
     early = AnswerTable(world, stationary_human("cooperative", world), packer, jobs=2)
     try:
-        early.prefetch(keys)
-        assert early.canonical is not None and len(early.canonical._pending) == 1
+        for part in parts:
+            early.prefetch(part)
+        assert early.canonical is not None and len(early.canonical._pending) == batches
         monkeypatch.setattr(live.LiveAnswers, "__call__", lambda *a: pytest.fail("asked again"))
-        early.ensure(keys)
+        for done, part in enumerate(parts, start=1):
+            early.ensure(part)
+            assert len(early.canonical._pending) == batches - done  # each batch waited for its own answers only
     finally:
         early.close()
-    assert early.canonical._pending == [] and early.live_calls == plain.live_calls
+    assert early.live_calls == plain.live_calls
     for name in ("actions", "probs", "next", "d_human"):
         assert np.array_equal(early.entries[name], plain.entries[name]), name
 
