@@ -218,6 +218,8 @@ class _Front:
     """
 
     hi: int
+    """The end of the states it read (``lo`` plus their number: a front asked past the known states
+    ends where they end, and is not taken for the batch of a later boundary)."""
     ps: np.ndarray
     """The state of each pair, as a row of the batch."""
     pa: np.ndarray
@@ -242,8 +244,9 @@ class _Front:
         tables: list[AnswerTable],
         failed_actions: bool,
     ) -> _Front:
-        """The front of the known states ``lo:hi``."""
+        """The front of the known states ``lo:hi`` (those of them that are known)."""
         b, _ = packer.unpack(index.keys()[lo:hi] if len(index.by_id) > 1 else index.by_id[0][lo:hi])
+        hi = lo + len(b)
         mask = rules.masks(b, Agent.ROBOT)
         n_robot = rules.n_actions[Agent.ROBOT]
         if failed_actions:  # an extra column: the first infeasible action, after the feasible ones

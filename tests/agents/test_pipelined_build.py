@@ -22,7 +22,7 @@ from hg_marl.agents.models.builder import Dynamics
 from hg_marl.agents.models.chains import transitions
 from hg_marl.agents.models.keyed import Searches, SegmentTable, ranges
 from hg_marl.agents.models.layouts import layout_distribution
-from hg_marl.agents.models.partners import feasible_rows
+from hg_marl.agents.models.partners import batch_answers, feasible_rows
 from hg_marl.agents.models.solve import without_self_loops
 from hg_marl.core import State, World
 from hg_marl.envs.batched import BatchState
@@ -74,6 +74,11 @@ def test_questions_are_split_into_chunks_of_at_most_32_and_two_per_worker(n: int
 
 def test_three_workers_get_two_chunks_each() -> None:
     assert live.chunks(120, 3) == [(i, i + 20) for i in range(0, 120, 20)]
+
+
+def test_chunks_are_as_large_as_two_per_worker_allow() -> None:
+    # 10 questions, 2 workers: four messages of 3, 3, 3 and 1 (not five of 2)
+    assert live.chunks(10, 2) == [(0, 3), (3, 6), (6, 9), (9, 10)]
 
 
 def test_once_the_workers_run_a_small_batch_goes_to_them() -> None:
@@ -172,6 +177,29 @@ def test_the_builder_queues_the_next_batchs_searches_before_collecting_this_ones
     for d1, d2 in zip(m1.dynamics, m2.dynamics, strict=True):
         for name in ("t_start", "t_next", "t_prob", "t_tau"):
             assert np.array_equal(getattr(d1, name), getattr(d2, name)), name
+
+
+def test_a_front_asked_past_the_known_states_ends_where_they_end() -> None:
+    world = World("paper2015")
+    packer = StatePacker(world)
+    index = builder._Index()
+    index.add(np.unique(packer.pack(BatchState.of([s for s, _ in layout_distribution(world)]))))
+    n = index.n
+    front = builder._Front.of(builder.BatchedRules(world), packer, index, n - 3, n + 5, [], True)
+    assert front.hi == n and set(front.ps.tolist()) == {0, 1, 2}  # three states read, each with its pairs
+
+
+@pytest.mark.parametrize(("shared", "chosen"), [("1.0000000005", 8), ("1.000000002", 27)])
+def test_the_array_preference_keeps_the_first_action_within_the_tie(shared: str, chosen: int) -> None:
+    # paper2015: tape3 in the human's hand, the robot at human_side. give(tape3) (index 8) scores
+    # handover = 1.0, place(tape3, mat_shared) (index 27) scores ``shared``: within 1e-9 of the
+    # first, the first in index order stays; beyond it, the place wins (the live rule's tie)
+    world = World("paper2015")
+    human = stationary_human(f"preference:handover=1.0,shared={shared},haste=0", world)
+    answers = batch_answers(world, human)
+    assert answers is not None
+    sizes, actions, probs = answers(BatchState.of([State((0, 1, 8), 3)]))
+    assert sizes.tolist() == [1] and actions.tolist() == [chosen] and probs.tolist() == [1.0]
 
 
 def test_feasible_rows_by_hand() -> None:

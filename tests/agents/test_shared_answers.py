@@ -122,10 +122,13 @@ def test_no_prefetch_for_a_partner_on_arrays_or_without_workers() -> None:
     assert not arrays.answers_live and alone.answers_live
 
 
-@pytest.mark.parametrize("batches", [1, 2])
-def test_the_planner_partner_prefetched_answers_as_asked(monkeypatch: pytest.MonkeyPatch, batches: int) -> None:
+@pytest.mark.parametrize(("batches", "together"), [(1, False), (2, False), (2, True)])
+def test_the_planner_partner_prefetched_answers_as_asked(
+    monkeypatch: pytest.MonkeyPatch, batches: int, together: bool
+) -> None:
     """The equivariant path: prefetches of canonical keys (two in flight, overlapping), each collected
-    by its own batch's ensure, the same answers as a table filled in one process without them."""
+    by its own batch's ensure (or both by one ensure of all the keys), the same answers as a table
+    filled in one process without them."""
     monkeypatch.setattr(live, "MIN_PARALLEL", 1)
     world = World("paper2015")
     packer, _, keys = _seen_keys(world)
@@ -139,12 +142,22 @@ def test_the_planner_partner_prefetched_answers_as_asked(monkeypatch: pytest.Mon
             early.prefetch(part)
         assert early.canonical is not None and len(early.canonical._pending) == batches
         monkeypatch.setattr(live.LiveAnswers, "__call__", lambda *a: pytest.fail("asked again"))
+        if together:
+            early.ensure(keys)  # its keys were asked by both prefetches: both collected, nothing asked again
+            assert early.canonical._pending == []
         for done, part in enumerate(parts, start=1):
             early.ensure(part)
-            assert len(early.canonical._pending) == batches - done  # each batch waited for its own answers only
+            assert len(early.canonical._pending) == (0 if together else batches - done)  # each waited for its own
     finally:
         early.close()
     assert early.live_calls == plain.live_calls
+    if together:  # one ensure stored every key: compare key by key
+        start, size = early.lookup(keys)
+        s0, n0 = plain.lookup(keys)
+        assert np.array_equal(size, n0)
+        for name in ("actions", "probs", "next", "d_human"):
+            assert np.array_equal(early.entries[name][ranges(start, size)], plain.entries[name][ranges(s0, n0)])
+        return
     for name in ("actions", "probs", "next", "d_human"):
         assert np.array_equal(early.entries[name], plain.entries[name]), name
 
@@ -196,6 +209,10 @@ def test_a_shared_batch_computes_what_it_derives_once_per_name() -> None:
     part = shared.rows(rows)
     assert shared.rows(np.array([0, 4, 9])) is part and shared.rows(np.array([0, 4])) is not part
     assert np.array_equal(part.keys, keys[rows])
+    again = shared.rows(rows)  # kept again
+    other = shared.rows(np.array([1, 5, 8]))  # as many rows, other ones: not the subset kept
+    assert other is not again and np.array_equal(other.keys, keys[[1, 5, 8]])
+    assert shared.rows(np.array([1, 5, 8])) is other
     assert np.array_equal(part.mask, BatchedRules(PAPER).masks(packer.unpack(keys[rows])[0], Agent.HUMAN))
     assert np.array_equal(part.unpacked[0].robot_at, b.robot_at[rows])
 
