@@ -3473,6 +3473,107 @@ ROUND26_TESTS = "tests/training/test_pinned_round26.py"
 """The values round 26's missed bugs changed, pinned after the round: every round-26 bug runs them too."""
 FRESH26 = pinned_after(FRESH26, ROUND26_TESTS)
 
+FRESH27 = (
+    Bug(
+        "fresh27 live: chunks() rounds the chunk size down, not up (more, smaller messages; other budget readings)",
+        "agents/models/live.py",
+        "size = max(1, min(CHUNK, -(-n // (2 * jobs))))",
+        "size = max(1, min(CHUNK, n // (2 * jobs)))",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh27 live: Asked.collect's budget readings one chunk ahead (reports a chunk done before it is back)",
+        "agents/models/live.py",
+        "ends = [0, *self.ends]",
+        "ends = [*self.ends, len(rows)]",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh27 answers: KeyBatch.rows reuses its kept subset for any rows of the same count (wrong keys answered)",
+        "agents/models/answers.py",
+        "if self._subset is not None and np.array_equal(self._subset[0], rows):",
+        "if self._subset is not None and len(self._subset[0]) == len(rows):",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh27 answers: ensure adds the canonical answerer's cumulative live calls, not this call's "
+        "(live_calls overcounted)",
+        "agents/models/answers.py",
+        "self.live_calls += self.canonical.live_calls - before",
+        "self.live_calls += self.canonical.live_calls",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh27 equivariant: _ask collects only the oldest prefetch, asks the rest live again "
+        "(extra live calls, duplicate keys)",
+        "agents/models/equivariant.py",
+        "while self._pending and lacking.any():",
+        "if self._pending and lacking.any():",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh27 equivariant: actions naming object 0 are not mapped back from the canonical labelling",
+        "agents/models/equivariant.py",
+        "return np.where(named >= 0, remap[actions, orig[rows, np.maximum(named, 0)]], actions)",
+        "return np.where(named > 0, remap[actions, orig[rows, np.maximum(named, 0)]], actions)",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh27 builder: keep=False gives new states ids in order of discovery, not key order "
+        "(ids differ from keep=True)",
+        "agents/models/builder.py",
+        "index.add(unique(np.concatenate(found)))",
+        "index.add(first_unique(np.concatenate(found)))",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh27 keyed: Searches reuses a result for a table whose keys merely have the same length",
+        "agents/models/keyed.py",
+        "if keys is table.keys or (len(keys) == len(table.keys) and np.array_equal(keys, table.keys)):",
+        "if keys is table.keys or len(keys) == len(table.keys):",
+        gate("model_keyed"),
+    ),
+    Bug(
+        "fresh27 partners: preference scan drops the tie tolerance (a later action within 1e-9 wins a tie)",
+        "agents/models/partners.py",
+        "better = value > top[rows] + _TIE",
+        "better = value > top[rows]",
+        gate("model_partners"),
+    ),
+    Bug(
+        "fresh27 solve: self-loop rescaling applied only when every pair loops (values wrong with refusals)",
+        "agents/models/solve.py",
+        "if (scale != 1.0).any():",
+        "if (scale != 1.0).all():",
+        gate("model_solve"),
+    ),
+    Bug(
+        "fresh27 chains: certain_states treats every round as the first (pairs that leave alive kept ok)",
+        "agents/models/chains.py",
+        "if alive.all():  # the first round: no pair can leave",
+        "if alive.any():  # the first round: no pair can leave",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh27 lazy: gather's robot seconds read by position among the asked pairs, not by pair",
+        "agents/models/lazy.py",
+        "pair_of = np.repeat(pairs, size)",
+        "pair_of = np.repeat(np.arange(len(pairs)), size)",
+        gate("model_lazy"),
+    ),
+    Bug(
+        "fresh27 headroom: optimal_policy's cost sized by states, not pairs (trailing pairs without transitions lost)",
+        "agents/headroom.py",
+        "cost = np.bincount(chain.t_pair, weights=chain.t_prob * chain.t_tau, minlength=self.n_pairs)",
+        "cost = np.bincount(chain.t_pair, weights=chain.t_prob * chain.t_tau, minlength=n)",
+        gate("headroom"),
+    ),
+)
+"""Round 27, written blind in the modules changed for the headroom's speed (the pipeline, shared
+searches, the preference scan over feasible rows, the policies' shortcuts); a fourteenth, the
+'ahead' front built one state short, changes speed only since a front ends where the states it
+read end (``_Front.hi``), and is left out."""
+
 ALL = (
     BUGS
     + FRESH
@@ -3501,6 +3602,7 @@ ALL = (
     + FRESH24
     + FRESH25
     + FRESH26
+    + FRESH27
 )
 
 
