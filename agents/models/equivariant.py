@@ -136,7 +136,7 @@ class CanonicalAnswers:
         self._kept = [*self._kept[1 - KEPT :], (states, seen, computed)]  # the same batch's call reads them back
 
     def drop_pending(self) -> None:
-        """Forget the :meth:`prefetch` es whose workers were stopped (their keys are asked again when needed)."""
+        """Forget every prefetch whose workers were stopped (their keys are asked again when needed)."""
         self._pending, self._kept = [], []
 
     def _keys(
