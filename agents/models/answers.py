@@ -151,14 +151,14 @@ class AnswerTable:
         return self.table.entries
 
     def lookup(
-        self, keys: np.ndarray, at: np.ndarray | None = None, batch: KeyBatch | None = None
+        self, keys: np.ndarray, at: np.ndarray | None = None, searches: Searches | None = None
     ) -> tuple[np.ndarray, np.ndarray]:
         """(first entry, entry count) per key; every key must be known (see :meth:`ensure`).
 
-        ``at``: the keys' positions among :attr:`keys` where known (:meth:`SegmentTable.lookup`);
-        ``batch``: ``keys`` as a :class:`KeyBatch` shared with other tables (searched once for all).
+        ``at``: the keys' positions among :attr:`keys` where known; ``searches``: where other
+        tables are asked the same keys (:meth:`SegmentTable.lookup`).
         """
-        return self.table.lookup(keys, at, None if batch is None else batch.searches)
+        return self.table.lookup(keys, at, searches)
 
     def compact(self) -> tuple[np.ndarray, np.ndarray, dict[str, np.ndarray]]:
         """(keys, starts, entries), key ``i``'s entries at ``starts[i]:starts[i + 1]``: as compiled partners store."""

@@ -282,7 +282,7 @@ class _Answered:
 
     def __init__(self, table: AnswerTable, mids: np.ndarray, canonical: bool, batch: KeyBatch | None = None) -> None:
         table.ensure(mids, batch)
-        start, size = table.lookup(mids, batch=batch)
+        start, size = table.lookup(mids, searches=None if batch is None else batch.searches)
         self.block = np.concatenate([[0], np.cumsum(size)]).astype(np.int64)
         entry = np.repeat(start - self.block[:-1], size) + np.arange(self.block[-1])
         e = table.entries

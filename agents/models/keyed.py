@@ -104,6 +104,10 @@ class Searches:
     def __init__(self) -> None:
         self._done: list[tuple[str, np.ndarray, np.ndarray, Any]] = []
 
+    def __len__(self) -> int:
+        """The searches made (each reused for the tables with the same keys)."""
+        return len(self._done)
+
     def get(self, kind: str, table: SegmentTable, queries: np.ndarray, compute: Callable[[], Any]) -> Any:
         """``compute()`` for ``table``'s keys and ``queries``, or what it gave a table with the same keys
         (the same ``queries`` object)."""

@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.models.answers import AnswerTable
-from hg_marl.agents.models.keyed import positions, ranges, starts_of
+from hg_marl.agents.models.keyed import Searches, ranges, starts_of
 
 
 class TableTransitions:
@@ -36,8 +36,10 @@ class TableTransitions:
         self._order: dict[bool, tuple[np.ndarray, np.ndarray]] = {}
         """Per kind of key: the live pairs in key order, and their keys."""
         self._last: tuple[int, np.ndarray, np.ndarray] | None = None
-        self._searched: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
-        """(table keys, sorted pair keys, positions) of each distinct table searched."""
+        self._searched = Searches()
+        """The sorted pair keys' positions, searched once per distinct table keys: the partners of a
+        joint model answered on arrays were asked the same keys, so their tables hold the same keys
+        (the headroom's twenty), and one search serves them all."""
 
     def entries_of(self, partner: int, terminal: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(first entry, entry count) of every pair in ``partner``'s table (0 entries: the completing ``wait``).
@@ -57,22 +59,9 @@ class TableTransitions:
         order, asked = self._order[table.uses_robot_action]
         first = np.zeros(len(keys), dtype=np.int64)
         size = np.zeros(len(keys), dtype=np.int64)
-        first[order], size[order] = table.lookup(asked, self._positions(table.keys, asked))
+        first[order], size[order] = table.lookup(asked, searches=self._searched)
         self._last = (partner, first, size)
         return first, size
-
-    def _positions(self, table_keys: np.ndarray, asked: np.ndarray) -> np.ndarray:
-        """``asked``'s positions among ``table_keys``, searched once for tables with the same keys.
-
-        The partners of a joint model answered on arrays were asked the same keys, so
-        their tables hold the same keys (the headroom's twenty): one search serves them all.
-        """
-        for keys, queries, at in self._searched:
-            if queries is asked and (keys is table_keys or np.array_equal(keys, table_keys)):
-                return at
-        at = positions(table_keys, asked)
-        self._searched.append((table_keys, asked, at))
-        return at
 
     def gather(
         self, partner: int, pairs: np.ndarray, terminal: np.ndarray

@@ -172,7 +172,8 @@ def solve(
     budget = budget or Budget(None, None, None)
     n, n_pairs = model.n, model.n_pairs
     transitions = model.transitions()
-    cost = np.bincount(model.t_pair(), weights=model.t_prob * model.t_tau, minlength=n_pairs)
+    t_pair = model.t_pair()
+    cost = np.bincount(t_pair, weights=model.t_prob * model.t_tau, minlength=n_pairs)
     budget.check("solve", 0, unit="sweeps", memory=True)
     alive, ok = certain_states(model, transitions)
     starts = model.pair_start[:-1]
@@ -201,6 +202,7 @@ def solve(
         tolerance=tolerance,
         max_iterations=max_iterations,
         budget=budget,
+        t_pair=t_pair,
     )
     q = q_of(np.where(alive, values, 0.0))
     values = np.where(alive, values, np.inf)
