@@ -3574,6 +3574,119 @@ searches, the preference scan over feasible rows, the policies' shortcuts); a fo
 'ahead' front built one state short, changes speed only since a front ends where the states it
 read end (``_Front.hi``), and is left out."""
 
+FRESH28 = (
+    Bug(
+        "fresh28 model sb3: a replay buffer's pos equal to its size accepted (the next add writes past the end)",
+        "agents/model_sb3.py",
+        "not 0 <= pos < max(size, 1)",
+        "not 0 <= pos <= max(size, 1)",
+        gate("model_sb3"),
+    ),
+    Bug(
+        "fresh28 array partner: the clock capability declared as follows(), so a schedule of humans never "
+        "follows its tables' clocks",
+        "hg_marl/envs/array_partner.py",
+        "    def follow(self, clock: np.ndarray, tasks_solved: np.ndarray) -> None:",
+        "    def follows(self, clock: np.ndarray, tasks_solved: np.ndarray) -> None:",
+        gate("array_partner"),
+    ),
+    Bug(
+        "fresh28 habit: an undiscounted habit (gamma = 1) refused as out of range",
+        "agents/habit.py",
+        '"gamma": 0 <= self.gamma <= 1,',
+        '"gamma": 0 <= self.gamma < 1,',
+        gate("habit"),
+    ),
+    Bug(
+        "fresh28 memory numpy: the header's observation size checked against the default history cap, "
+        "not the file's (a file trained with another cap refused)",
+        "agents/memory_numpy.py",
+        "history_size(history, cap)",
+        "history_size(history)",
+        gate("memory_numpy"),
+    ),
+    Bug(
+        "fresh28 memory policy: infeasible logits masked to 1e-8 instead of -1e8 (infeasible actions sampled)",
+        "agents/memory_policy.py",
+        "logits.masked_fill(~mask, -1e8)",
+        "logits.masked_fill(~mask, 1e-8)",
+        gate("memory_policy"),
+    ),
+    Bug(
+        "fresh28 meta controller: an untrained habit's decision records the criterion's min_visits as its visits",
+        "agents/meta/controller.py",
+        '"visits": float(habit.visits)',
+        '"visits": float(crit.min_visits)',
+        gate("meta_controller"),
+    ),
+    Bug(
+        "fresh28 model format: weights refused only when every value is NaN or infinite, not any",
+        "agents/model_format.py",
+        "not np.isfinite(value).all()",
+        "not np.isfinite(value).any()",
+        gate("model_format"),
+    ),
+    Bug(
+        "fresh28 model limits: a table policy of exactly MAX_TABLE_ROWS rows refused",
+        "agents/model_limits.py",
+        "shape[0] > MAX_TABLE_ROWS",
+        "shape[0] >= MAX_TABLE_ROWS",
+        gate("model_limits"),
+    ),
+    Bug(
+        "fresh28 budget: a refusal's progress states the total as done and the done as total",
+        "agents/models/budget.py",
+        'f"{done:,} of {total:,} {unit}"',
+        'f"{total:,} of {done:,} {unit}"',
+        gate("model_budget"),
+    ),
+    Bug(
+        "fresh28 cache: an oracle entry that cannot be written (read-only or full folder) raises instead of "
+        "being skipped",
+        "agents/models/cache.py",
+        "except (OSError, OutputError):",
+        "except OSError:",
+        gate("model_cache"),
+    ),
+    Bug(
+        "fresh28 layouts: a class make-up never deals a class as many objects as it can give (compositions one short)",
+        "agents/models/layouts.py",
+        "for n in range(min(c, left[0]) + 1):",
+        "for n in range(min(c, left[0])):",
+        gate("model_layouts"),
+    ),
+    Bug(
+        "fresh28 packing: the offered object's digit given radix n, not n + 1 (an offer of the last object "
+        "carries into the next digit)",
+        "agents/models/packing.py",
+        "[t.n_locations, 3, n + 1, world.n_actions(Agent.ROBOT) + 1]",
+        "[t.n_locations, 3, n, world.n_actions(Agent.ROBOT) + 1]",
+        gate("model_packing"),
+    ),
+    Bug(
+        "fresh28 vector envs: the robot seat passes progress as the cache and cache as progress "
+        "(no disk cache, progress printed)",
+        "agents/vector_envs.py",
+        "compiled_humans(world, human, cache, progress)",
+        "compiled_humans(world, human, progress, cache)",
+        gate("vector_envs"),
+    ),
+    Bug(
+        "fresh28 relabel: action_back returns action 0 unmapped (a pick of canonical object 0 picks original object 0)",
+        "hg_marl/core/relabel.py",
+        "        if index < 0:\n            return index",
+        "        if index <= 0:\n            return index",
+        gate("relabel"),
+    ),
+)
+"""Round 28, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in fourteen gated modules of the early fresh rounds: the SB3 and model-file formats and limits, the
+habit, the memory policy in torch and numpy, the meta controller, the array-partner protocols, the
+exact models' budget, cache, layouts and packing, the vector entry points and the relabelling."""
+ROUND28_TESTS = "tests/training/test_pinned_round28.py"
+"""The values round 28's missed bugs changed, pinned after the round: every round-28 bug runs them too."""
+FRESH28 = pinned_after(FRESH28, ROUND28_TESTS)
+
 ALL = (
     BUGS
     + FRESH
@@ -3603,6 +3716,7 @@ ALL = (
     + FRESH25
     + FRESH26
     + FRESH27
+    + FRESH28
 )
 
 
