@@ -64,6 +64,8 @@ class Plan:
     """The rules the streams are read with."""
     durations: tuple[tuple[float, float], ...] = field(compare=False, repr=False)
     """Per cycle, the robot's and the human's action durations as replayed."""
+    mids: tuple[State, ...] = field(default=(), compare=False, repr=False)
+    """Per cycle, the state after its robot action (the cycle's start where it has none), as replayed."""
 
     @cached_property
     def streams(self) -> tuple[tuple[Step, ...], tuple[Step, ...]]:
@@ -169,7 +171,7 @@ def build_plan(
     hand_h = world.hand[Agent.HUMAN]
     wait_h = world.n_actions(Agent.HUMAN) - 1
     successor = world.table.successor  # what ``World.step`` returns, without its events
-    states, terms, durations = [root], [], []
+    states, terms, durations, mids = [root], [], [], []
     state = root
     for ar, ah in cycles:
         if ar == NO_ACTION:
@@ -177,11 +179,12 @@ def build_plan(
         else:
             state, _, d_r = successor(state, Agent.ROBOT, ar)
             r_act = ar
+        mids.append(state)
         state, _, d_h = successor(state, Agent.HUMAN, ah)
         terms.append(cycle_terms(d_r, robot_active(world, r_act, ah), d_h, ah != wait_h, hand_h in state.where))
         states.append(state)
         durations.append((d_r, d_h))
-    return Plan(tuple(cycles), tuple(states), first_to_move, tuple(terms), world, tuple(durations))
+    return Plan(tuple(cycles), tuple(states), first_to_move, tuple(terms), world, tuple(durations), tuple(mids))
 
 
 def _streams(

@@ -215,14 +215,12 @@ class Planner:
         plan = result.plan
         if plan is None or self.human_model.stochastic or not self.config.cache_suffixes:
             return
-        world = self.world
         for k, (ar, _) in enumerate(plan.cycles):
             if ar == NO_ACTION:
                 continue
             if k > 0:
                 self._put((plan.states[k], Agent.ROBOT, NO_ACTION), (result, k))
-            mid = world.table.successor(plan.states[k], Agent.ROBOT, ar)[0]
-            self._put((mid, Agent.HUMAN, ar), (result, k))
+            self._put((plan.mids[k], Agent.HUMAN, ar), (result, k))
 
     def _put(self, key: _Key, value: tuple[PlanResult, int]) -> None:
         if key in self._cache:

@@ -338,14 +338,14 @@ class Space:
             if obj >= 0:
                 statuses[obj] = status
             tabs = self.tables if by != 0 else self.offer_tables
-            vals = [fsum(map(getitem, tab[at], statuses)) for tab in tabs]  # exactly rounded: order-free
+            vals = tuple([fsum(map(getitem, tab[at], statuses)) for tab in tabs])  # exactly rounded: order-free
             if math.inf in vals:
                 return None
         if d.robot_hand not in where:
             handover, spots = self._saves_places[at]
             if handover or not spots.isdisjoint(where):
                 return tuple(map(sub, vals, self.empty_move_coef))
-        return tuple(vals)
+        return vals
 
     def bound(self, state: State, key: object = None) -> float:
         """Admissible lower bound on the cost-to-go of a cycle-boundary state (inf: dead end)."""

@@ -97,24 +97,30 @@ class Steps:
         parent = sum(map(getitem, codes, where)) if codes is not None else 0
         for a in actions:
             code, o, x, d = rows[a]
-            w, a2, b, ob, m = where, at, by, obj, parent
             if code <= THROW:  # SET, TAKE, THROW: one object moves
+                b, ob = by, obj
                 if code == THROW:
                     x = throw_to[o]
                 elif code == TAKE:
                     b = ob = -1
                 moved = list(where)
                 moved[o] = x
-                w = tuple(moved)
+                s: State = _new(State, (tuple(moved), at, b, ob))
                 if codes is not None:
                     row = codes[o]
-                    m = parent - row[where[o]] + row[x]
-            elif code == GIVE:
-                b, ob = x, o
-            elif code == GOTO:
-                a2 = goto_obj[where[x]] if x < n else goto_static[x - n]
-            s: State = _new(State, (w, a2, b, ob))
-            key = (m, a2, b) if codes is not None else key_of(s)
+                    key = (parent - row[where[o]] + row[x], at, b)
+                else:
+                    key = key_of(s)
+            else:
+                a2 = at
+                if code == GIVE:
+                    b, ob = x, o
+                else:
+                    b, ob = by, obj
+                    if code == GOTO:
+                        a2 = goto_obj[where[x]] if x < n else goto_static[x - n]
+                s = _new(State, (where, a2, b, ob))
+                key = (parent, a2, b) if codes is not None else key_of(s)
             sm = memo.get(key, missing)
             if sm is missing:
                 sm = sums_of(s, key)

@@ -60,7 +60,7 @@ def test_packed_sums_equal_fsum(scenario: str, weights: CostWeights) -> None:
         for state in walk(world, seed, 30):
             statuses = space.statuses(state)
             tabs = space.tables if state.offer_by != 0 else space.offer_tables
-            expected = [math.fsum(tab[state.robot_at][o][st] for o, st in enumerate(statuses)) for tab in tabs]
+            expected = tuple(math.fsum(tab[state.robot_at][o][st] for o, st in enumerate(statuses)) for tab in tabs)
             got = space._exact.sums(state.offer_by == 0, state.robot_at, statuses)
             status = statuses[state.offer_obj] if state.offer_obj >= 0 else 0
             places = space._exact.of_places(state.offer_by == 0, state.robot_at, state.where, state.offer_obj, status)
@@ -98,8 +98,8 @@ def test_packed_sums_are_exactly_rounded_on_a_hand_made_table() -> None:
     assert 0.1 + 0.2 + 0.3 != 0.6
     assert exact.sums(False, 0, [0, 0, 0]) is None  # an infinite value: a dead end
     two = ExactSums([[[[0.1], [0.2], [0.3]]]], [[[[0.1], [0.2], [0.3]]]], 3)
-    assert two.sums(False, 0, [0, 0, 0]) == [0.6]
-    assert two.sums(True, 0, [0, 0, 0]) == [0.6]
+    assert two.sums(False, 0, [0, 0, 0]) == (0.6,)
+    assert two.sums(True, 0, [0, 0, 0]) == (0.6,)
 
 
 def test_the_places_form_swaps_the_offered_objects_term_exactly() -> None:
@@ -107,10 +107,34 @@ def test_the_places_form_swaps_the_offered_objects_term_exactly() -> None:
     # 0.1 + 0.3 exactly rounded; an infinite place swapped out is no dead end, one swapped in is
     tabs = [[[[0.1, 0.2, 0.7], [0.25, math.inf, 0.3]]]]
     exact = ExactSums(tabs, tabs, 2)
-    assert exact.of_places(False, 0, (0, 0), 1, 2) == [math.fsum([0.1, 0.3])]
-    assert exact.of_places(False, 0, (1, 1), 1, 2) == [math.fsum([0.2, 0.3])]
+    assert exact.of_places(False, 0, (0, 0), 1, 2) == (math.fsum([0.1, 0.3]),)
+    assert exact.of_places(False, 0, (1, 1), 1, 2) == (math.fsum([0.2, 0.3]),)
     assert exact.of_places(False, 0, (1, 1), -1, 2) is None
-    assert exact.of_places(False, 0, (2, 0), 0, 1) == [math.fsum([0.2, 0.25])]
+    assert exact.of_places(False, 0, (2, 0), 0, 1) == (math.fsum([0.2, 0.25]),)
+
+
+@pytest.mark.parametrize(
+    ("values", "fields"),
+    [
+        ((0.1, 0.2, 0.3, 0.7, 1.5, 2.25), True),  # every field within 64 bits: read back with struct
+        ((1.0, 2.0**-60, 0.3, 7.0, 0.1, 0.5), False),  # 2**-60 beside 7: fields of 114 bits
+        ((5e-324, 1e-310, 2.5e-320, 3e-315, 1e-300, 4e-308), False),  # 2**exp below the normal floats
+        ((5e-324, 1e-323, 1.5e-323, 2e-323, 5e-324, 1e-323), True),  # subnormals only: narrow fields, 2**exp not normal
+    ],
+)
+def test_five_weights_give_fsum_exactly_whatever_the_fields_width(values: tuple[float, ...], fields: bool) -> None:
+    # five weights (the bound's), three objects with two statuses each, one location; every
+    # sum stated as fsum over the chosen values, on each packing path
+    tabs = [[[[values[(k + o) % 6], values[(k + 2 * o + 1) % 6]] for o in range(3)]] for k in range(5)]
+    exact = ExactSums(tabs, tabs, 3)
+    assert exact.packed is not None and exact.fields is fields
+    for where in [(0, 0, 0), (1, 0, 1), (1, 1, 1), (0, 1, 0)]:
+        expected = tuple(math.fsum(tabs[k][0][o][st] for o, st in enumerate(where)) for k in range(5))
+        assert exact.of_places(False, 0, where, -1, 0) == expected, where
+        assert exact.sums(True, 0, list(where)) == expected, where
+        swapped = (where[0], 1 - where[1], where[2])  # object 1 "offered" in its other status
+        expected = tuple(math.fsum(tabs[k][0][o][st] for o, st in enumerate(swapped)) for k in range(5))
+        assert exact.of_places(False, 0, where, 1, swapped[1]) == expected, where
 
 
 @pytest.mark.parametrize("scenario", [*SCENARIOS, "generated:objects=8,bins=2"])
