@@ -1,7 +1,9 @@
 """Planner latency: planning time and nodes expanded against the number of objects.
 
-Run: ``python benchmarks/planner_latency.py [--seeds 5] [--budget 20000]``. Prints one
-row per workload: median and 95th-percentile cold planning time and the median CPU time
+Run: ``python benchmarks/planner_latency.py [--seeds 5] [--budget 20000] [--repeats 5]``.
+Prints one row per workload: median and 95th-percentile cold planning time (each case
+planned cold ``--repeats`` times, each time on a fresh world: a single cold plan per case
+varied by 20% from run to run on a busy machine) and the median CPU time
 (less sensitive to a loaded machine) of a fresh ``Planner``, the median CPU time of
 constructing it (its static tables: not part of the planning time)
 (no plan, candidate or bound cached: each case gets its own ``World``, since planners of
@@ -59,12 +61,14 @@ def percentile(values: list[float], q: float) -> float:
     return ordered[min(len(ordered) - 1, max(0, round(q / 100 * len(ordered) + 0.5) - 1))]
 
 
-def measure(cases: list[tuple[World, State]], budget: int) -> dict[str, float | int | str]:
-    """Cold and warm planning statistics over ``(world, initial state)`` cases."""
+def measure(cases: list[tuple[World, State]], budget: int, repeats: int = 1) -> dict[str, float | int | str]:
+    """Cold and warm planning statistics over ``(world, initial state)`` cases, each planned
+    cold ``repeats`` times (on a fresh world each time: planners of one world share caches)."""
     cold, cpu, init, warm, nodes, proven, plans = [], [], [], [], [], 0, []
     ref: list[float] = []
     ref_plans: list[tuple[object, float]] = []
-    for world, state in cases:
+    for case, r in ((case, r) for case in cases for r in range(repeats)):
+        world, state = case if r == 0 else (World(case[0].scenario, case[0].durations), case[1])
         start_cpu = time.process_time()
         planner = Planner(world, PlannerConfig(node_budget=budget))
         init.append(time.process_time() - start_cpu)
@@ -116,6 +120,9 @@ def main() -> None:
     parser = argparse.ArgumentParser(description="Planner latency against the number of objects.")
     parser.add_argument("--seeds", type=int, default=5, help="initial states or layouts per workload")
     parser.add_argument("--budget", type=int, default=20_000, help="node budget per call")
+    parser.add_argument(
+        "--repeats", type=int, default=5, help="cold plans of each case, each on a fresh world (medians over all)"
+    )
     args = parser.parse_args()
     header = (
         f"{'workload':<24}{'median ms':>10}{'p95 ms':>10}{'cpu ms':>9}{'init ms':>9}{'warm us':>9}"
@@ -124,7 +131,7 @@ def main() -> None:
     print(header)
     print("-" * len(header))
     for label, cases in workloads(args.seeds):
-        row = measure(cases, args.budget)
+        row = measure(cases, args.budget, args.repeats)
         print(
             f"{label:<24}{row['median_ms']:>10.2f}{row['p95_ms']:>10.2f}{row['cpu_ms']:>9.2f}{row['init_ms']:>9.2f}{row['warm_us']:>9.1f}"
             f"{row['nodes_med']:>10}{row['nodes_max']:>10}{row['proven']:>8}{row['ref_ms']:>9.2f}"

@@ -50,6 +50,9 @@ class SearchOutcome:
     cost: float
     nodes: int
     reason: str = ""
+    states: list[tuple[State, State]] | None = None
+    """Per cycle of the plan, the state after its robot action and the state after the cycle
+    (what replaying the cycles from the root gives: the search applied the same rules)."""
 
 
 def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, int], budget: int) -> SearchOutcome:
@@ -95,7 +98,8 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
         g = -neg_g
         s, parent, act, nkey, kind, d_r, active_r = nodes[node]
         if kind == 2:
-            return SearchOutcome(_path(nodes, node, wait_r), g, expanded)
+            cycles, states = _path(nodes, node, wait_r)
+            return SearchOutcome(cycles, g, expanded, states=states)
         if kind == 0:
             if g > best_r[nkey] + 1e-12:
                 continue
@@ -135,9 +139,14 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
 
 def _path(
     nodes: list[tuple[State, int, int, object, int, float, bool]], node: int, wait_r: int
-) -> list[tuple[int, int]]:
-    """The cycles from the root to terminal ``node``."""
-    out = [(wait_r, nodes[node][2])]
+) -> tuple[list[tuple[int, int]], list[tuple[State, State]]]:
+    """The cycles from the root to terminal ``node``, with each cycle's (mid-cycle, next) states.
+
+    The last cycle is the robot's completing ``wait`` and the human's ``wait`` on the clean
+    table (no object in a hand, so no offer to lapse): both leave the state as it is.
+    """
+    done = nodes[node][0]
+    out, states = [(wait_r, nodes[node][2])], [(done, done)]
     node = nodes[node][1]
     while node >= 0:
         h = nodes[node][1]  # robot node ``node`` was reached by a human reply from human node ``h``
@@ -145,6 +154,8 @@ def _path(
             break  # the root (a robot node)
         ar = nodes[h][2] if nodes[h][1] >= 0 else -1
         out.append((ar, nodes[node][2]))
+        states.append((nodes[h][0], nodes[node][0]))
         node = nodes[h][1]
     out.reverse()
-    return out
+    states.reverse()
+    return out, states

@@ -8,7 +8,8 @@ derived from it with the scenario's durations, so the two views cannot disagree.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, reduce
+from operator import add
 from typing import NamedTuple
 
 import numpy as np
@@ -89,11 +90,9 @@ class Plan:
 
     @property
     def totals(self) -> Terms:
-        """Raw cost terms summed over the plan."""
-        total = Terms()
-        for t in self.terms:
-            total = total + t
-        return total
+        """Raw cost terms summed over the plan: each term added cycle after cycle from 0.0
+        (``Terms() + t1 + t2 + ...``, the same additions in the same order)."""
+        return Terms(*[reduce(add, column, 0.0) for column in zip(*self.terms, strict=True)])
 
     def cost(self, weights: CostWeights) -> float:
         """Weighted cost of the plan."""
@@ -157,6 +156,7 @@ def build_plan(
     first_to_move: Agent,
     cycles: list[tuple[int, int]],
     robot_part: tuple[float, int] = (0.0, NO_ACTION),
+    replayed: list[tuple[State, State]] | None = None,
 ) -> Plan:
     """Replay ``cycles`` from ``root`` with the rule table: states, durations and terms (streams and links on use).
 
@@ -167,20 +167,30 @@ def build_plan(
         cycles: (robot, human) action indices per cycle.
         robot_part: for a human-turn start, the duration and index of the robot's action
             already under way in the first cycle; ``(0, -1)`` if unknown.
+        replayed: per cycle, the states after its robot action and after the cycle, where
+            the caller has them (a search's path: it applied the same rules); the actions'
+            durations are then read from the rule table's specs, as a replay returns them.
     """
     hand_h = world.hand[Agent.HUMAN]
     wait_h = world.n_actions(Agent.HUMAN) - 1
-    successor = world.table.successor  # what ``World.step`` returns, without its events
+    table = world.table
+    successor, specs = table.successor, table.specs  # what ``World.step`` returns, without its events
     states, terms, durations, mids = [root], [], [], []
     state = root
-    for ar, ah in cycles:
-        if ar == NO_ACTION:
-            d_r, r_act = robot_part
+    for k, (ar, ah) in enumerate(cycles):
+        if replayed is not None:
+            mid, state = replayed[k]
+            d_r, r_act = robot_part if ar == NO_ACTION else (specs[0][ar].duration, ar)
+            d_h = specs[1][ah].duration
+            mids.append(mid)
         else:
-            state, _, d_r = successor(state, Agent.ROBOT, ar)
-            r_act = ar
-        mids.append(state)
-        state, _, d_h = successor(state, Agent.HUMAN, ah)
+            if ar == NO_ACTION:
+                d_r, r_act = robot_part
+            else:
+                state, _, d_r = successor(state, Agent.ROBOT, ar)
+                r_act = ar
+            mids.append(state)
+            state, _, d_h = successor(state, Agent.HUMAN, ah)
         terms.append(cycle_terms(d_r, robot_active(world, r_act, ah), d_h, ah != wait_h, hand_h in state.where))
         states.append(state)
         durations.append((d_r, d_h))

@@ -164,16 +164,16 @@ class Planner:
         part = self._robot_part(ra)
         if model.stochastic:
             out = expectimax(self.space, state, to_move, part, cfg.node_budget, cfg.value_tolerance, cfg.max_sweeps)
-            cycles, nodes, reason, terms = out.cycles, out.nodes, out.reason, out.terms
+            cycles, nodes, reason, terms, replayed = out.cycles, out.nodes, out.reason, out.terms, None
         else:
             res = astar(self.space, state, to_move, part, cfg.node_budget)
-            cycles, nodes, reason, terms = res.cycles, res.nodes, res.reason, None
+            cycles, nodes, reason, terms, replayed = res.cycles, res.nodes, res.reason, None, res.states
         elapsed = time.perf_counter() - start
         if cycles is None:
             result = failure(self._reason(state, reason, nodes), nodes, elapsed, self._wait[0])
             logger.debug("planning failed after %d nodes: %s", nodes, result.reason)
             return result
-        plan = build_plan(self.world, state, to_move, cycles, part)
+        plan = build_plan(self.world, state, to_move, cycles, part, replayed)
         weights = cfg.weights
         if terms is None:
             terms = plan.totals

@@ -15,6 +15,7 @@ import pytest
 
 from hg_marl.agents.planner import CostWeights, Planner, PlannerConfig
 from hg_marl.agents.planner.exactsum import ExactSums
+from hg_marl.agents.planner.plan import build_plan
 from hg_marl.agents.planner.steps import Steps
 from hg_marl.core import Agent, State, World
 
@@ -173,3 +174,31 @@ def test_the_search_keys_and_sums_successors_as_the_space_does(scenario: str) ->
 def test_negative_values_keep_to_fsum() -> None:
     exact = ExactSums([[[[-1.0], [2.0]]]], [[[[-1.0], [2.0]]]], 2)
     assert exact.packed is None
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "generated:objects=5,human_only=0.8,seed=1"])
+def test_a_plan_from_the_search_path_is_the_plan_a_replay_builds(scenario: str) -> None:
+    # the search hands its path's states to build_plan instead of a replay; the plan must be
+    # the one replaying its cycles with the rule table gives: states, mid-cycle states,
+    # durations and terms, from robot-turn and human-turn starts
+    world = World(scenario)
+    planner = Planner(world, PlannerConfig(cache_size=0))
+    compared = 0
+    for seed in range(3):
+        states = walk(world, seed, 16)
+        for state in states[::2]:
+            starts = [(state, Agent.ROBOT, None)]
+            for ra in world.feasible_indices(state, Agent.ROBOT)[:2]:
+                starts.append((world.table.successor(state, Agent.ROBOT, ra)[0], Agent.HUMAN, ra))
+            for root, to_move, ra in starts:
+                result = planner.plan(root, to_move, robot_action=ra)
+                if result.plan is None:
+                    continue
+                plan = result.plan
+                part = (0.0, -1) if ra is None else (world.durations.of(world.actions(Agent.ROBOT)[ra].kind), ra)
+                replay = build_plan(world, root, to_move, list(plan.cycles), part)
+                assert plan == replay
+                assert (plan.mids, plan.durations) == (replay.mids, replay.durations)
+                assert len(plan.mids) == len(plan.cycles) == len(plan.states) - 1
+                compared += 1
+    assert compared > 20
