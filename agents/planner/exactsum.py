@@ -21,9 +21,6 @@ from math import ldexp
 from operator import getitem
 from struct import Struct
 
-_MIN_NORMAL_EXP = -1022
-"""The least exponent ``e`` for which ``2**e`` is a normal double."""
-
 _FIVE = Struct("<5Q")
 """Five little-endian 64-bit fields: the packed sums of the bound's five weights read in one call."""
 
@@ -56,8 +53,8 @@ class ExactSums:
         self.mask = (1 << self.width) - 1
         self.flag = 1 << (self.width * self.k)
         self.shifts = tuple(k * self.width for k in range(self.k))
-        self.scale = ldexp(1.0, self.exp) if self.exp >= _MIN_NORMAL_EXP else 0.0
-        """``2**exp``, where it is a normal float (0.0: not, :meth:`_decode` then uses ``ldexp``)."""
+        self.scale = ldexp(1.0, self.exp)
+        """``2**exp`` (0.0 where it is below the least subnormal: :meth:`_decode` then uses ``ldexp``)."""
         self.packed = (self._pack(plain), self._pack(offer))
 
     def _pack(self, tabs: Tables) -> list[list[list[int]]]:
@@ -107,8 +104,8 @@ class ExactSums:
 
     def _decode(self, total: int) -> tuple[float, ...] | None:
         """The packed fields as floats: each field's integer rounded to a float (as ``fsum``
-        rounds), times ``2**exp``, which is exact where that power is a normal float (a
-        field is 0 or at least 1, so the product is 0 or normal); ``ldexp`` otherwise."""
+        rounds), times ``2**exp``: a product with a power of two that is itself a float is
+        rounded once, correctly, as ``ldexp`` rounds; ``ldexp`` where the power underflows to 0."""
         if total >= self.flag:
             return None
         mask, scale = self.mask, self.scale

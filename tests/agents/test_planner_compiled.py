@@ -120,6 +120,7 @@ def test_the_places_form_swaps_the_offered_objects_term_exactly() -> None:
         ((0.1, 0.2, 0.3, 0.7, 1.5, 2.25), True),  # every field within 64 bits: read back with struct
         ((1.0, 2.0**-60, 0.3, 7.0, 0.1, 0.5), False),  # 2**-60 beside 7: fields of 114 bits
         ((5e-324, 1e-310, 2.5e-320, 3e-315, 1e-300, 4e-308), False),  # 2**exp below the normal floats
+        ((1e-300, 3e-301, 7e-302, 2e-300, 5e-301, 1e-299), True),  # 2**exp a subnormal float: still exact
         ((5e-324, 1e-323, 1.5e-323, 2e-323, 5e-324, 1e-323), True),  # subnormals only: narrow fields, 2**exp not normal
     ],
 )
