@@ -3687,6 +3687,120 @@ ROUND28_TESTS = "tests/training/test_pinned_round28.py"
 """The values round 28's missed bugs changed, pinned after the round: every round-28 bug runs them too."""
 FRESH28 = pinned_after(FRESH28, ROUND28_TESTS)
 
+PLANNER_TEST_FILES = (
+    "tests/agents/test_pinned_planner_bound_gate.py",
+    "tests/agents/test_pinned_planner_steps_gate.py",
+    "tests/agents/test_pinned_planner_tables_gate.py",
+    "tests/agents/test_planner.py",
+    "tests/agents/test_planner_behaviour.py",
+    "tests/agents/test_planner_compiled.py",
+    "tests/agents/test_planner_halfstep.py",
+    "tests/agents/test_planner_hand.py",
+    "tests/agents/test_planner_pinned.py",
+    "tests/agents/test_planner_reference.py",
+    "tests/agents/test_planner_tools.py",
+)
+"""Every planner test file by its name (``tests/agents/test_*plan*.py`` naming the planner): what a
+maintainer runs for the planner's modules outside ``modules.toml`` (the search, the plan, the planner)."""
+
+
+def planner_gate() -> tuple[str, ...]:
+    """``planner_steps``'s gate tests and :data:`PLANNER_TEST_FILES`, each once."""
+    return tuple(dict.fromkeys(gate("planner_steps", *PLANNER_TEST_FILES)))
+
+
+FRESH29 = (
+    Bug(
+        "fresh29 exact sums: the five packed fields read back from big-endian bytes",
+        "agents/planner/exactsum.py",
+        'total.to_bytes(40, "little")',
+        'total.to_bytes(40, "big")',
+        gate("planner_exactsum"),
+    ),
+    Bug(
+        "fresh29 exact sums: the struct path returns the fourth field twice (the fifth weight's sum lost)",
+        "agents/planner/exactsum.py",
+        "s3 * scale, s4 * scale)",
+        "s3 * scale, s3 * scale)",
+        gate("planner_exactsum"),
+    ),
+    Bug(
+        "fresh29 exact sums: fields wider than 64 bits decoded without their mask (the higher fields added in)",
+        "agents/planner/exactsum.py",
+        "return tuple([float((total >> s) & mask) * scale for s in self.shifts])",
+        "return tuple([float(total >> s) * scale for s in self.shifts])",
+        gate("planner_exactsum"),
+    ),
+    Bug(
+        "fresh29 planner steps: a goto's key keeps the robot's old location (two gotos of one duration share a node)",
+        "agents/planner/steps.py",
+        "key = (parent, a2, b) if codes is not None else key_of(s)",
+        "key = (parent, at, b) if codes is not None else key_of(s)",
+        gate("planner_steps"),
+    ),
+    Bug(
+        "fresh29 planner steps: a moved object's old key term read at its index, not at its place",
+        "agents/planner/steps.py",
+        "key = (parent - row[where[o]] + row[x], at, b)",
+        "key = (parent - row[o] + row[x], at, b)",
+        gate("planner_steps"),
+    ),
+    Bug(
+        "fresh29 halfstep: the path's states left in reverse order (cycles reversed, states not)",
+        "agents/planner/halfstep.py",
+        "    states.reverse()\n",
+        "",
+        planner_gate(),
+    ),
+    Bug(
+        "fresh29 halfstep: a cycle's mid-cycle state taken as the state after the cycle",
+        "agents/planner/halfstep.py",
+        "states.append((nodes[h][0], nodes[node][0]))",
+        "states.append((nodes[node][0], nodes[node][0]))",
+        planner_gate(),
+    ),
+    Bug(
+        "fresh29 plan: a replayed cycle's pair unpacked as (next, mid) (the plan's states are its mid-cycle ones)",
+        "agents/planner/plan.py",
+        "mid, state = replayed[k]",
+        "state, mid = replayed[k]",
+        planner_gate(),
+    ),
+    Bug(
+        "fresh29 plan: a search's human-turn plan drops the robot action under way from its first cycle",
+        "agents/planner/plan.py",
+        "d_r, r_act = robot_part if ar == NO_ACTION else (specs[0][ar].duration, ar)",
+        "d_r, r_act = (0.0, NO_ACTION) if ar == NO_ACTION else (specs[0][ar].duration, ar)",
+        planner_gate(),
+    ),
+    Bug(
+        "fresh29 planner: a suffix's human-turn entry keyed by the cycle's start, not its mid-cycle state",
+        "agents/planner/planner.py",
+        "self._put((plan.mids[k], Agent.HUMAN, ar), (result, k))",
+        "self._put((plan.states[k], Agent.HUMAN, ar), (result, k))",
+        planner_gate(),
+    ),
+    Bug(
+        "fresh29 planner: a suffix's human-turn entry keyed with no robot action under way (served to queries "
+        "that name none)",
+        "agents/planner/planner.py",
+        "(plan.mids[k], Agent.HUMAN, ar)",
+        "(plan.mids[k], Agent.HUMAN, NO_ACTION)",
+        planner_gate(),
+    ),
+    Bug(
+        "fresh29 planner bound: the offered object's status swapped (a human's offer read as the robot's)",
+        "agents/planner/space.py",
+        "status = d.human_offer if by == 1 else d.robot_offer",
+        "status = d.human_offer if by == 0 else d.robot_offer",
+        gate("planner_bound"),
+    ),
+)
+"""Round 29, written blind (from the sources and the earlier rounds' bugs in these files, not the
+tests) in the planner code of its last two changes: the exact sums read back with ``struct``,
+the successors per kind of step, the search's path with its states, ``build_plan`` with
+``replayed``, the suffix cache keyed by ``Plan.mids``, and the bound's sums."""
+
 ALL = (
     BUGS
     + FRESH
@@ -3717,6 +3831,7 @@ ALL = (
     + FRESH26
     + FRESH27
     + FRESH28
+    + FRESH29
 )
 
 
