@@ -3801,6 +3801,116 @@ tests) in the planner code of its last two changes: the exact sums read back wit
 the successors per kind of step, the search's path with its states, ``build_plan`` with
 ``replayed``, the suffix cache keyed by ``Plan.mids``, and the bound's sums."""
 
+
+FRESH30 = (
+    Bug(
+        "fresh30 meta cost: a zero cost (habit, planner base or per node) refused as negative",
+        "agents/meta/cost.py",
+        "            if value < 0:",
+        "            if value <= 0:",
+        gate("meta_cost"),
+    ),
+    Bug(
+        "fresh30 entropy: the tie test without abs (a sharper habit played only half the time)",
+        "agents/meta/entropy.py",
+        "if abs(h_habit - h_planner) <= self.tie_tolerance:",
+        "if h_habit - h_planner <= self.tie_tolerance:",
+        gate("entropy"),
+    ),
+    Bug(
+        "fresh30 entropy and cost: the planner's per-state cost filtered from the habit's cost",
+        "agents/meta/entropy_cost.py",
+        "self._filter(self._planner_cost, habit.key, plan.cost)",
+        "self._filter(self._planner_cost, habit.key, habit.cost)",
+        gate("entropy_cost"),
+    ),
+    Bug(
+        "fresh30 learning state: a threshold of 0 accepted (the habit never acts, no refusal)",
+        "agents/meta/learning_state.py",
+        'check_positive("learning_state.threshold", threshold, allow_zero=False)',
+        'check_positive("learning_state.threshold", threshold)',
+        gate("learning_state"),
+    ),
+    Bug(
+        "fresh30 vpi: the average reward never decays (R summed, not averaged)",
+        "agents/meta/vpi.py",
+        "self.reward_rate += self.rate_step * (float(reward) - self.reward_rate)",
+        "self.reward_rate += self.rate_step * float(reward)",
+        gate("vpi"),
+    ),
+    Bug(
+        "fresh30 atomic: a file under a missing folder two levels down not written (parents not created)",
+        "hg_marl/core/atomic.py",
+        "path.parent.mkdir(parents=True, exist_ok=True)",
+        "path.parent.mkdir(exist_ok=True)",
+        gate("atomic"),
+    ),
+    Bug(
+        "fresh30 batch rules: a take of the partner's offer feasible with the hand full",
+        "hg_marl/core/batch.py",
+        "offered = free & (b.offer_by == 1 - agent)",
+        "offered = b.offer_by == 1 - agent",
+        gate("batch_rules"),
+    ),
+    Bug(
+        "fresh30 registry: a constructor's TypeError escapes raw, not as the registry's error",
+        "hg_marl/core/registry.py",
+        "except (TypeError, ValueError) as exc:",
+        "except ValueError as exc:",
+        gate("registry"),
+    ),
+    Bug(
+        "fresh30 scenario file: a layout group with as many objects as its spots refused",
+        "hg_marl/core/scenario_file.py",
+        "if not 0 < count <= len(set(pool)):",
+        "if not 0 < count < len(set(pool)):",
+        gate("scenario_file"),
+    ),
+    Bug(
+        "fresh30 scenario generated: a reach set never holds every robot location (one location: no scenario)",
+        "hg_marl/core/scenario_generated.py",
+        "rng.integers(1, locations + 1)",
+        "rng.integers(1, locations)",
+        gate("scenario_generated"),
+    ),
+    Bug(
+        "fresh30 scenario model: layouts counted times every robot location, not the start candidates",
+        "hg_marl/core/scenario_model.py",
+        "count, left = len(scenario.robot_start), scenario.n_objects",
+        "count, left = len(scenario.robot_locations), scenario.n_objects",
+        gate("scenario_model"),
+    ),
+    Bug(
+        "fresh30 limits: the largest seed value one past int64 (seed 2**63 accepted)",
+        "training/limits.py",
+        "MAX_SEED_VALUE = 2**63 - 1",
+        "MAX_SEED_VALUE = 2**63",
+        gate("limits"),
+    ),
+    Bug(
+        "fresh30 outputs: an existing output file emptied by the check (opened with O_TRUNC, not O_APPEND)",
+        "training/outputs.py",
+        "os.O_WRONLY | os.O_APPEND",
+        "os.O_WRONLY | os.O_TRUNC",
+        gate("outputs"),
+    ),
+    Bug(
+        "fresh30 server limits: a body of exactly max_bytes refused with 413",
+        "training/play/server_limits.py",
+        "if size > max_bytes:",
+        "if size >= max_bytes:",
+        gate("server_limits"),
+    ),
+)
+"""Round 30, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in fourteen gated modules of the early rounds: the meta-controller's cost model and criteria
+(entropy, entropy and cost, learning state, VPI), the atomic writes, the batched rules, the
+registry, the scenario file, generator and model, the count limits, the output check and the
+play server's limits."""
+ROUND30_TESTS = "tests/training/test_pinned_round30.py"
+"""The values round 30's missed bugs changed, pinned after the round: every round-30 bug runs them too."""
+FRESH30 = pinned_after(FRESH30, ROUND30_TESTS)
+
 ALL = (
     BUGS
     + FRESH
@@ -3832,6 +3942,7 @@ ALL = (
     + FRESH27
     + FRESH28
     + FRESH29
+    + FRESH30
 )
 
 
