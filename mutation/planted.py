@@ -3911,6 +3911,117 @@ ROUND30_TESTS = "tests/training/test_pinned_round30.py"
 """The values round 30's missed bugs changed, pinned after the round: every round-30 bug runs them too."""
 FRESH30 = pinned_after(FRESH30, ROUND30_TESTS)
 
+FRESH31 = (
+    Bug(
+        "fresh31 progress: a spell of patience begins one quiet turn late (quiet > P, not >= P)",
+        "agents/progress.py",
+        "elif self.quiet >= (PATIENCE_AGAIN if self.answered else PATIENCE_AFTER):",
+        "elif self.quiet > (PATIENCE_AGAIN if self.answered else PATIENCE_AFTER):",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh31 partner model: the partner's answer with action 0 never counted (read as no answer)",
+        "agents/partner_model.py",
+        "if previous is None or human_action < 0 or turn.reward > 0:",
+        "if previous is None or human_action <= 0 or turn.reward > 0:",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh31 belief: a probe's seconds limit taken from the best action's unnormalised mixed seconds",
+        "agents/robots/belief.py",
+        "limit = mixed[best] / total + self.probe",
+        "limit = mixed[best] + self.probe",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh31 memory robot: the history tracker built with the default cap, not the model file's",
+        "agents/robots/memory.py",
+        "HistoryTracker(world, self.history, 1, self.cap)",
+        "HistoryTracker(world, self.history)",
+        gate("memory_robot"),
+    ),
+    Bug(
+        "fresh31 family-out: fo_after_waits keeps only two robot moves, so it never sees a pause and never takes",
+        "agents/humans/family_out.py",
+        "self.robot_moves = [*self.robot_moves[-2:], turn.last_actions[0]]",
+        "self.robot_moves = [*self.robot_moves[-1:], turn.last_actions[0]]",
+        gate("family_out"),
+    ),
+    Bug(
+        "fresh31 compiled robot: stall_after=0 not refused as a CompileError (the guard's ValueError escapes)",
+        "agents/compiled_robot.py",
+        "if stall_after < 1:",
+        "if stall_after < 0:",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh31 member models: a reset on another scenario keeps the members' one-step models of the old world",
+        "agents/member_models.py",
+        "            self._results = [None] * len(self.specs)\n            self._models = [None] * len(self.specs)\n",
+        "            self._results = [None] * len(self.specs)\n",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh31 content: a model named by its .npz keyed by the weights' bytes only, not its header's",
+        "agents/content.py",
+        'path.suffix in ("", ".npz")',
+        'path.suffix == ""',
+        gate("content"),
+    ),
+    Bug(
+        "fresh31 history: in next-step autoreset the tables that just ended are reset at once (the final "
+        "observation loses its last cycle, the new episode keeps the reset step's)",
+        "hg_marl/envs/history.py",
+        "self.tracker.reset(np.flatnonzero(self._ended))",
+        "self.tracker.reset(np.flatnonzero(ended))",
+        gate("history"),
+    ),
+    Bug(
+        "fresh31 cycle: the batched robot's idle time is the cycle less the human's action, not its own",
+        "hg_marl/core/cycle.py",
+        "np.where(waited[0], length, length - durations[0])",
+        "np.where(waited[0], length, length - durations[1])",
+        gate("cycle"),
+    ),
+    Bug(
+        "fresh31 stalls: every (human, scenario) cell counted as solvable, those where no robot solved a task too",
+        "training/stalls.py",
+        'solvable = {(r["human"], r["scenario"]) for r in rows if r["tasks"] > 0}',
+        'solvable = {(r["human"], r["scenario"]) for r in rows if r["tasks"] >= 0}',
+        gate("stalls"),
+    ),
+    Bug(
+        "fresh31 adaptation: the rate curve counts every logged decision as a completion (reward >= 0)",
+        "training/adaptation.py",
+        'done = np.sort(log.loc[log["reward"] > 0, "time"].to_numpy(dtype=float))',
+        'done = np.sort(log.loc[log["reward"] >= 0, "time"].to_numpy(dtype=float))',
+        gate("adaptation"),
+    ),
+    Bug(
+        "fresh31 switching: the difference from the baseline taken as the baseline's tasks minus the robot's",
+        "training/switching.py",
+        "diff = [a - b for a, b in zip(tasks[robot], tasks[config.baseline], strict=True)]",
+        "diff = [b - a for a, b in zip(tasks[robot], tasks[config.baseline], strict=True)]",
+        gate("switching"),
+    ),
+    Bug(
+        "fresh31 heldout curve: an oracle that solves nothing (rate 0) divides by zero instead of an empty BR-Prox",
+        "training/baselines/heldout_curve.py",
+        "prox = min(1.0, rate / best) if best else None",
+        "prox = min(1.0, rate / best) if best is not None else None",
+        gate("heldout_curve"),
+    ),
+)
+"""Round 31, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in fourteen gated modules the earlier rounds planted in (up to round 26): the progress guard, the
+learned partner model, the belief robot, the memory robot, the family-out partners, the compiled
+robot, the member models, the content keys, the history features, the cycle, the stall report, the
+adaptation and switching studies and the held-out curve."""
+ROUND31_TESTS = "tests/training/test_pinned_round31.py"
+"""The values round 31's missed bugs changed, pinned after the round: every round-31 bug runs them too."""
+FRESH31 = pinned_after(FRESH31, ROUND31_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -3943,6 +4054,7 @@ ALL = (
     + FRESH28
     + FRESH29
     + FRESH30
+    + FRESH31
 )
 
 
