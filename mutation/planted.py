@@ -4022,6 +4022,197 @@ ROUND31_TESTS = "tests/training/test_pinned_round31.py"
 FRESH31 = pinned_after(FRESH31, ROUND31_TESTS)
 
 
+FRESH32 = (
+    Bug(
+        "fresh32 play web: a POST whose Content-Length is exactly the body limit refused as too large",
+        "training/play/web.py",
+        "or int(length) > MAX_BODY):",
+        "or int(length) >= MAX_BODY):",
+        (
+            "tests/play/test_web_guard.py",
+            "tests/play/test_session.py",
+            "tests/play/test_render.py",
+            "tests/play/test_server_limits.py",
+            "tests/play/test_pinned_server_limits_gate.py",
+            "tests/play/test_explain.py",
+        ),
+    ),
+    Bug(
+        "fresh32 train command: an interrupted sb3 run exits 1, not 130",
+        "training/commands/train.py",
+        "raise typer.Exit(130)",
+        "raise typer.Exit(1)",
+        (
+            "tests/training/test_train_cli.py",
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_checkpoints.py",
+            "tests/training/test_baselines.py",
+        ),
+    ),
+    Bug(
+        "fresh32 ppo batched: a discount gamma of 0 accepted (the check is 0 <= gamma, not 0 < gamma)",
+        "training/baselines/ppo_batched.py",
+        "if not 0 < self.gamma <= 1 or",
+        "if not 0 <= self.gamma <= 1 or",
+        (
+            "tests/training/test_ppo_batched.py",
+            "tests/training/test_train_cli.py",
+            "tests/training/test_cli_errors.py",
+        ),
+    ),
+    Bug(
+        "fresh32 callbacks: the first periodic event is due at the training's start step, not one period later",
+        "training/baselines/callbacks.py",
+        "    def _on_training_start(self) -> None:\n"
+        "        self._next = (self.num_timesteps // self.freq + 1) * self.freq",
+        "    def _on_training_start(self) -> None:\n        self._next = (self.num_timesteps // self.freq) * self.freq",
+        (
+            "tests/training/test_checkpoints.py",
+            "tests/training/test_baselines.py",
+            "tests/training/test_train_cli.py",
+            "tests/training/test_sb3_writes_only_out.py",
+        ),
+    ),
+    Bug(
+        "fresh32 errors: check_finite(positive=True) accepts 0 (number < 0, not <= 0)",
+        "hg_marl/core/errors.py",
+        "if positive and number <= 0:",
+        "if positive and number < 0:",
+        (
+            "tests/training/test_cli_errors.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/fuzz/test_bounds.py",
+            "tests/core/test_scenario_validation.py",
+            "tests/agents/test_belief_refusals.py",
+            "tests/training/test_store_inputs.py",
+        ),
+    ),
+    Bug(
+        "fresh32 python model: a cycle's seconds taken as the shorter of the robot's and the human's actions",
+        "agents/models/python_model.py",
+        "self.t_tau.append(duration if duration > d_human else d_human)",
+        "self.t_tau.append(duration if duration < d_human else d_human)",
+        (
+            "tests/agents/test_models.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_pinned_oracle_gate.py",
+            "tests/agents/test_pinned_builder_gate.py",
+            "tests/agents/test_belief.py",
+            "tests/agents/test_pinned_model_solve_gate.py",
+        ),
+    ),
+    Bug(
+        "fresh32 bc: a table fit breaks ties towards the largest action index, not the smallest",
+        "training/baselines/bc.py",
+        "return {key: min(c, key=lambda a: (-c[a], a)) for key, c in counts.items()}",
+        "return {key: max(c, key=lambda a: (c[a], a)) for key, c in counts.items()}",
+        (
+            "tests/training/test_baselines.py",
+            "tests/play/test_traces.py",
+            "tests/training/test_train_cli.py",
+            "tests/agents/test_humans.py",
+        ),
+    ),
+    Bug(
+        "fresh32 sb3 robot: the flat observation puts the mask before the facts",
+        "agents/robots/sb3.py",
+        "return np.concatenate([facts, mask])",
+        "return np.concatenate([mask, facts])",
+        (
+            "tests/agents/test_robots.py",
+            "tests/training/test_baselines.py",
+            "tests/agents/test_pinned_model_sb3_gate.py",
+            "tests/agents/test_views.py",
+            "tests/training/test_checkpoints.py",
+        ),
+    ),
+    Bug(
+        "fresh32 meta base: the planner's distribution gives its action 1 - N x eps, not 1 - (N - 1) x eps",
+        "agents/meta/base.py",
+        "p[action] = 1.0 - (n_actions - 1) * eps",
+        "p[action] = 1.0 - n_actions * eps",
+        (
+            "tests/agents/test_meta.py",
+            "tests/agents/test_meta_exact.py",
+            "tests/agents/test_habit.py",
+            "tests/agents/test_habit_sharing.py",
+        ),
+    ),
+    Bug(
+        "fresh32 planner models: a human model with p_idle 1 accepted (the range is [0, 1], not [0, 1))",
+        "agents/planner/models.py",
+        "if not 0.0 <= self.p_idle < 1.0:",
+        "if not 0.0 <= self.p_idle <= 1.0:",
+        (
+            "tests/agents/test_planner.py",
+            "tests/agents/test_planner_behaviour.py",
+            "tests/agents/test_planner_hand.py",
+            "tests/agents/test_planner_pinned.py",
+            "tests/agents/test_planner_reference.py",
+            "tests/agents/test_humans.py",
+        ),
+    ),
+    Bug(
+        "fresh32 adapters: a truncated scripted seat still decides and sees a one-hot mask",
+        "agents/adapters.py",
+        "if self.terminations.get(agent, False) or self.truncations.get(agent, False):",
+        "if self.terminations.get(agent, False):",
+        (
+            "tests/agents/test_adapters.py",
+            "tests/env/test_readme_libraries.py",
+            "tests/env/test_wrappers.py",
+        ),
+    ),
+    Bug(
+        "fresh32 sb3 limits: a PPO batch_size of 1 accepted (the lower bound is 1, not 2)",
+        "agents/sb3_limits.py",
+        '"batch_size": (_INT, 2, 1_000_000),',
+        '"batch_size": (_INT, 1, 1_000_000),',
+        (
+            "tests/training/test_baselines.py",
+            "tests/training/test_cli_errors.py",
+            "tests/agents/test_pinned_model_sb3_gate.py",
+            "tests/agents/test_model_file.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+        ),
+    ),
+    Bug(
+        "fresh32 policy: an outside actor's fallback decision names its class, not its own name",
+        "hg_marl/policy.py",
+        'name = str(getattr(actor, "name", type(actor).__name__))',
+        "name = str(type(actor).__name__)",
+        (
+            "tests/agents/test_robots.py",
+            "tests/training/test_runner.py",
+            "tests/agents/test_humans.py",
+            "tests/env/test_info_structure.py",
+            "tests/agents/test_views.py",
+        ),
+    ),
+    Bug(
+        "fresh32 model file: activation not re-exported, so an --hp activation_fn fails with an ImportError",
+        "agents/model_file.py",
+        "    activation,\n    algo_class,\n",
+        "    algo_class,\n",
+        (
+            "tests/agents/test_model_file.py",
+            "tests/agents/test_pinned_model_format_gate.py",
+            "tests/agents/test_pinned_model_sb3_gate.py",
+            "tests/training/test_baselines.py",
+            "tests/training/test_checkpoints.py",
+        ),
+    ),
+)
+"""Round 32, written blind (from the sources only, not the tests) in fourteen modules no earlier round
+planted in, none with a modules.toml entry (tests chosen by file name): the play page, the train
+command, the batched PPO, the SB3 callbacks, the error checks, the Python reference model, behaviour
+cloning, the sb3 robot, the meta-controller's base, the planner's human models, the library adapters,
+the SB3 limits, the actor protocol and the model file's re-exports."""
+ROUND32_TESTS = "tests/training/test_pinned_round32.py"
+"""The values round 32's missed bugs changed, pinned after the round: every round-32 bug runs them too."""
+FRESH32 = pinned_after(FRESH32, ROUND32_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -4055,6 +4246,7 @@ ALL = (
     + FRESH29
     + FRESH30
     + FRESH31
+    + FRESH32
 )
 
 
