@@ -18,30 +18,13 @@ from hg_marl.agents.memory_numpy import MAX_HIDDEN, NumpyMemoryPolicy, check_mem
 from hg_marl.agents.model_file import ModelFile
 from hg_marl.core.errors import ModelFileError
 from hg_marl.envs.history import history_size
+from tests.memory_arrays import memory_arrays
 
 FACTS, ACTIONS = ["f0", "f1", "f2"], ["a0", "a1"]
 
 
 def _arrays(hidden: int, obs: int, recurrent: bool, fill: float = 0.0) -> dict[str, np.ndarray]:
-    h, a = hidden, len(ACTIONS)
-    shapes = {
-        "encoder.0.weight": (h, obs),
-        "encoder.0.bias": (h,),
-        "encoder.2.weight": (h, h),
-        "encoder.2.bias": (h,),
-        "actor.weight": (a, h),
-        "actor.bias": (a,),
-        "critic.weight": (1, h),
-        "critic.bias": (1,),
-    }
-    if recurrent:
-        shapes |= {
-            "gru.weight_ih": (3 * h, h),
-            "gru.weight_hh": (3 * h, h),
-            "gru.bias_ih": (3 * h,),
-            "gru.bias_hh": (3 * h,),
-        }
-    return {k: np.full(s, fill) for k, s in shapes.items()}
+    return memory_arrays(hidden, obs, len(ACTIONS), recurrent, fill)
 
 
 def _file(**fields: Any) -> ModelFile:

@@ -28,23 +28,9 @@ import pytest
 
 from hg_marl.agents.content import path_content
 from hg_marl.core import Agent, Kind, World
+from tests.memory_arrays import memory_arrays
 
 # --- agents/robots/memory.py ---
-
-
-def _memory_arrays(obs_size: int, n_actions: int, hidden: int) -> dict[str, np.ndarray]:
-    """A feed-forward ``memory`` net's weights (``MemoryNet(..., recurrent=False)``'s names), all zero."""
-    shapes = {
-        "encoder.0.weight": (hidden, obs_size),
-        "encoder.0.bias": (hidden,),
-        "encoder.2.weight": (hidden, hidden),
-        "encoder.2.bias": (hidden,),
-        "actor.weight": (n_actions, hidden),
-        "actor.bias": (n_actions,),
-        "critic.weight": (1, hidden),
-        "critic.bias": (1,),
-    }
-    return {name: np.zeros(shape, dtype=np.float32) for name, shape in shapes.items()}
 
 
 def test_a_memory_file_with_history_cap_4_plays_with_its_own_cap(tmp_path: Path) -> None:
@@ -66,7 +52,9 @@ def test_a_memory_file_with_history_cap_4_plays_with_its_own_cap(tmp_path: Path)
         "history": 2,
         "history_cap": 4,
     }
-    path = save_model_file(tmp_path / "model.json", header, _memory_arrays(obs_size, world.n_actions(Agent.ROBOT), 6))
+    path = save_model_file(
+        tmp_path / "model.json", header, memory_arrays(6, obs_size, world.n_actions(Agent.ROBOT), recurrent=False)
+    )
     robot = MemoryRobot(path=path, unstall=0)
     env = raw_env(scenario="paper2015", continuing=True, max_cycles=None)
     env.reset(seed=0)
