@@ -4212,6 +4212,183 @@ ROUND32_TESTS = "tests/training/test_pinned_round32.py"
 """The values round 32's missed bugs changed, pinned after the round: every round-32 bug runs them too."""
 FRESH32 = pinned_after(FRESH32, ROUND32_TESTS)
 
+FRESH33 = (
+    Bug(
+        "fresh33 train: a checkpoint frequency already a whole number of rollouts rounded up one rollout more",
+        "training/baselines/train.py",
+        "return -(-freq // rollout) * rollout",
+        "return (freq // rollout + 1) * rollout",
+        (
+            "tests/training/test_baselines.py",
+            "tests/training/test_checkpoints.py",
+            "tests/training/test_train_cli.py",
+            "tests/training/test_sb3_writes_only_out.py",
+            "tests/training/test_cli_errors.py",
+        ),
+    ),
+    Bug(
+        "fresh33 envs: an episode length of one cycle refused (max_cycles <= 1, not < 1)",
+        "training/baselines/envs.py",
+        "if self.max_cycles < 1:",
+        "if self.max_cycles <= 1:",
+        (
+            "tests/training/test_baselines.py",
+            "tests/training/test_train_cli.py",
+            "tests/agents/test_views.py",
+            "tests/training/test_checkpoints.py",
+            "tests/training/test_cli_errors.py",
+        ),
+    ),
+    Bug(
+        "fresh33 convert: the old metadata's algorithm overrides --algo",
+        "training/baselines/convert.py",
+        'algo = algo or old.get("algo")',
+        'algo = old.get("algo") or algo',
+        (
+            "tests/agents/test_model_file.py",
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_baselines.py",
+            "tests/agents/test_pinned_model_sb3_gate.py",
+        ),
+    ),
+    Bug(
+        "fresh33 types: an event's place written only when it also names an object",
+        "hg_marl/core/types.py",
+        "        if self.place:\n",
+        "        if self.obj and self.place:\n",
+        (
+            "tests/core/test_rules.py",
+            "tests/core/test_table.py",
+            "tests/core/test_cycle.py",
+            "tests/env/test_info_structure.py",
+            "tests/env/test_env.py",
+            "tests/core/test_properties.py",
+        ),
+    ),
+    Bug(
+        "fresh33 svg: an object in the robot's hand labelled as in the human's and the reverse",
+        "training/play/svg.py",
+        'return "hand:robot" if place == world.hand[Agent.ROBOT] else "hand:human"',
+        'return "hand:robot" if place == world.hand[Agent.HUMAN] else "hand:human"',
+        (
+            "tests/play/test_render.py",
+            "tests/play/test_session.py",
+            "tests/play/test_explain.py",
+            "tests/play/test_web_guard.py",
+            "tests/play/test_traces.py",
+        ),
+    ),
+    Bug(
+        "fresh33 video: the recorder keeps one frame more than max_frames",
+        "training/video.py",
+        "if len(self.frames) >= self.max_frames:",
+        "if len(self.frames) > self.max_frames:",
+        (
+            "tests/play/test_render.py",
+            "tests/play/test_traces.py",
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_runner.py",
+        ),
+    ),
+    Bug(
+        "fresh33 compare command: the evaluation seeds start at 101, not 100",
+        "training/commands/compare.py",
+        "eval_seeds=tuple(range(100, 100 + eval_seeds)),",
+        "eval_seeds=tuple(range(101, 101 + eval_seeds)),",
+        (
+            "tests/training/test_comparison.py",
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_baselines.py",
+            "tests/training/test_pinned_defaults.py",
+        ),
+    ),
+    Bug(
+        "fresh33 evaluate command: --robots and --humans narrow each other's list",
+        "training/commands/evaluate.py",
+        'seeds, name_list(robots, "--robots"), name_list(humans, "--humans"),',
+        'seeds, name_list(humans, "--humans"), name_list(robots, "--robots"),',
+        (
+            "tests/training/test_evaluate.py",
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_study_population.py",
+            "tests/training/test_aggregate.py",
+        ),
+    ),
+    Bug(
+        "fresh33 replay command: a recording with zero rewards not compared",
+        "training/commands/replay.py",
+        "if result.recorded_rewards is not None:",
+        "if result.recorded_rewards:",
+        (
+            "tests/play/test_traces.py",
+            "tests/training/test_cli_errors.py",
+            "tests/play/test_session.py",
+        ),
+    ),
+    Bug(
+        "fresh33 batched learned: the human's observation carries the robot's mask",
+        "agents/batched_learned.py",
+        "self.rules.masks(batch, Agent.HUMAN).astype(np.int8)",
+        "self.rules.masks(batch, Agent.ROBOT).astype(np.int8)",
+        (
+            "tests/env/test_batched_learned.py",
+            "tests/env/test_batched.py",
+            "tests/agents/test_humans.py",
+            "tests/env/test_pinned_batched.py",
+        ),
+    ),
+    Bug(
+        "fresh33 canonical view: the two action maps returned swapped",
+        "agents/robots/canonical.py",
+        "return self.world.facts(canonical), maps[0], maps[1]",
+        "return self.world.facts(canonical), maps[1], maps[0]",
+        (
+            "tests/agents/test_habit.py",
+            "tests/agents/test_habit_sharing.py",
+            "tests/agents/test_robots.py",
+            "tests/env/test_compiled_robot_canonical.py",
+        ),
+    ),
+    Bug(
+        "fresh33 partner specs: a single partner name split into its letters",
+        "agents/partner_specs.py",
+        "if isinstance(partner, str) or not isinstance(partner, Sequence):",
+        "if not isinstance(partner, Sequence):",
+        (
+            "tests/agents/test_partner.py",
+            "tests/agents/test_partnering.py",
+            "tests/agents/test_population.py",
+            "tests/agents/test_views.py",
+        ),
+    ),
+    Bug(
+        "fresh33 random human: the uniform-noise draw never picks the last action",
+        "agents/humans/random_human.py",
+        "list(range(world.n_actions(agent)))",
+        "list(range(world.n_actions(agent) - 1))",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_population.py",
+        ),
+    ),
+    Bug(
+        "fresh33 coin: the planner wins with probability 1 - p",
+        "agents/meta/coin.py",
+        "return bool(self.rng.random() < self.p)",
+        "return bool(self.rng.random() > self.p)",
+        ("tests/agents/test_meta.py", "tests/agents/test_meta_exact.py", "tests/agents/test_robots.py"),
+    ),
+)
+"""Round 33, written blind (from the sources only, not the tests) in fourteen modules no earlier round
+planted in, none with a modules.toml entry (tests chosen by file name): the SB3 training script, its
+environments, the zip converter, the core's types, the play page's drawing, the video recorder, the
+compare, evaluate and replay commands, the batched learned human, the habit's canonical view, the
+partner specs, the random human and the coin-flip criterion."""
+ROUND33_TESTS = "tests/training/test_pinned_round33.py"
+"""The values round 33's missed bugs changed, pinned after the round: every round-33 bug runs them too."""
+FRESH33 = pinned_after(FRESH33, ROUND33_TESTS)
+
 
 ALL = (
     BUGS
@@ -4247,6 +4424,7 @@ ALL = (
     + FRESH30
     + FRESH31
     + FRESH32
+    + FRESH33
 )
 
 
