@@ -96,20 +96,20 @@ class ExactSums:
         if obj >= 0:
             values = row[obj]
             total += values[status] - values[where[obj]]
-        if self.fields and self.scale and total < self.flag:  # :meth:`_decode`, inlined (the search's hot path)
-            s0, s1, s2, s3, s4 = _FIVE.unpack(total.to_bytes(40, "little"))
-            scale = self.scale  # an int times a float rounds the int to a float first, as ``float()`` does
-            return (s0 * scale, s1 * scale, s2 * scale, s3 * scale, s4 * scale)
         return self._decode(total)
 
     def _decode(self, total: int) -> tuple[float, ...] | None:
         """The packed fields as floats: each field's integer rounded to a float (as ``fsum``
-        rounds), times ``2**exp``: a product with a power of two that is itself a float is
-        rounded once, correctly, as ``ldexp`` rounds; ``ldexp`` where the power underflows to 0."""
+        rounds), times ``2**exp``. Five 64-bit fields are read with one ``struct`` call and
+        multiplied by ``2**exp``: a product with a power of two that is itself a float is
+        rounded once, correctly, as ``ldexp`` rounds (an int times a float rounds the int to a
+        float first, as ``float()`` does); other layouts, or a power that underflows to 0, use
+        ``ldexp``."""
         if total >= self.flag:
             return None
-        mask, scale = self.mask, self.scale
-        if scale:
-            return tuple([float((total >> s) & mask) * scale for s in self.shifts])
-        exp = self.exp
+        scale = self.scale
+        if self.fields and scale:
+            s0, s1, s2, s3, s4 = _FIVE.unpack(total.to_bytes(40, "little"))
+            return (s0 * scale, s1 * scale, s2 * scale, s3 * scale, s4 * scale)
+        mask, exp = self.mask, self.exp
         return tuple([ldexp(float((total >> s) & mask), exp) for s in self.shifts])
