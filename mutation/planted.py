@@ -4389,6 +4389,184 @@ ROUND33_TESTS = "tests/training/test_pinned_round33.py"
 """The values round 33's missed bugs changed, pinned after the round: every round-33 bug runs them too."""
 FRESH33 = pinned_after(FRESH33, ROUND33_TESTS)
 
+FRESH34 = (
+    Bug(
+        "fresh34 tui: the 'Task solved!' line gives the first task's time, not the latest's",
+        "training/play/tui.py",
+        "at t = {session.solved_at[-1]:.1f} s.",
+        "at t = {session.solved_at[0]:.1f} s.",
+        (
+            "tests/play/test_session.py",
+            "tests/play/test_render.py",
+            "tests/play/test_explain.py",
+            "tests/play/test_traces.py",
+            "tests/play/test_readme_play.py",
+        ),
+    ),
+    Bug(
+        "fresh34 play command: --no-browser opens the browser and the default does not",
+        "training/commands/play.py",
+        "server.run(open_browser=not no_browser)",
+        "server.run(open_browser=no_browser)",
+        (
+            "tests/play/test_session.py",
+            "tests/play/test_traces.py",
+            "tests/play/test_web_guard.py",
+            "tests/play/test_readme_play.py",
+            "tests/training/test_cli_errors.py",
+            "tests/training/test_pinned_promises_e.py",
+        ),
+    ),
+    Bug(
+        "fresh34 robots registry: robot_params of an unknown name raises a bare KeyError, not a RobotError",
+        "agents/robots/registry.py",
+        "return tuple(ROBOTS.lookup(name).defaults())",
+        "return tuple(ROBOTS[name].defaults())",
+        (
+            "tests/core/test_registry.py",
+            "tests/agents/test_robots.py",
+            "tests/agents/test_defaults.py",
+            "tests/training/test_cli_errors.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+        ),
+    ),
+    Bug(
+        "fresh34 criteria registry: learning_state left out, so it is an unknown criterion",
+        "agents/meta/registry.py",
+        "        VPICriterion,\n        LearningStateCriterion,\n",
+        "        VPICriterion,\n",
+        (
+            "tests/core/test_registry.py",
+            "tests/agents/test_meta.py",
+            "tests/agents/test_robots.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/play/test_explain.py",
+        ),
+    ),
+    Bug(
+        "fresh34 convert command: --seat and --observation passed to each other's field",
+        "training/commands/convert.py",
+        "seat=seat, observation=observation",
+        "seat=observation, observation=seat",
+        ("tests/agents/test_model_file.py", "tests/training/test_cli_errors.py", "tests/fuzz/test_outputs.py"),
+    ),
+    Bug(
+        "fresh34 registration: make_vec of the robot's view builds the human seat's vector env",
+        "hg_marl/registration.py",
+        'vector_entry_point="hg_marl.agents.vector_envs:robot_vector_env",',
+        'vector_entry_point="hg_marl.agents.vector_envs:human_vector_env",',
+        (
+            "tests/env/test_registration.py",
+            "tests/agents/test_views.py",
+            "tests/core/test_layers.py",
+            "tests/env/test_batched.py",
+        ),
+    ),
+    Bug(
+        "fresh34 no_handover: the human hands over what it holds when the robot stands at a handover place",
+        "agents/humans/no_handover.py",
+        "tidy_action(world, state, give=False)",
+        "tidy_action(world, state, give=True)",
+        (
+            "tests/agents/test_humans.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_defaults.py",
+            "tests/play/test_traces.py",
+        ),
+    ),
+    Bug(
+        "fresh34 habit robot: its decisions log a weight amplitude of 0 (Fig. 5 has no habit-alone curve)",
+        "agents/robots/habit.py",
+        "            weight_amplitude=self.habit.weight_amplitude,\n",
+        "",
+        (
+            "tests/agents/test_robots.py",
+            "tests/agents/test_habit.py",
+            "tests/agents/test_habit_sharing.py",
+            "tests/training/test_run_clock.py",
+        ),
+    ),
+    Bug(
+        "fresh34 fixed criteria: the habit-only criterion still asks the planner (its cost charged)",
+        "agents/meta/fixed.py",
+        '        """Never."""\n        return False',
+        '        """Never."""\n        return True',
+        (
+            "tests/agents/test_meta.py",
+            "tests/agents/test_meta_exact.py",
+            "tests/agents/test_robots.py",
+            "tests/training/test_run_clock.py",
+            "tests/training/test_runner.py",
+        ),
+    ),
+    Bug(
+        "fresh34 trace: a second episode's step numbers go on from the first's instead of starting at 0",
+        "agents/humans/trace.py",
+        "        self.episodes += 1\n        self._steps = 0\n",
+        "        self.episodes += 1\n",
+        (
+            "tests/agents/test_trace_validation.py",
+            "tests/fuzz/test_fuzz_inputs.py",
+            "tests/fuzz/test_outputs.py",
+            "tests/fuzz/test_probe.py",
+            "tests/play/test_session.py",
+            "tests/play/test_traces.py",
+        ),
+    ),
+    Bug(
+        "fresh34 plots: Fig. 3's difference panel draws the planner minus each condition (the sign flipped)",
+        "training/plots.py",
+        "diff.plot(grid / 60, means[first] - means[reference], **look[first])",
+        "diff.plot(grid / 60, means[reference] - means[first], **look[first])",
+        (
+            "tests/training/test_figures.py",
+            "tests/training/test_pinned_adaptation.py",
+            "tests/training/test_pinned_heldout_curve_gate.py",
+            "tests/training/test_store_inputs.py",
+            "tests/training/test_switching.py",
+            "tests/env/test_cycle_trace.py",
+        ),
+    ),
+    Bug(
+        "fresh34 gantt: the legend's fifth step code is never spelt out (its second line starts at the sixth)",
+        "agents/planner/gantt.py",
+        "for i in range(4, len(pairs), 5)]",
+        "for i in range(5, len(pairs), 5)]",
+        ("tests/agents/test_planner_tools.py", "tests/training/test_cli_errors.py", "tests/fuzz/test_outputs.py"),
+    ),
+    Bug(
+        "fresh34 humans registry: available_humans lists each parameter as (doc, default), not (default, doc)",
+        "agents/humans/registry.py",
+        "{k: (p.default, p.doc) for k, p in s.params.items()}",
+        "{k: (p.doc, p.default) for k, p in s.params.items()}",
+        (
+            "tests/core/test_registry.py",
+            "tests/agents/test_humans.py",
+            "tests/agents/test_family_out.py",
+            "tests/agents/test_history_free.py",
+            "tests/agents/test_views.py",
+            "tests/training/test_store_inputs.py",
+        ),
+    ),
+    Bug(
+        "fresh34 flat: with mask='info', the infos keep the reset's masks after a step",
+        "hg_marl/wrappers/flat.py",
+        "        super().step(action)\n        self._refresh_infos()",
+        "        super().step(action)",
+        ("tests/env/test_wrappers.py", "tests/core/test_layers.py", "tests/agents/test_adapters.py"),
+    ),
+)
+"""Round 34, written blind (from the sources only, not the tests) in fourteen modules, none with a
+modules.toml entry (tests chosen by file name): nine no earlier round planted in (the terminal play,
+the ``play`` command, the robots' and the criteria's registries, the ``convert`` command, the
+environment ids' registration, the no_handover human, the habit-alone robot and the single-expert
+criteria) and five planted in once (the trace format, the figures, the planner's Gantt chart, the
+humans' registry and the flat wrapper)."""
+ROUND34_TESTS = "tests/training/test_pinned_round34.py"
+"""The values round 34's missed bugs changed, pinned after the round: every round-34 bug runs them too."""
+FRESH34 = pinned_after(FRESH34, ROUND34_TESTS)
+
 
 ALL = (
     BUGS
@@ -4425,6 +4603,7 @@ ALL = (
     + FRESH31
     + FRESH32
     + FRESH33
+    + FRESH34
 )
 
 
