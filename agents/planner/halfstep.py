@@ -126,14 +126,12 @@ def astar(space: Space, root: State, to_move: Agent, robot_part: tuple[float, in
             push(heap, (g2, -g2, len(nodes)))
             new_node((s, node, wait_h, None, 2, 0.0, False))
             continue
-        for ar, s1, d_r, k1, h in robot_edges(s):
-            active = ar != wait_r
-            key = (k1, d_r, active)
+        for ar, s1, d_r, key, h in robot_edges(s):
             if g >= best_h.get(key, inf) - 1e-12:
                 continue
             best_h[key] = g
             push(heap, (g + h, -g, len(nodes)))
-            new_node((s1, node, ar, key, 1, d_r, active))
+            new_node((s1, node, ar, key, 1, d_r, ar != wait_r))
     return SearchOutcome(None, math.inf, expanded, "no plan")
 
 

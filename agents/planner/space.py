@@ -75,6 +75,11 @@ def shared_space(world: World, human_model: HumanModel, weights: CostWeights) ->
     Its caches (candidates, bounds, allowed replies) are pure functions of the state, so
     the robot's planner and the planner-driven humans on the same layout share them
     without changing any answer. A model that is not hashable gets a space of its own.
+
+    A shared space plans on a twin of ``world`` (:func:`_twin`): the world holds the space,
+    and a space holding the world back would make every world that planned a reference
+    cycle, left for the garbage collector (whose passes over the worlds left behind then
+    fall inside later plans) instead of freed when its last user lets it go.
     """
     try:
         key = (human_model, weights)
@@ -84,8 +89,16 @@ def shared_space(world: World, human_model: HumanModel, weights: CostWeights) ->
     per_world: dict[tuple[object, CostWeights], Space] = world.__dict__.setdefault(_SPACES, {})
     space = per_world.get(key)
     if space is None:
-        space = per_world[key] = Space(Domain(world, human_model), weights)
+        space = per_world[key] = Space(Domain(_twin(world), human_model), weights)
     return space
+
+
+def _twin(world: World) -> World:
+    """A :class:`World` sharing every attribute of ``world`` (its rule table, scenario,
+    durations and caches) but not the spaces it holds: the same rules, no way back to them."""
+    twin = object.__new__(type(world))
+    twin.__dict__.update((k, v) for k, v in world.__dict__.items() if k != _SPACES)
+    return twin
 
 
 class RobotEdge(NamedTuple):
@@ -95,7 +108,8 @@ class RobotEdge(NamedTuple):
     state: State
     duration: float
     key: object
-    """Canonical key of the mid-cycle state."""
+    """The human node's key: the mid-cycle state's canonical key with the cycle's robot
+    duration and whether the robot was active (what the cost-to-go depends on)."""
     h: float
     """Bound on the cost-to-go after it (the cycle's robot duration counted)."""
 
@@ -139,10 +153,16 @@ class Space:
             self.object_class
         )
         width = max(world.n_objects, 1).bit_length()
-        self._codes = [[1 << ((code * len(accept) + c) * width) for code in self.place_code] for c in self.object_class]
+        low = 2 + max(len(sc.robot_locations), 1).bit_length()
+        self._codes = [
+            [1 << ((code * len(accept) + c) * width + low) for code in self.place_code] for c in self.object_class
+        ]
         """Per object and place, its term of the canonical key: one bit field per (place code,
         object class), wide enough to count every object without a carry, so the sum over
-        the objects is the multiset of their codes and equal sums are equal multisets."""
+        the objects is the multiset of their codes and equal sums are equal multisets. The
+        fields start above the ``low`` bits that hold ``4 * robot_at + offer_by + 1`` (see
+        :meth:`key`): the key is one integer (hashed faster than a tuple, and not tracked by
+        the garbage collector)."""
         del n_codes
         a = weights.time + weights.human_idle
         b = weights.human_effort - weights.human_idle
@@ -176,6 +196,14 @@ class Space:
         self.steps = Steps(table)
         """The rule table's transitions decoded per action index (the inner loop's)."""
         self._cr = tuple(c for c, _ in self.coefs)
+        wait_r = self.wait[0]
+        cycles: dict[tuple[float, bool], int] = {}
+        self._cycle_code = tuple(
+            cycles.setdefault((spec[3], i != wait_r), len(cycles)) for i, spec in enumerate(table.specs[0])
+        )
+        """Per robot action, a code of its (duration, active): with an integer canonical key
+        ``k``, a human node's key is ``k * len(cycles) + code`` (one integer, no tuple per edge)."""
+        self._n_cycle_codes = len(cycles)
         acts = table.actions
         self.robot_gives = frozenset(i for i, a in enumerate(acts[0]) if a.kind is Kind.GIVE)
         """Robot give indices (an unanswered give is not robot activity, see ``robot_active``)."""
@@ -264,6 +292,8 @@ class Space:
         if out is None:
             base = self.base
             c0, c1, c2, c3, c4 = self._cr
+            code, n_codes, wait_r = self._cycle_code, self._n_cycle_codes, self.wait[0]
+            symmetric = self.symmetric
             out = tuple(
                 [
                     _new(
@@ -272,7 +302,7 @@ class Space:
                             ar,
                             s1,
                             d_r,
-                            key,
+                            key * n_codes + code[ar] if symmetric else (key, d_r, ar != wait_r),
                             base + max(v0 + c0 * d_r, v1 + c1 * d_r, v2 + c2 * d_r, v3 + c3 * d_r, v4 + c4 * d_r),
                         ),
                     )
@@ -366,7 +396,7 @@ class Space:
         """Canonical transposition key: equal for states equal up to object/spot symmetry."""
         if not self.symmetric:
             return state
-        return (sum(map(getitem, self._codes, state.where)), state.robot_at, state.offer_by)
+        return sum(map(getitem, self._codes, state.where)) + 4 * state.robot_at + state.offer_by + 1
 
     # ---- candidates --------------------------------------------------------------
     def candidates(self, state: State, agent: int) -> tuple[int, ...]:

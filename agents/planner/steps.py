@@ -92,8 +92,8 @@ class Steps:
         memo = sums if sums is not None else {}
         missing = memo  # a sentinel no value can be
         out: list[Successor] = []
-        # with ``codes`` the key's multiset is an integer sum (see :meth:`.Space.key`), so a
-        # successor's is the parent's with one object's term replaced
+        # with ``codes`` the key's multiset is an integer sum above its low bits (see
+        # :meth:`.Space.key`), so a successor's is the parent's with one object's term replaced
         parent = sum(map(getitem, codes, where)) if codes is not None else 0
         for a in actions:
             code, o, x, d = rows[a]
@@ -108,7 +108,7 @@ class Steps:
                 s: State = _new(State, (tuple(moved), at, b, ob))
                 if codes is not None:
                     row = codes[o]
-                    key = (parent - row[where[o]] + row[x], at, b)
+                    key = parent - row[where[o]] + row[x] + 4 * at + b + 1
                 else:
                     key = key_of(s)
             else:
@@ -120,7 +120,7 @@ class Steps:
                     if code == GOTO:
                         a2 = goto_obj[where[x]] if x < n else goto_static[x - n]
                 s = _new(State, (where, a2, b, ob))
-                key = (parent, a2, b) if codes is not None else key_of(s)
+                key = parent + 4 * a2 + b + 1 if codes is not None else key_of(s)
             sm = memo.get(key, missing)
             if sm is missing:
                 sm = sums_of(s, key)

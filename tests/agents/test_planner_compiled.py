@@ -157,6 +157,42 @@ def test_canonical_keys_are_equal_exactly_for_states_equal_up_to_symmetry(scenar
 
 
 @pytest.mark.parametrize("scenario", SCENARIOS)
+def test_a_human_nodes_key_is_equal_exactly_for_equal_mid_states_durations_and_activity(scenario: str) -> None:
+    # the search merges two robot moves into one human node when the mid-cycle states are
+    # equal up to symmetry and the robot's part of the cycle lasts as long and is as active
+    world = World(scenario)
+    space = Planner(world).space
+    wait_r = world.n_actions(Agent.ROBOT) - 1
+    seen: dict[object, object] = {}
+    for seed in range(4):
+        for state in walk(world, seed, 30):
+            for edge in space.robot_edges(state):
+                identity = (space.key(edge.state), edge.duration, edge.action != wait_r)
+                assert seen.setdefault(edge.key, identity) == identity, (state, edge)
+    assert len(set(seen.values())) == len(seen) > 20
+
+
+def test_a_world_with_a_planner_is_freed_when_its_last_user_lets_it_go() -> None:
+    # the world holds its planners' shared space; the space must not hold the world back,
+    # or every world that planned would wait for the cycle collector
+    import gc
+    import weakref
+
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        world = World("paper2015")
+        planner = Planner(world)
+        assert planner.plan(world.initial_state(np.random.default_rng(0))).plan is not None
+        alive = weakref.ref(world)
+        del world, planner
+        assert alive() is None
+    finally:
+        if enabled:
+            gc.enable()
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
 def test_the_search_keys_and_sums_successors_as_the_space_does(scenario: str) -> None:
     # twice over the same states: the second pass reads the sums from the memo
     world = World(scenario)
