@@ -345,7 +345,7 @@ def headroom(
         progress: progress bars on stderr.
         jobs: worker processes (0: one per CPU) for the live partners' answers, the policies
             and the rates (:class:`~hg_marl.agents.models.forked.Forked`); the result does not
-            depend on it. The memory budget reads this process; each worker adds its own work.
+            depend on it. The memory budget counts this process and what each worker holds on its own.
         started: when ``max_seconds`` began, on :func:`time.perf_counter`'s scale (default:
             now); the command passes its process's start
             (:func:`~hg_marl.agents.models.budget.process_start`).

@@ -20,6 +20,7 @@ passes one that advances by one per call), and the states budget counts states.
 from __future__ import annotations
 
 import math
+import multiprocessing
 import os
 import signal
 import threading
@@ -35,7 +36,7 @@ computes (and stores) never depends on how loaded the machine was. The commands 
 explicit ``--max-seconds`` (a person waiting at a terminal), and the states and memory
 budgets bound every build."""
 DEFAULT_MEMORY = 4 * 2**30
-"""The default resident memory budget (bytes) of the process during a solve."""
+"""The default resident memory budget (bytes) of the process and its workers during a solve."""
 DEFAULT_STATES = 1_500_000
 """The default states budget of one model."""
 MIN_FREE_BYTES = 512 * 2**20
@@ -67,14 +68,38 @@ class OverBudget(RuntimeError):
 
 
 def rss() -> int:
-    """This process's resident memory in bytes (``/proc/self/statm``; peak ``ru_maxrss`` elsewhere)."""
+    """Resident bytes of this process and of the worker processes it started.
+
+    A computation spread over forked workers (``--jobs``) is one computation: its memory is
+    this process's resident size (``/proc/self/statm``; peak ``ru_maxrss`` elsewhere) plus
+    what each live child holds on its own (:func:`private_bytes`; the pages it still shares
+    with this process copy-on-write are counted once, here).
+    """
     try:
         with open("/proc/self/statm", encoding="ascii") as f:
-            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+            own = int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
     except (OSError, ValueError, IndexError):
         import resource
 
-        return int(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss) * 1024
+        own = int(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss) * 1024
+    return own + sum(private_bytes(child.pid) for child in multiprocessing.active_children() if child.pid)
+
+
+def private_bytes(pid: int) -> int:
+    """The resident bytes process ``pid`` maps alone (``Private_Clean`` + ``Private_Dirty``; 0 if unknown).
+
+    Read from ``/proc/PID/smaps_rollup``: a forked worker's pages that its parent maps too are
+    "shared" there until either writes them.
+    """
+    total = 0
+    try:
+        with open(f"/proc/{pid}/smaps_rollup", encoding="ascii") as f:
+            for line in f:
+                if line.startswith(("Private_Clean:", "Private_Dirty:")):
+                    total += int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        return 0
+    return total
 
 
 def available_bytes() -> int | None:
@@ -95,7 +120,7 @@ class Budget:
 
     Args:
         seconds: wall seconds from ``start``.
-        memory: resident bytes of the process.
+        memory: resident bytes of the process and its workers (:func:`rss`).
         states: model states (a phase reports them with ``states=``).
         subject: how the refusal names the computation (``"the oracle for 'paper2015'"``).
         hint: the advice closing a refusal.

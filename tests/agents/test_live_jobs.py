@@ -139,6 +139,23 @@ def test_cli_jobs_gives_the_same_csv(tmp_path: Path) -> None:
     assert outs[0] == outs[1]
 
 
+def test_cli_jobs_defaults_to_two_workers_where_the_machine_has_two_cpus(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """As ``evaluate --workers`` and ``reproduce --workers``: two where there are two CPUs, else one."""
+    import hg_marl.training.headroom as command_module
+
+    asked: list[int] = []
+
+    def record(*args: object, jobs: int, **kwargs: object) -> None:
+        asked.append(jobs)
+        raise SystemExit(0)
+
+    monkeypatch.setattr(command_module, "write_headroom", record)
+    run_main(["headroom", "--scenario", CROSSING, "--humans", G, "--out", str(tmp_path / "o")])
+    assert asked == [2 if (os.cpu_count() or 1) >= 2 else 1]
+
+
 def test_cli_bad_jobs_is_one_line(tmp_path: Path) -> None:
     code, _, err = run_main(["headroom", "--scenario", CROSSING, "--jobs", "-1", "--out", str(tmp_path / "o")])
     lines = error_lines(err)

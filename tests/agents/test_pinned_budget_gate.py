@@ -9,6 +9,7 @@ machine's floor is 512 MB; the timer is armed for the time left plus 0.05 s (so 
 
 from __future__ import annotations
 
+import multiprocessing
 import re
 import resource
 import signal
@@ -27,6 +28,33 @@ def test_resident_size_is_in_bytes() -> None:
     value = rss()
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
     assert 8 * 2**20 < value <= 2 * peak  # pages are counted a little differently from the peak
+
+
+@pytest.mark.skipif(not LINUX, reason="/proc and fork are Linux's")
+def test_resident_size_counts_what_a_live_worker_holds_on_its_own_and_forgets_it_once_gone() -> None:
+    """A forked worker that writes 64 MB adds at least that to :func:`rss` while it lives, nothing once joined."""
+    ctx = multiprocessing.get_context("fork")
+    ready_r, ready_w = ctx.Pipe(False)
+    stop_r, stop_w = ctx.Pipe(False)
+    block = 64 * 2**20
+
+    def hold() -> None:
+        data = bytearray(b"x") * block  # written, so resident and the worker's own
+        ready_w.send(len(data))
+        stop_r.recv()
+
+    before = rss()
+    worker = ctx.Process(target=hold)
+    worker.start()
+    try:
+        assert ready_r.poll(300) and ready_r.recv() == block
+        during = rss()
+    finally:
+        stop_w.send(None)
+        worker.join()
+    after = rss()
+    assert during - before >= block
+    assert abs(after - before) < 32 * 2**20
 
 
 @pytest.mark.skipif(not LINUX, reason="/proc is Linux's")
