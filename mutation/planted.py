@@ -4567,6 +4567,198 @@ ROUND34_TESTS = "tests/training/test_pinned_round34.py"
 """The values round 34's missed bugs changed, pinned after the round: every round-34 bug runs them too."""
 FRESH34 = pinned_after(FRESH34, ROUND34_TESTS)
 
+FRESH35 = (
+    Bug(
+        "fresh35 learned: a linear_softmax policy's biases are not divided by the temperature",
+        "agents/humans/learned.py",
+        'logits = (self._w @ np.asarray(facts, dtype=np.float64) + self._b) / self.header["temperature"]',
+        'logits = self._w @ np.asarray(facts, dtype=np.float64) / self.header["temperature"] + self._b',
+        (
+            "tests/agents/test_content.py",
+            "tests/agents/test_model_file.py",
+            "tests/env/test_batched.py",
+            "tests/env/test_batched_learned.py",
+            "tests/env/test_pinned_compiled.py",
+            "tests/env/test_pinned_compiled_gate.py",
+            "tests/training/test_baselines.py",
+            "tests/training/test_store_inputs.py",
+        ),
+    ),
+    Bug(
+        "fresh35 robots base: a learning robot built without a learner keeps the last run's habit at reset",
+        "agents/robots/base.py",
+        "if self._given_learner is None:",
+        "if self.learner is None:",
+        (
+            "tests/agents/test_stall.py",
+            "tests/agents/test_habit_sharing.py",
+            "tests/agents/test_robots.py",
+            "tests/env/test_pinned_compiled.py",
+            "tests/env/test_pinned_compiled_gate.py",
+            "tests/env/test_pinned_compiled_robot_gate.py",
+            "tests/training/test_pinned_round18.py",
+        ),
+    ),
+    Bug(
+        "fresh35 backends: a job's charge_decision_time is dropped (a sweep with charging off still charges)",
+        "training/backends.py",
+        "scenario=job.scenario, duration=job.duration, seed=job.seed, charge_decision_time=job.charge_decision_time",
+        "scenario=job.scenario, duration=job.duration, seed=job.seed",
+        (
+            "tests/training/test_ray.py",
+            "tests/training/test_pinned_sweep_gate.py",
+            "tests/training/test_store_inputs.py",
+            "tests/agents/test_content.py",
+            "tests/training/test_runner.py",
+            "tests/training/test_sweep_resume.py",
+            "tests/training/test_evaluate.py",
+            "tests/training/test_pinned_round18.py",
+        ),
+    ),
+    Bug(
+        "fresh35 partner posterior: the default prior shares 1 - prior_cooperative over every type, not the others",
+        "agents/partner.py",
+        "rest = (1.0 - prior_cooperative) / max(len(self.types) - 1, 1)",
+        "rest = (1.0 - prior_cooperative) / len(self.types)",
+        (
+            "tests/agents/test_partner.py",
+            "tests/agents/test_partner_model.py",
+            "tests/agents/test_belief_refusals.py",
+            "tests/agents/test_robots.py",
+            "tests/agents/test_stall.py",
+            "tests/env/test_pinned_compiled.py",
+            "tests/env/test_pinned_compiled_gate.py",
+            "tests/env/test_pinned_compiled_robot_gate.py",
+        ),
+    ),
+    Bug(
+        "fresh35 compare: a cell's key leaves out max_cycles (a changed episode length reuses the old cell)",
+        "training/baselines/compare.py",
+        '        "max_cycles": config.max_cycles,\n',
+        "",
+        ("tests/training/test_ppo_batched.py", "tests/training/test_comparison.py"),
+    ),
+    Bug(
+        "fresh35 population: a file without a name is named by its file name with the .toml, not its stem",
+        "agents/humans/population.py",
+        'name=data.get("name", path.stem),',
+        'name=data.get("name", path.name),',
+        (
+            "tests/agents/test_models.py",
+            "tests/agents/test_population.py",
+            "tests/fuzz/test_bounds.py",
+            "tests/training/test_pinned_headroom.py",
+            "tests/training/test_population_gen.py",
+            "tests/training/test_recipes.py",
+            "tests/training/test_pinned_round22.py",
+        ),
+    ),
+    Bug(
+        "fresh35 paper: the planner share of the last third read over the last two thirds",
+        "training/paper.py",
+        'cut = log["time"].iloc[-1] * 2 / 3',
+        'cut = log["time"].iloc[-1] / 3',
+        ("tests/training/test_figures.py", "tests/training/test_pinned_round14.py"),
+    ),
+    Bug(
+        "fresh35 python model: answers memoised by state only (a cooperative human never sees the robot's action)",
+        "agents/models/python_model.py",
+        "key = (mid, robot_action if self._uses_robot_action else -1)",
+        "key = (mid, -1)",
+        (
+            "tests/agents/test_models.py",
+            "tests/agents/test_humans.py",
+            "tests/agents/test_oracle.py",
+            "tests/agents/test_pinned_oracle_gate.py",
+            "tests/agents/test_pinned_builder_gate.py",
+            "tests/agents/test_belief.py",
+            "tests/agents/test_pinned_model_solve_gate.py",
+            "tests/training/test_pinned_round32.py",
+        ),
+    ),
+    Bug(
+        "fresh35 sb3 robot: decision time charged as the forward pass's wall time, not the habit's constant",
+        "agents/robots/sb3.py",
+        "decision_time=self.cost.habit_cost(wall)",
+        "decision_time=wall",
+        (
+            "tests/agents/test_robots.py",
+            "tests/agents/test_model_file.py",
+            "tests/agents/test_pinned_model_sb3_gate.py",
+            "tests/agents/test_views.py",
+            "tests/training/test_baselines.py",
+            "tests/training/test_checkpoints.py",
+            "tests/training/test_recurrent_ppo_sb3.py",
+            "tests/training/test_pinned_round32.py",
+        ),
+    ),
+    Bug(
+        "fresh35 sb3 vec env: a seed given once seeds every later reset too (each reset deals the same tables)",
+        "hg_marl/wrappers/sb3.py",
+        "        obs, _ = self.env.reset(seed=self._seed)\n        self._seed = None\n",
+        "        obs, _ = self.env.reset(seed=self._seed)\n",
+        ("tests/env/test_batched.py", "tests/agents/test_views.py", "tests/training/test_pinned_round17.py"),
+    ),
+    Bug(
+        "fresh35 humans base: a tidy human holding an object hands it over before throwing it into a bin in reach",
+        "agents/humans/base.py",
+        "options.append(index_of(world, Kind.GIVE, held))",
+        "options.insert(0, index_of(world, Kind.GIVE, held))",
+        (
+            "tests/agents/test_history_free.py",
+            "tests/agents/test_oracle_symmetry.py",
+            "tests/agents/test_pinned_family_out_gate.py",
+            "tests/agents/test_pinned_planted_family_out.py",
+            "tests/agents/test_pinned_promises_d.py",
+            "tests/agents/test_progress_patience.py",
+            "tests/agents/test_humans.py",
+            "tests/agents/test_models.py",
+            "tests/agents/test_oracle.py",
+            "tests/training/test_pinned_round18.py",
+        ),
+    ),
+    Bug(
+        "fresh35 callbacks: an off-policy stop winds the step count back by one step, not one per environment",
+        "training/baselines/callbacks.py",
+        "self.model.num_timesteps -= self.model.n_envs",
+        "self.model.num_timesteps -= 1",
+        (
+            "tests/training/test_checkpoints.py",
+            "tests/training/test_baselines.py",
+            "tests/training/test_train_cli.py",
+            "tests/training/test_sb3_writes_only_out.py",
+            "tests/training/test_pinned_round32.py",
+        ),
+    ),
+    Bug(
+        "fresh35 explain: a weight amplitude of 0 not shown (no 'it has learnt nothing yet')",
+        "training/play/explain.py",
+        "if move.weight_amplitude is not None:",
+        "if move.weight_amplitude:",
+        ("tests/play/test_explain.py", "tests/training/test_pinned_round14.py"),
+    ),
+    Bug(
+        "fresh35 adapters: a reset keeps the last episode's decisions (a scripted seat's first mask can be stale)",
+        "agents/adapters.py",
+        "        self._turns = 0\n        self._decided = {}\n",
+        "        self._turns = 0\n",
+        (
+            "tests/agents/test_adapters.py",
+            "tests/env/test_readme_libraries.py",
+            "tests/env/test_wrappers.py",
+            "tests/training/test_pinned_round32.py",
+        ),
+    ),
+)
+"""Round 35, written blind (from the sources only, not the tests) in fourteen modules planted in once
+before, none with a modules.toml entry (tests chosen by file name): the learned human, the robots'
+base, the backends, the partner monitor and posterior, the SB3 comparison, the populations, the
+paper's experiment, the Python model, the sb3 robot, the SB3 vector envs, the humans' base, the SB3
+callbacks, the play page's explanations and the scripted-seat adapters."""
+ROUND35_TESTS = "tests/training/test_pinned_round35.py"
+"""The values round 35's missed bugs changed, pinned after the round: every round-35 bug runs them too."""
+FRESH35 = pinned_after(FRESH35, ROUND35_TESTS)
+
 
 ALL = (
     BUGS
@@ -4604,6 +4796,7 @@ ALL = (
     + FRESH32
     + FRESH33
     + FRESH34
+    + FRESH35
 )
 
 
