@@ -292,7 +292,7 @@ class Space:
         if out is None:
             base = self.base
             c0, c1, c2, c3, c4 = self._cr
-            code, n_codes, wait_r = self._cycle_code, self._n_cycle_codes, self.wait[0]
+            code, n_codes = self._cycle_code, self._n_cycle_codes
             symmetric = self.symmetric
             out = tuple(
                 [
@@ -302,7 +302,7 @@ class Space:
                             ar,
                             s1,
                             d_r,
-                            key * n_codes + code[ar] if symmetric else (key, d_r, ar != wait_r),
+                            key * n_codes + code[ar] if symmetric else (key, code[ar]),
                             base + max(v0 + c0 * d_r, v1 + c1 * d_r, v2 + c2 * d_r, v3 + c3 * d_r, v4 + c4 * d_r),
                         ),
                     )
@@ -426,19 +426,19 @@ class Space:
         for o, st in enumerate(statuses):
             for kind, i, sig, spot in rows[o][st]:
                 if kind is pick:
-                    if not empty or sig in seen:
-                        continue
-                    seen.add(sig)
+                    ok = empty and sig not in seen
+                    if ok:
+                        seen.add(sig)
                 elif kind is take:
-                    if not (partner_offer and obj == o and empty):
-                        continue
+                    ok = partner_offer and obj == o and empty
                 elif kind is place:
-                    if where[o] != hand or sig in seen or spot in where:
-                        continue
-                    seen.add(sig)
-                elif where[o] != hand:  # THROW, GIVE
-                    continue
-                out.append(i)
+                    ok = where[o] == hand and sig not in seen and spot not in where
+                    if ok:
+                        seen.add(sig)
+                else:  # THROW, GIVE
+                    ok = where[o] == hand
+                if ok:
+                    out.append(i)
         if agent == 0:
             goto = self._goto
             dests: set[int] = set()

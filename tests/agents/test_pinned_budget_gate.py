@@ -10,6 +10,7 @@ machine's floor is 512 MB; the timer is armed for the time left plus 0.05 s (so 
 from __future__ import annotations
 
 import multiprocessing
+import os
 import re
 import resource
 import signal
@@ -18,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-from hg_marl.agents.models.budget import Budget, OverBudget, available_bytes, rss
+from hg_marl.agents.models.budget import MIN_FREE_BYTES, Budget, OverBudget, available_bytes, private_bytes, rss
 
 LINUX = sys.platform.startswith("linux")
 
@@ -79,3 +80,64 @@ def test_the_timer_is_armed_for_the_time_left_and_disarmed_after() -> None:
         delay, interval = signal.getitimer(signal.ITIMER_REAL)
         assert 0.0 < delay <= 2.05 and interval == 0.0
     assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+
+
+@pytest.mark.skipif(not LINUX, reason="/proc is Linux's")
+def test_private_bytes_are_the_private_lines_of_smaps_rollup_in_bytes() -> None:
+    text = Path("/proc/self/smaps_rollup").read_text()
+    kb = sum(int(m) for m in re.findall(r"^Private_(?:Clean|Dirty):\s+(\d+) kB", text, re.MULTILINE))
+    assert abs(private_bytes(os.getpid()) - kb * 1024) <= 16 * 2**20  # two readings of a live figure
+    assert private_bytes(2**22 + 12345) == 0  # no such process: nothing to count
+
+
+def test_a_machine_with_exactly_its_floor_of_memory_left_is_not_refused() -> None:
+    Budget(None, None, None, free_memory=lambda: MIN_FREE_BYTES).check("explore", 1, memory=True)
+    with pytest.raises(OverBudget):
+        Budget(None, None, None, free_memory=lambda: MIN_FREE_BYTES - 1).check("explore", 1, memory=True)
+
+
+@pytest.mark.parametrize(("spent", "timer"), [(4.0, 6.05), (20.0, 0.05)])
+def test_the_deadline_timer_rings_a_twentieth_of_a_second_after_the_time_left(
+    spent: float, timer: float, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """10 s of budget with 4 spent: the timer is set to 6 s and a twentieth; with the budget
+    already spent, to a twentieth (the check after the block refuses)."""
+    import signal
+    import time
+
+    monkeypatch.setattr(time, "perf_counter", lambda: 100.0)
+    armed: list[float] = []
+    real = signal.setitimer
+
+    def record(which: int, seconds: float, interval: float = 0.0) -> tuple[float, float]:
+        armed.append(seconds)
+        return real(which, 0) if seconds == 0 else (0.0, 0.0)
+
+    monkeypatch.setattr(signal, "setitimer", record)
+    budget = Budget(10.0, None, None, clock=time.perf_counter, start=100.0 - spent)
+    with budget.deadline():
+        pass
+    assert armed[0] == pytest.approx(timer, abs=1e-12) and armed[-1] == 0
+
+
+@pytest.mark.parametrize(("ran", "counted"), [(86_399.5, True), (86_400.5, False)])
+def test_a_process_start_is_read_from_proc_up_to_a_day_back(
+    ran: float, counted: bool, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Started ``ran`` seconds ago by /proc's clocks: within a day the start is that far back,
+    beyond it (a clock that cannot be right) the start is now."""
+    import io
+    import time
+
+    from hg_marl.agents.models import budget as module
+
+    tick = os.sysconf("SC_CLK_TCK")
+    files = {
+        "/proc/self/stat": "1 (python) S " + " ".join(["0"] * 18 + [str(1000 * tick)] + ["0"] * 10),
+        "/proc/uptime": f"{1000 + ran} 0.0",
+    }
+    monkeypatch.setattr(module, "open", lambda path, **kw: io.StringIO(files[path]), raising=False)
+    before = time.perf_counter()
+    start = module.process_start()
+    back = before - start
+    assert (back == pytest.approx(ran, abs=1.0)) if counted else abs(back) <= 1.0

@@ -57,3 +57,22 @@ def test_the_humans_holding_weight_raises_the_bound_where_every_method_has_the_h
         assert high >= low, state
         rose += high > low
     assert rose > 0
+
+
+def test_each_memo_of_the_space_is_emptied_once_it_holds_more_than_its_limit(monkeypatch: pytest.MonkeyPatch) -> None:
+    """With a limit of 3, a memo grows 1, 2, 3, 4 and the fifth entry finds it over the limit:
+    emptied, it holds that entry alone (a cleared entry is computed again, to the same value)."""
+    from hg_marl.agents.planner import space as module
+
+    monkeypatch.setattr(module, "_CACHE_LIMIT", 3)
+    world = World("paper2015")
+    space = Planner(world).space
+    where = world.initial_state(np.random.default_rng(0)).where
+    states = [State(where, at) for at in range(len(world.scenario.robot_locations))]
+    states += [State(where, 0, 0, 0)]  # the robot offering object 0
+    assert len({space.key(s) for s in states}) == len(states) >= 5
+    sizes = []
+    for state in states[:5]:
+        space._new_sums(state, space.key(state))
+        sizes.append(len(space._sums))
+    assert sizes == [1, 2, 3, 4, 1]
