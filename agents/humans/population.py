@@ -3,7 +3,7 @@
 A population file is TOML (``hg-marl population generate`` writes one; see
 ``populations/`` for the bundled ones)::
 
-    name = "paper2015"                 # free text
+    name = "paper2015"                 # free text; optional (default: the file's name without .toml)
     scenario = "paper2015"             # what the members' behaviour was measured on
     description = "..."                # optional
 
