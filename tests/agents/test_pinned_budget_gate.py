@@ -141,3 +141,68 @@ def test_a_process_start_is_read_from_proc_up_to_a_day_back(
     start = module.process_start()
     back = before - start
     assert (back == pytest.approx(ran, abs=1.0)) if counted else abs(back) <= 1.0
+
+
+def test_the_memory_budget_refuses_only_above_its_bytes_and_names_them_in_gb(monkeypatch: pytest.MonkeyPatch) -> None:
+    from hg_marl.agents.models import budget as module
+
+    monkeypatch.setattr(module, "rss", lambda: 3 * 2**29)  # 1.5 GB resident
+    Budget(None, 3 * 2**29, None, free_memory=lambda: None).check("explore", 1, memory=True)
+    with pytest.raises(OverBudget, match=r"over its budget of 1\.5 GB of memory in phase 'explore'"):
+        Budget(None, 3 * 2**29 - 1, None, free_memory=lambda: None).check("explore", 1, memory=True)
+
+
+def test_without_proc_the_resident_size_is_the_peak_in_bytes(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Where /proc cannot be read, ``ru_maxrss`` (kB on Linux) times 1024."""
+    from hg_marl.agents.models import budget as module
+
+    def no_proc(path: str, **kw: object) -> object:
+        raise OSError(path)
+
+    monkeypatch.setattr(module, "open", no_proc, raising=False)
+    low = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    value = rss()
+    high = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    assert low <= value <= high
+
+
+@pytest.mark.parametrize(
+    ("stat", "uptime"),
+    [("1 (python) S", "1000.0 0.0"), ("1 (python) S " + " ".join(["0"] * 18 + ["200000"]), "1000.0 0.0")],
+)
+def test_a_process_start_that_cannot_be_read_or_lies_ahead_is_now(
+    stat: str, uptime: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A /proc/self/stat without its start field, or a start after the uptime (a start in
+    the future: 2,000 s of ticks at 100 a second against 1,000 s up), gives now."""
+    import io
+    import time
+
+    from hg_marl.agents.models import budget as module
+
+    monkeypatch.setattr(os, "sysconf", lambda name: 100)
+    files = {"/proc/self/stat": stat, "/proc/uptime": uptime}
+    monkeypatch.setattr(module, "open", lambda path, **kw: io.StringIO(files[path]), raising=False)
+    before = time.perf_counter()
+    start = module.process_start()
+    assert before <= start <= time.perf_counter()
+
+
+@pytest.mark.parametrize("outer", [5.0, 0.0])
+def test_the_deadline_puts_back_a_timer_armed_before_it(outer: float, monkeypatch: pytest.MonkeyPatch) -> None:
+    """An outer timer with 5 s left is re-armed for them when the block ends; none is armed
+    where none was."""
+    import signal
+    import time
+
+    monkeypatch.setattr(time, "perf_counter", lambda: 100.0)
+    calls: list[tuple[float, float]] = []
+
+    def record(which: int, seconds: float, interval: float = 0.0) -> tuple[float, float]:
+        calls.append((seconds, interval))
+        return (outer, 0.0) if len(calls) == 1 else (0.0, 0.0)
+
+    monkeypatch.setattr(signal, "setitimer", record)
+    with Budget(10.0, None, None, clock=time.perf_counter, start=96.0).deadline():
+        pass
+    assert calls == [(6.05, 0.0), (0.0, 0.0), *([(5.0, 0.0)] if outer else [])]
