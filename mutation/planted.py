@@ -1442,6 +1442,7 @@ FRESH12 = (
             "tests/env/test_pinned_compiled.py",
             "tests/training/test_baselines.py",
             "tests/training/test_store_inputs.py",
+            "tests/agents/test_pinned_learned_false_catches.py",
         ),
     ),
 )
@@ -4582,6 +4583,7 @@ FRESH35 = (
             "tests/env/test_pinned_compiled_gate.py",
             "tests/training/test_baselines.py",
             "tests/training/test_store_inputs.py",
+            "tests/agents/test_pinned_learned_false_catches.py",
         ),
     ),
     Bug(
@@ -5038,7 +5040,7 @@ ALL = (
 
 
 def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]:
-    """Plant ``bug`` in a fresh copy; return (caught, failing tests)."""
+    """Plant ``bug`` in a fresh copy; return (caught, the tests that fail with it and pass without)."""
     scratch = scratch_copy(work / re.sub(r"\W+", "_", bug.name)[:60])
     if tests_rev:
         tests_from(tests_rev, scratch)
@@ -5048,10 +5050,28 @@ def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]
         raise SystemExit(f"{bug.name}: the code to change is not found once in {bug.path} (update mutation/planted.py)")
     source.write_text(text.replace(bug.old, bug.new))
     tests = [t for t in bug.tests if (scratch / t.split("::")[0]).exists()]  # files or pytest node ids
-    cmd = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-m", "not slow", "-rf", *tests]
-    proc = subprocess.run(cmd, cwd=scratch, env=_env(scratch), capture_output=True, text=True)
-    failed = [ln.split(" ")[1] for ln in proc.stdout.splitlines() if ln.startswith(("FAILED ", "ERROR "))]
-    return proc.returncode != 0, failed
+    proc = _pytest(scratch, tests)
+    if proc.returncode == 0:
+        return False, []
+    failed = _failures(proc)
+    # a test that also fails without the bug (in this copy, on this machine) caught nothing
+    source.write_text(text)
+    again = _pytest(scratch, failed or tests)
+    if again.returncode == 0:
+        return True, failed
+    still = set(_failures(again))
+    real = [name for name in failed if name not in still]
+    return bool(real), real
+
+
+def _pytest(scratch: Path, tests: list[str]) -> subprocess.CompletedProcess[str]:
+    cmd = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-m", "not slow", "-rfE", *tests]
+    return subprocess.run(cmd, cwd=scratch, env=_env(scratch), capture_output=True, text=True)
+
+
+def _failures(proc: subprocess.CompletedProcess[str]) -> list[str]:
+    """The node ids of the failed and erroring tests in pytest's short summary."""
+    return [ln.split(" ")[1] for ln in proc.stdout.splitlines() if ln.startswith(("FAILED ", "ERROR "))]
 
 
 def main(argv: list[str] | None = None) -> int:

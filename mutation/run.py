@@ -64,8 +64,26 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 CONFIG = ROOT / "mutation" / "modules.toml"
 EQUIVALENT = ROOT / "mutation" / "equivalent.toml"
-COPIED = ("hg_marl", "agents", "training", "tests", "pyproject.toml", "populations", "studies", "docs", "README.md")
-"""What a scratch copy holds (sources, tests, pytest's configuration, and the data and pages tests read)."""
+COPIED = (
+    "hg_marl",
+    "agents",
+    "training",
+    "tests",
+    "pyproject.toml",
+    "populations",
+    "studies",
+    "docs",
+    "README.md",
+    "benchmarks",
+    "examples",
+    "mkdocs.yml",
+    "mutation",
+    ".ci",
+    "Makefile",
+    "noxfile.py",
+)
+"""What a scratch copy holds (sources, tests, pytest's configuration, and the data, pages and
+scripts tests read: a test running a benchmark or an example fails in a copy without them)."""
 IGNORED = ("__pycache__", "*.pyc", ".hypothesis", ".pytest_cache")
 """What a scratch copy leaves out (caches): patterns of file and folder names."""
 PACKAGE_DIRS = {"agents": "hg_marl/agents", "training": "hg_marl/training"}
@@ -221,11 +239,12 @@ def scratch_copy(dest: Path) -> Path:
         if not src.exists():  # an optional folder or page this checkout does not have
             continue
         if src.is_dir():
-            shutil.copytree(src, dest / name, ignore=ignore)
+            shutil.copytree(src, dest / name, ignore=ignore, symlinks=True)
         else:
             shutil.copy2(src, dest / name)
     for folder, installed in PACKAGE_DIRS.items():
-        (dest / installed).symlink_to(Path("..") / folder)
+        if not (dest / installed).is_symlink():  # a copy made from a copy has its links already
+            (dest / installed).symlink_to(Path("..") / folder)
     return dest
 
 
