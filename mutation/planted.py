@@ -48,6 +48,24 @@ def pinned_after(bugs: tuple[Bug, ...], tests: str) -> tuple[Bug, ...]:
 
 META_TESTS = ("tests/agents/test_meta.py", "tests/agents/test_meta_exact.py", "tests/agents/test_robots.py")
 RUN_TESTS = ("tests/training/test_runner.py", "tests/training/test_run_clock.py", "tests/training/test_sweep_resume.py")
+TABLE_TESTS = (
+    "tests/core/test_table.py",
+    "tests/core/test_rules.py",
+    "tests/core/test_rules_layouts.py",
+    "tests/core/test_properties.py",
+    "tests/core/test_cycle.py",
+    "tests/env/test_env.py",
+    "tests/agents/test_planner_compiled.py",
+    "tests/agents/test_pinned_planner_tables_gate.py",
+)
+TRACE_TESTS = (
+    "tests/agents/test_trace_validation.py",
+    "tests/fuzz/test_fuzz_inputs.py",
+    "tests/fuzz/test_outputs.py",
+    "tests/fuzz/test_probe.py",
+    "tests/play/test_session.py",
+    "tests/play/test_traces.py",
+)
 
 BUGS = (
     Bug(
@@ -1353,14 +1371,7 @@ FRESH12 = (
         "agents/humans/trace.py",
         "min(per, key=lambda a: (-per[a], a))",
         "min(per, key=lambda a: (-per[a], -a))",
-        (
-            "tests/agents/test_trace_validation.py",
-            "tests/fuzz/test_fuzz_inputs.py",
-            "tests/fuzz/test_outputs.py",
-            "tests/fuzz/test_probe.py",
-            "tests/play/test_session.py",
-            "tests/play/test_traces.py",
-        ),
+        TRACE_TESTS,
     ),
     Bug(
         "fresh12 scenario: a scenario file loaded with strict=True only warns about an unsolvable layout",
@@ -2190,16 +2201,7 @@ FRESH17 = (
         "hg_marl/core/table.py",
         "return min(reach) if reach and at not in reach else -1",
         "return max(reach) if reach and at not in reach else -1",
-        (
-            "tests/core/test_table.py",
-            "tests/core/test_rules.py",
-            "tests/core/test_rules_layouts.py",
-            "tests/core/test_properties.py",
-            "tests/core/test_cycle.py",
-            "tests/env/test_env.py",
-            "tests/agents/test_planner_compiled.py",
-            "tests/agents/test_pinned_planner_tables_gate.py",
-        ),
+        TABLE_TESTS,
     ),
 )
 
@@ -4506,14 +4508,7 @@ FRESH34 = (
         "agents/humans/trace.py",
         "        self.episodes += 1\n        self._steps = 0\n",
         "        self.episodes += 1\n",
-        (
-            "tests/agents/test_trace_validation.py",
-            "tests/fuzz/test_fuzz_inputs.py",
-            "tests/fuzz/test_outputs.py",
-            "tests/fuzz/test_probe.py",
-            "tests/play/test_session.py",
-            "tests/play/test_traces.py",
-        ),
+        TRACE_TESTS,
     ),
     Bug(
         "fresh34 plots: Fig. 3's difference panel draws the planner minus each condition (the sign flipped)",
@@ -4828,17 +4823,7 @@ FRESH36 = (
         "hg_marl/core/table.py",
         "else state, False, self.durations.failed",
         "else state, False, self.specs[agent][index].duration",
-        (
-            "tests/core/test_table.py",
-            "tests/core/test_rules.py",
-            "tests/core/test_rules_layouts.py",
-            "tests/core/test_properties.py",
-            "tests/core/test_cycle.py",
-            "tests/env/test_env.py",
-            "tests/agents/test_planner_compiled.py",
-            "tests/agents/test_pinned_planner_tables_gate.py",
-            "tests/training/test_pinned_round17.py",
-        ),
+        (*TABLE_TESTS, "tests/training/test_pinned_round17.py"),
     ),
     Bug(
         "fresh36 array partners: live robots listed for the human's batched seat: every table plays the first",

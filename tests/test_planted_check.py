@@ -8,27 +8,15 @@ no ``benchmarks/``), so both rules are pinned here.
 
 from __future__ import annotations
 
-import importlib.util
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from tests.test_mutation_config import load_planted
+
 ROOT = Path(__file__).resolve().parent.parent
-
-
-def _planted() -> object:
-    sys.path.insert(0, str(ROOT / "mutation"))
-    try:
-        spec = importlib.util.spec_from_file_location("mutation_planted_check", ROOT / "mutation" / "planted.py")
-        assert spec is not None and spec.loader is not None
-        module = importlib.util.module_from_spec(spec)
-        sys.modules["mutation_planted_check"] = module
-        spec.loader.exec_module(module)
-    finally:
-        sys.path.remove(str(ROOT / "mutation"))
-    return module
 
 
 def _done(stdout: str, code: int) -> subprocess.CompletedProcess[str]:
@@ -50,7 +38,7 @@ def test_a_test_failing_without_the_bug_too_caught_nothing(
     tmp_path: Path,
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    planted = _planted()
+    planted = load_planted()
     source = tmp_path / "copy" / "pkg.py"
 
     def copy(dest: Path) -> Path:
