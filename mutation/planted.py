@@ -4983,6 +4983,121 @@ ROUND36_TESTS = "tests/training/test_pinned_round36.py"
 FRESH36 = pinned_after(FRESH36, ROUND36_TESTS)
 
 
+FRESH37 = (
+    Bug(
+        "fresh37 array partner: a compiled human's batched tables played live, its answers never read from its "
+        "table (the tabled capability declared with another method name)",
+        "hg_marl/envs/array_partner.py",
+        "    def answer(self, batch: BatchState, seen: np.ndarray, rng: np.random.Generator)",
+        "    def answers(self, batch: BatchState, seen: np.ndarray, rng: np.random.Generator)",
+        gate("array_partner"),
+    ),
+    Bug(
+        "fresh37 model sb3: a model rebuilt without its optimizer refused (the policy alone loaded as an exact match)",
+        "agents/model_sb3.py",
+        'model.set_parameters(state, exact_match=optimizer, device="cpu")',
+        'model.set_parameters(state, exact_match=True, device="cpu")',
+        gate("model_sb3"),
+    ),
+    Bug(
+        "fresh37 planner costs: a time weight of 0 accepted (plans free to lengthen)",
+        "agents/planner/costs.py",
+        "if self.time <= 0:",
+        "if self.time < 0:",
+        gate("planner_costs"),
+    ),
+    Bug(
+        "fresh37 planner tables: a pick is a candidate of any spot, those out of the agent's reach too",
+        "agents/planner/tables.py",
+        "if st < n_spots and table.reach[agent][at][st]:",
+        "if st < n_spots:",
+        gate("planner_tables"),
+    ),
+    Bug(
+        "fresh37 ppo_recurrent: checkpoints drift off the multiples of checkpoint_freq (the next one due a period "
+        "after the last update, not at the next multiple)",
+        "training/baselines/ppo_recurrent.py",
+        "next_ckpt = (steps // config.checkpoint_freq + 1) * config.checkpoint_freq",
+        "next_ckpt = steps + config.checkpoint_freq",
+        gate("ppo_recurrent"),
+    ),
+    Bug(
+        "fresh37 atomic: a folder that cannot be created or written raises the raw OSError, not an OutputError",
+        "hg_marl/core/atomic.py",
+        "raise (output_error(exc, path) or exc) from None",
+        "raise exc from None",
+        gate("atomic"),
+    ),
+    Bug(
+        "fresh37 batch rules: the robot's wait rewarded once any object is in its bin, not every one",
+        "hg_marl/core/batch.py",
+        "return self.done[np.arange(self.n_objects), b.where].all(axis=1)",
+        "return self.done[np.arange(self.n_objects), b.where].any(axis=1)",
+        gate("batch_rules"),
+    ),
+    Bug(
+        "fresh37 entropy: the habit and the planner share one filter (each expert's distribution mixed into the "
+        "other's)",
+        "agents/meta/entropy.py",
+        "self._planner = StateFilter(self.rate)",
+        "self._planner = self._habit",
+        gate("entropy"),
+    ),
+    Bug(
+        "fresh37 learning state: an RMS TD error equal to the threshold counts as settled (not below it)",
+        "agents/meta/learning_state.py",
+        "settled = change < self.threshold and",
+        "settled = change <= self.threshold and",
+        gate("learning_state"),
+    ),
+    Bug(
+        "fresh37 limits: a study of exactly MAX_RUNS runs refused as over the limit",
+        "training/limits.py",
+        "if runs > MAX_RUNS:",
+        "if runs >= MAX_RUNS:",
+        gate("limits"),
+    ),
+    Bug(
+        "fresh37 memory numpy: the GRU's gates squashed with sigmoid(2x), not sigmoid(x)",
+        "agents/memory_numpy.py",
+        "return 0.5 * (1.0 + np.tanh(0.5 * x))",
+        "return 0.5 * (1.0 + np.tanh(x))",
+        gate("memory_numpy"),
+    ),
+    Bug(
+        "fresh37 meta cost: a negative cost per planner node accepted",
+        "agents/meta/cost.py",
+        'for name in ("habit", "planner_base", "planner_per_node"):',
+        'for name in ("habit", "planner_base"):',
+        gate("meta_cost"),
+    ),
+    Bug(
+        "fresh37 cache: an .npz entry without its key (a foreign file) raises KeyError instead of being rebuilt",
+        "agents/models/cache.py",
+        "except (OSError, ValueError, KeyError, EOFError):",
+        "except (OSError, ValueError, EOFError):",
+        gate("model_cache"),
+    ),
+    Bug(
+        "fresh37 keyed: more than SORT_QUERIES unsorted queries get their positions in sorted order, not scattered "
+        "back to theirs",
+        "agents/models/keyed.py",
+        "found[order] = np.searchsorted(sorted_keys, queries[order])",
+        "found[:] = np.searchsorted(sorted_keys, queries[order])",
+        gate("model_keyed"),
+    ),
+)
+"""Round 37, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in fourteen gated modules, the gated modules with the fewest planted bugs (none of rounds 32 to 36 planted
+in a gated module), each bug run against its module's gate tests from modules.toml: the batched seats'
+partner capabilities, the SB3 model files, the planner's costs and static tables, the recurrent PPO, the
+atomic writes, the batched rules, the entropy and learning-state criteria, the work limits, the numpy
+memory policy, the decision cost model, the oracle's disk cache and the packed keys."""
+ROUND37_TESTS = "tests/training/test_pinned_round37.py"
+"""The values round 37's missed bugs changed, pinned after the round: every round-37 bug runs them too."""
+FRESH37 = pinned_after(FRESH37, ROUND37_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -5021,6 +5136,7 @@ ALL = (
     + FRESH34
     + FRESH35
     + FRESH36
+    + FRESH37
 )
 
 
