@@ -39,6 +39,7 @@ one back when the robot stands, empty-handed, where it could acquire something.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from math import fsum
 from operator import getitem, sub
 from typing import NamedTuple
@@ -423,7 +424,13 @@ class Space:
         pick, take, place = _PICK, _TAKE, _PLACE
         seen: set[object] = set()
         out: list[int] = []
-        for o, st in enumerate(statuses):
+        # a hand holds one object: while it does, only that object's steps can pass (a pick
+        # or a take needs the hand empty, the others the object in it)
+        objects: Iterable[tuple[int, int]] = enumerate(statuses)
+        if not empty:
+            held = where.index(hand)
+            objects = ((held, statuses[held]),)
+        for o, st in objects:
             for kind, i, sig, spot in rows[o][st]:
                 if kind is pick:
                     ok = empty and sig not in seen
