@@ -39,7 +39,6 @@ one back when the robot stands, empty-handed, where it could acquire something.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
 from math import fsum
 from operator import getitem, sub
 from typing import NamedTuple
@@ -49,7 +48,7 @@ from hg_marl.agents.planner.domain import Domain
 from hg_marl.agents.planner.exactsum import ExactSums
 from hg_marl.agents.planner.models import HumanModel
 from hg_marl.agents.planner.steps import Steps, Successor
-from hg_marl.agents.planner.tables import candidate_entries, next_kinds
+from hg_marl.agents.planner.tables import candidate_entries, next_kinds, split_entries
 from hg_marl.core import Agent, Kind, State, World
 from hg_marl.core.relabel import Relabel
 
@@ -59,7 +58,7 @@ LAMBDAS: tuple[float, ...] = (0.0, 0.25, 0.5, 0.75, 1.0)
 """Mixing weights of robot and human work tried by the bound (five: the edges unroll them)."""
 
 _CACHE_LIMIT = 500_000
-_PICK, _TAKE, _PLACE, _HUMAN = Kind.PICK, Kind.TAKE, Kind.PLACE, int(Agent.HUMAN)
+_PLACE, _HUMAN = Kind.PLACE, int(Agent.HUMAN)
 """Read once: an enum member read through its class costs a look-up per call in the inner loop."""
 _new = tuple.__new__
 """Builds the edges' ``NamedTuple`` s without their Python-level ``__new__`` (same values)."""
@@ -211,7 +210,7 @@ class Space:
         self.human_takes = frozenset(i for i, a in enumerate(acts[1]) if a.kind is Kind.TAKE)
         # spots worth placing on: the robot can pick from them (other human moves are not steps of any method)
         self.place_spots = tuple(sp for sp, locs in enumerate(domain.spot_locs) if locs and domain.spot_human[sp])
-        self._entries = candidate_entries(self)
+        self._picks, self._takes, self._held = split_entries(candidate_entries(self))
         self._goto = table.action_index(0, Kind.GOTO, target=0)
         self._goto_static = tuple(
             tuple((self._goto + world.n_objects + k, dest) for k, dest in enumerate(row) if dest >= 0)
@@ -414,38 +413,34 @@ class Space:
     def _candidates(self, state: State, agent: int) -> tuple[int, ...]:
         where, at, by, obj = state
         hand = self.table.hand[agent]
-        statuses = list(where)
-        if obj >= 0:
-            d = self.domain
-            statuses[obj] = d.human_offer if by == 1 else d.robot_offer
-        empty = hand not in where
-        partner_offer = by >= 0 and by != agent
-        rows = self._entries[agent][at]
-        pick, take, place = _PICK, _TAKE, _PLACE
         seen: set[object] = set()
         out: list[int] = []
         # a hand holds one object: while it does, only that object's steps can pass (a pick
-        # or a take needs the hand empty, the others the object in it)
-        objects: Iterable[tuple[int, int]] = enumerate(statuses)
-        if not empty:
+        # or a take needs the hand empty, the others the object in it): :func:`.split_entries`
+        if hand in where:
             held = where.index(hand)
-            objects = ((held, statuses[held]),)
-        for o, st in objects:
-            for kind, i, sig, spot in rows[o][st]:
-                if kind is pick:
-                    ok = empty and sig not in seen
-                    if ok:
+            st = where[held]
+            if held == obj:
+                d = self.domain
+                st = d.human_offer if by == 1 else d.robot_offer
+            place = _PLACE
+            for kind, i, sig, spot in self._held[agent][at][held][st]:
+                if kind is place:
+                    if sig in seen or spot in where:
+                        continue
+                    seen.add(sig)
+                out.append(i)
+        else:
+            # an offered object is in its giver's hand, never on a spot, so its picks are
+            # those of its place as of its offer status: none
+            for per_st, p in zip(self._picks[agent][at], where, strict=True):
+                for _, i, sig, _ in per_st[p]:
+                    if sig not in seen:
                         seen.add(sig)
-                elif kind is take:
-                    ok = partner_offer and obj == o and empty
-                elif kind is place:
-                    ok = where[o] == hand and sig not in seen and spot not in where
-                    if ok:
-                        seen.add(sig)
-                else:  # THROW, GIVE
-                    ok = where[o] == hand
-                if ok:
-                    out.append(i)
+                        out.append(i)
+            if by >= 0 and by != agent:  # the partner's offer: its takes
+                d = self.domain
+                out += [e[1] for e in self._takes[agent][at][obj][d.human_offer if by == 1 else d.robot_offer]]
         if agent == 0:
             goto = self._goto
             dests: set[int] = set()

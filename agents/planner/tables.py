@@ -4,11 +4,13 @@ Built once per :class:`~.space.Space` (kept apart so that :mod:`.space` holds wh
 search calls per state): for each agent, robot location, object and status, the kinds
 that are the next step of an applicable method (:func:`next_kinds`) and the ground
 actions among them whose reach holds there, with their symmetry signatures
-(:func:`candidate_entries`).
+(:func:`candidate_entries`), split by what the agent's hand must hold for them to pass
+(:func:`split_entries`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from hg_marl.core import Agent, Kind
@@ -18,6 +20,9 @@ if TYPE_CHECKING:
 
 Entry = tuple[Kind, int, object, int]
 """A tabulated candidate: (kind, action index, symmetry signature or None, PLACE spot or -1)."""
+
+Rows = tuple[list[list[list[tuple[Entry, ...]]]], ...]
+"""``rows[agent][robot_at][o][status]``."""
 
 
 def next_kinds(space: Space) -> tuple[list[list[list[tuple[Kind, ...]]]], ...]:
@@ -39,7 +44,7 @@ def next_kinds(space: Space) -> tuple[list[list[list[tuple[Kind, ...]]]], ...]:
     return out
 
 
-def candidate_entries(space: Space) -> tuple[list[list[list[tuple[Entry, ...]]]], ...]:
+def candidate_entries(space: Space) -> Rows:
     """``entries[agent][robot_at][o][status]``: candidate actions whose reach holds there."""
     world, d, table = space.world, space.domain, space.table
     n_spots = world.n_spots
@@ -73,3 +78,25 @@ def candidate_entries(space: Space) -> tuple[list[list[list[tuple[Entry, ...]]]]
                 per_o.append(per_st)
             out[agent].append(per_o)
     return out
+
+
+def split_entries(entries: Rows) -> tuple[Rows, Rows, Rows]:
+    """``entries`` split into (picks, takes, held), each in its original order.
+
+    Why: a hand holds one object. With it empty only picks and takes can pass; with an
+    object in it only that object's place, throw and give (a pick or a take needs the
+    hand empty, the others the object in it). The candidates then read the kinds that
+    can pass and test no kind per entry.
+    """
+
+    def only(test: Callable[[Kind], bool]) -> Rows:
+        return tuple(
+            [[[tuple(e for e in per_st if test(e[0])) for per_st in per_o] for per_o in per_at] for per_at in rows]
+            for rows in entries
+        )
+
+    return (
+        only(lambda k: k is Kind.PICK),
+        only(lambda k: k is Kind.TAKE),
+        only(lambda k: k is not Kind.PICK and k is not Kind.TAKE),
+    )

@@ -16,8 +16,10 @@ import pytest
 from hg_marl.agents.planner import CostWeights, Planner, PlannerConfig
 from hg_marl.agents.planner.exactsum import ExactSums
 from hg_marl.agents.planner.plan import build_plan
+from hg_marl.agents.planner.space import Space
 from hg_marl.agents.planner.steps import Steps
-from hg_marl.core import Agent, State, World
+from hg_marl.agents.planner.tables import candidate_entries
+from hg_marl.core import Agent, Kind, State, World
 
 SCENARIOS = ("paper2015", "roboergosum", "generated:objects=6,human_only=0.8,seed=1")
 
@@ -48,6 +50,69 @@ def test_steps_equal_successor_feasible(scenario: str) -> None:
                     assert steps.apply(state, agent, index) == world.table.successor_feasible(state, agent, index)
                     checked += 1
     assert checked > 500
+
+
+def per_entry_candidates(space: Space, state: State, agent: int) -> tuple[int, ...]:
+    """The candidates as first written: every tabulated entry of every object tested by its kind.
+
+    A pick or a take passes with the hand empty (a pick once per symmetry signature, a
+    take of the partner's offered object), a place, throw or give with the object in the
+    hand (a place once per signature, on a free spot); then the robot's gotos, one per
+    destination; sorted, ``wait`` last.
+    """
+    where, at, by, obj = state
+    hand = space.table.hand[agent]
+    statuses = list(where)
+    if obj >= 0:
+        statuses[obj] = space.domain.human_offer if by == 1 else space.domain.robot_offer
+    empty = hand not in where
+    seen: set[object] = set()
+    out: list[int] = []
+    for o, st in enumerate(statuses):
+        for kind, i, sig, spot in candidate_entries(space)[agent][at][o][st]:
+            if kind is Kind.PICK:
+                ok = empty and sig not in seen
+            elif kind is Kind.TAKE:
+                ok = empty and 0 <= by != agent and obj == o
+            elif kind is Kind.PLACE:
+                ok = where[o] == hand and sig not in seen and spot not in where
+            else:
+                ok = where[o] == hand
+            if ok:
+                if sig is not None:
+                    seen.add(sig)
+                out.append(i)
+    if agent == 0:
+        dests: set[int] = set()
+        goto = space.table.action_index(0, Kind.GOTO, target=0)
+        for t, p in enumerate(where):
+            dest = space.table.goto_obj[at][p]
+            if dest >= 0 and dest not in dests:
+                dests.add(dest)
+                out.append(goto + t)
+        for k, dest in enumerate(space.table.goto_static[at]):
+            if dest >= 0 and dest not in dests:
+                dests.add(dest)
+                out.append(goto + space.world.n_objects + k)
+    return (*sorted(out), space.wait[agent])
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_candidates_by_the_hands_content_equal_every_entry_tested_by_its_kind(scenario: str) -> None:
+    """The candidates read per what the hand holds (:func:`split_entries`) are those of
+    the per-entry reference, on walks that pass through both agents' offers; each is feasible."""
+    world = World(scenario)
+    space = Planner(world, PlannerConfig()).space
+    offers = checked = 0
+    for seed in range(6):
+        for state in walk(world, seed, 40):
+            offers += state.offer_by >= 0
+            for agent in Agent:
+                got = space._candidates(state, agent)
+                assert got == per_entry_candidates(space, state, agent), (state, agent)
+                assert set(got) <= set(world.feasible_indices(state, agent))
+                checked += 1
+    assert checked > 400 and offers > 0
 
 
 @pytest.mark.parametrize("scenario", SCENARIOS)
