@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import TracebackType
@@ -204,7 +205,6 @@ def read_trace(path: str | Path) -> list[Episode]:
         raise ModelFileError(f"{path}: larger than {MAX_TRACE_BYTES} bytes")
     episodes: list[Episode] = []
     with path.open(encoding="utf-8") as fh:
-        number = 0
         try:
             for number, line in enumerate(fh, 1):
                 if not line.strip():
@@ -238,10 +238,29 @@ def read_trace(path: str | Path) -> list[Episode]:
                         f"{at}: unknown line type {kind!r} (expected 'header', 'step' or 'end' after a header)"
                     )
         except UnicodeDecodeError:
-            raise ModelFileError(f"{path}:{number + 1}: not UTF-8 text") from None
+            raise ModelFileError(f"{path}{_undecodable_at(path)}: not UTF-8 text") from None
     if not episodes:
         raise ModelFileError(f"{path}: empty trace (no header line)")
     return episodes
+
+
+_LINE_END = re.compile(rb"\r\n|\r|\n")
+"""What ends a line in text mode (universal newlines), as :func:`read_trace` counts lines."""
+
+
+def _undecodable_at(path: Path) -> str:
+    """``:line`` of the file's first byte that is not UTF-8 (empty if it reads as UTF-8 now).
+
+    Why not the reader's own count: a text file is decoded a chunk ahead of the lines
+    read, so the error comes while the line before it, or one many lines before, is the
+    last one read.
+    """
+    data = path.read_bytes()
+    try:
+        data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        return f":{len(_LINE_END.findall(data, 0, exc.start)) + 1}"
+    return ""  # changed since the reader failed
 
 
 def check_episode(episode: Episode, path: str | Path, seat: str | None = None) -> World:
