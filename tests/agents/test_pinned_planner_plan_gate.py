@@ -3,10 +3,10 @@
 What ``hg-marl plan`` and the Gantt chart show is derived from a plan's cycles
 (``agents/planner/plan.py``): each agent's steps timed by the cycles, the ``dispose``
 method each object's steps belong to, and the links between the streams. The expected
-values are worked by hand from the layouts and durations below (a cycle lasts its longer
-action; the robot's step starts with the cycle) and from the rules the module's
-docstrings state; the links are also checked on hand-made streams where each clause of
-the rule decides the answer.
+values are worked by hand from the layouts below and ``test_planner_hand.py``'s durations
+(a cycle lasts its longer action; the robot's step starts with the cycle) and from the
+rules the module's docstrings state; the links are also checked on hand-made streams where
+each clause of the rule decides the answer.
 """
 
 from __future__ import annotations
@@ -15,44 +15,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from test_planner_hand import HANDOVER as TO_THE_ROBOT
+from test_planner_hand import world as layout
 
 from hg_marl.agents.planner import Planner
 from hg_marl.agents.planner.plan import NO_ACTION, Link, PlanResult, Step, _label_methods, _links, build_plan, failure
 from hg_marl.core import Agent, State, World
 
 R, H = Agent.ROBOT, Agent.HUMAN
-
-DURATIONS = """
-[durations]
-pick = 2.0
-throw = 2.0
-give = 1.0
-take = 1.5
-place = 2.0
-goto = 3.0
-wait = 1.0
-failed = 0.2
-"""
-
-TO_THE_ROBOT = """
-name = "to_the_robot"
-description = "one tape only the human reaches; the bin only the robot reaches"
-robot_locations = ["bin_side", "human_side"]
-handover_locations = ["human_side"]
-robot_start = ["bin_side"]
-[[objects]]
-name = "tape"
-[[bins]]
-name = "bin"
-robot_reach = ["bin_side"]
-human_reach = false
-[[spots]]
-name = "human_mat"
-human_reach = true
-[[layout]]
-count = 1
-spots = ["human_mat"]
-"""
 
 TO_THE_HUMAN = """
 name = "to_the_human"
@@ -74,12 +44,6 @@ human_reach = false
 count = 1
 spots = ["mat"]
 """
-
-
-def layout(tmp_path: Path, text: str) -> World:
-    path = tmp_path / "layout.toml"
-    path.write_text(text + DURATIONS)
-    return World(str(path))
 
 
 def named(world: World, stream: tuple[Step, ...]) -> list[tuple[str, int, float, float, int, str]]:

@@ -12,24 +12,10 @@ import re
 from pathlib import Path
 
 import pytest
+from test_population import GOOD
 
 from hg_marl.agents.humans.population import MAX_FILE_BYTES, load_population
 from hg_marl.core.errors import PopulationError
-
-GOOD = """\
-name = "tiny"
-scenario = "paper2015"
-
-[[members]]
-name = "m00"
-split = "train"
-spec = "preference"
-
-[[members]]
-name = "m01"
-split = "held_out"
-spec = "preference:handover=0.2,accept=0.5"
-"""
 
 
 def write(tmp_path: Path, text: str) -> Path:
