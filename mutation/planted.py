@@ -5098,6 +5098,131 @@ ROUND37_TESTS = "tests/training/test_pinned_round37.py"
 FRESH37 = pinned_after(FRESH37, ROUND37_TESTS)
 
 
+FRESH38 = (
+    Bug(
+        "fresh38 rule table: a human places an object on a spot another object already occupies",
+        "hg_marl/core/table.py",
+        "return self.spot_human[target] and target not in where",
+        "return self.spot_human[target]",
+        gate("rule_table"),
+    ),
+    Bug(
+        "fresh38 spec parser: a parameter without a name ('=3') read as the parameter '' instead of refused",
+        "hg_marl/core/spec.py",
+        "return (key, value.strip()) if sep and key else None",
+        "return (key, value.strip()) if sep else None",
+        gate("spec_parser"),
+    ),
+    Bug(
+        "fresh38 scenario loader: a scenario file that is not valid TOML is reported at the column, not the line",
+        "hg_marl/core/scenario.py",
+        'where_ = f"{path}:{found.group(1)}" if found else str(path)',
+        'where_ = f"{path}:{found.group(2)}" if found else str(path)',
+        gate("scenario_loader"),
+    ),
+    Bug(
+        "fresh38 durations: the longest duration is the shortest one (a copy of the shortest's min)",
+        "hg_marl/core/durations.py",
+        "return max(float(getattr(self, f.name)) for f in fields(self))",
+        "return min(float(getattr(self, f.name)) for f in fields(self))",
+        gate("durations"),
+    ),
+    Bug(
+        "fresh38 aec env: True accepted as an action (played as index 1) instead of refused",
+        "hg_marl/envs/table_cleaning.py",
+        "if not 0 <= index < n or isinstance(action, bool):",
+        "if not 0 <= index < n:",
+        gate("aec_env"),
+    ),
+    Bug(
+        "fresh38 hybrid robot: a failed plan's proposed action logged as the planner's action (not -1)",
+        "agents/robots/hybrid.py",
+        "planner_action=prop.action if prop is not None and prop.success else -1,",
+        "planner_action=prop.action if prop is not None else -1,",
+        gate("hybrid_robot"),
+    ),
+    Bug(
+        "fresh38 robot base: a stalled robot's random move may be wait (the partner left waiting again)",
+        "agents/robots/base.py",
+        "moves = [int(i) for i in np.flatnonzero(turn.mask) if i != wait]",
+        "moves = [int(i) for i in np.flatnonzero(turn.mask)]",
+        gate("robot_base"),
+    ),
+    Bug(
+        "fresh38 planner robot: a move taken because the partner stalled logged as the guard's, not a random one",
+        "agents/robots/planner.py",
+        '"random", action, reason="partner_stalled"',
+        '"guard", action, reason="partner_stalled"',
+        gate("planner_robot"),
+    ),
+    Bug(
+        "fresh38 regret: a run with exactly min_tail seconds left after the switch gets no time to recover",
+        "training/regret.py",
+        "if stop - switch_at < min_tail:",
+        "if stop - switch_at <= min_tail:",
+        gate("regret"),
+    ),
+    Bug(
+        "fresh38 planner plan: the human's action distribution peaks on the robot's planned action, and the "
+        "robot's on the human's",
+        "agents/planner/plan.py",
+        "action = self.robot_action if agent is Agent.ROBOT else self.human_action",
+        "action = self.human_action if agent is Agent.ROBOT else self.robot_action",
+        gate("planner_plan"),
+    ),
+    Bug(
+        "fresh38 planner: the budget failure's message swaps the node budget and the nodes expanded",
+        "agents/planner/planner.py",
+        'return f"budget: node budget of {budget} exhausted ({nodes} nodes) before the optimum was proven"',
+        'return f"budget: node budget of {nodes} exhausted ({budget} nodes) before the optimum was proven"',
+        gate("planner_main"),
+    ),
+    Bug(
+        "fresh38 preference: accept=0 refused (a human who never takes cannot be made)",
+        "agents/humans/preference.py",
+        "if not 0.0 <= accept <= 1.0:",
+        "if not 0.0 < accept <= 1.0:",
+        gate("preference"),
+    ),
+    Bug(
+        "fresh38 trace: an undecodable trace file's line number one too low (the line before the bad byte)",
+        "agents/humans/trace.py",
+        'return f":{len(_LINE_END.findall(data, 0, exc.start)) + 1}"',
+        'return f":{len(_LINE_END.findall(data, 0, exc.start))}"',
+        gate("trace"),
+    ),
+    Bug(
+        "fresh38 population: a population of exactly MAX_MEMBERS members refused as too large",
+        "agents/humans/population.py",
+        "if len(items) > MAX_MEMBERS:",
+        "if len(items) >= MAX_MEMBERS:",
+        gate("population"),
+    ),
+    Bug(
+        "fresh38 human switching: two equal thresholds accepted (a phase that never plays)",
+        "agents/humans/switching.py",
+        "if any(b <= a for a, b in itertools.pairwise(at)):",
+        "if any(b < a for a, b in itertools.pairwise(at)):",
+        gate("human_switching"),
+    ),
+    Bug(
+        "fresh38 noisy: temperature 0 (the exactly cooperative human) refused",
+        "agents/humans/noisy.py",
+        "if not temperature >= 0.0:",
+        "if not temperature > 0.0:",
+        gate("noisy"),
+    ),
+)
+"""Round 38, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen older modules just brought into the mutation gate, each bug run against its module's gate
+tests from modules.toml: the rule table, the spec parser, the scenario loader, the durations, the AEC
+environment, the hybrid, base and planner robots, the regret metrics, the planner's plans and search, the
+preference human, the traces, the populations, the switching human and the noisy human."""
+ROUND38_TESTS = "tests/training/test_pinned_round38.py"
+"""The values round 38's missed bugs changed, pinned after the round: every round-38 bug runs them too."""
+FRESH38 = pinned_after(FRESH38, ROUND38_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -5137,6 +5262,7 @@ ALL = (
     + FRESH35
     + FRESH36
     + FRESH37
+    + FRESH38
 )
 
 
