@@ -166,3 +166,26 @@ def test_the_bound_gives_back_an_empty_move_only_where_the_robot_stands_by_a_spo
     flags = [flag for _, spots in space.saves_at for flag in spots]
     if scenario == "paper2015":  # some spots count, others not (roboergosum: none costs a move)
         assert any(flags) and not all(flags)
+
+
+def test_the_bound_stays_admissible_when_idling_costs_more_than_working() -> None:
+    """With the idle weight above the effort weight (``b < 0`` in ``Space``), the bound at
+    every state of seeded walks is at most the optimal cost the search finds from it (the
+    bound's defining property, checked against the search rather than worked by hand)."""
+    weights = CostWeights(time=1.0, human_effort=0.1, effort_balance=0.0, human_idle=0.5, human_holding=0.0)
+    checked = 0
+    for name in ("paper2015", "generated:objects=4,human_only=0.8,seed=1"):
+        world = World(name)
+        planner = Planner(world, PlannerConfig(weights=weights))
+        rng = np.random.default_rng(0)
+        for _ in range(2):
+            state = world.initial_state(rng)
+            for _ in range(10):
+                result = planner.plan(state)
+                if result.success:
+                    assert planner.space.bound(state) <= result.cost + 1e-9, state
+                    checked += 1
+                for agent in Agent:
+                    acts = world.feasible_indices(state, agent)
+                    state = world.step(state, agent, int(rng.choice(acts))).state
+    assert checked >= 20
