@@ -20,6 +20,7 @@ import pytest
 
 from hg_marl.agents.progress import PROGRESS_AFTER
 from hg_marl.agents.robots import HybridRobot
+from hg_marl.agents.robots.base import Robot
 from hg_marl.core import WAIT, Agent, State, World
 from hg_marl.policy import Decision, Turn
 
@@ -38,9 +39,30 @@ def _start(robot: HybridRobot) -> State:
     return WORLD.initial_state(np.random.default_rng(0))
 
 
-def _record(robot: HybridRobot) -> Decision:
+def _record(robot: Robot) -> Decision:
     assert robot.last_decision is not None
     return robot.last_decision
+
+
+STALLED = State((4, 6, 6), 3)
+"""paper2015: tape1 on human_mat_1 (spot 4), the others in the bin (6), the robot at human_side
+(location 3): the plan needs the human."""
+
+
+def stall_partner(robot: Robot) -> tuple[int, list[str]]:
+    """Ask ``robot`` at :data:`STALLED` while the human only waits, until it decides for a
+    stalled partner (at most 8 turns): its last move and every decision's reason."""
+    robot.reset(WORLD, Agent.ROBOT, np.random.default_rng(0))
+    robot.act(_turn(STALLED))
+    assert _record(robot).expected_human_action not in (-1, HUMAN_WAIT)
+    reasons: list[str] = []
+    move = -1
+    for _ in range(8):
+        move = robot.act(_turn(STALLED, last=(ROBOT_WAIT, HUMAN_WAIT)))
+        reasons.append(_record(robot).reason)
+        if reasons[-1] == "partner_stalled":
+            break
+    return move, reasons
 
 
 def test_the_default_hybrid_learns_on_canonical_states() -> None:
@@ -129,17 +151,8 @@ def test_a_state_standing_still_is_left_by_the_progress_guard() -> None:
 def test_a_partner_who_keeps_not_doing_what_was_expected_gets_a_feasible_move_of_the_habits() -> None:
     """Tape1 on the human's mat, the others in the bin: the plan needs the human, who only waits."""
     robot = HybridRobot(criterion="planner")
-    robot.reset(WORLD, Agent.ROBOT, np.random.default_rng(0))
-    state = State((4, 6, 6), 3)  # paper2015: spot 4 is human_mat_1, 6 the bin, location 3 human_side
-    robot.act(_turn(state))
-    assert _record(robot).expected_human_action not in (-1, HUMAN_WAIT)
-    reasons = []
-    for _ in range(8):
-        move = robot.act(_turn(state, last=(ROBOT_WAIT, HUMAN_WAIT)))
-        reasons.append(_record(robot).reason)
-        if reasons[-1] == "partner_stalled":
-            break
+    move, reasons = stall_partner(robot)
     assert reasons[-1] == "partner_stalled" and "no_progress" not in reasons
     record = _record(robot)
     assert record.expert == "habit" and not record.planner_consulted
-    assert move == record.action and move != ROBOT_WAIT and WORLD.mask(state, Agent.ROBOT)[move]
+    assert move == record.action and move != ROBOT_WAIT and WORLD.mask(STALLED, Agent.ROBOT)[move]

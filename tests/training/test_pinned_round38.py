@@ -16,23 +16,8 @@ import numpy as np
 import pytest
 
 from hg_marl.agents.planner.plan import PlanResult, failure
-from hg_marl.core import WAIT, Agent, State, World
-from hg_marl.policy import Decision, Turn
-
-WORLD = World("paper2015")
-ROBOT_WAIT = WORLD.index(Agent.ROBOT, WAIT)
-HUMAN_WAIT = WORLD.index(Agent.HUMAN, WAIT)
-
-
-def _turn(state: State, last: tuple[int, int] = (-1, -1)) -> Turn:
-    obs = {"observation": WORLD.facts(state), "action_mask": WORLD.mask(state, Agent.ROBOT)}
-    return Turn(WORLD, state, Agent.ROBOT, obs, last_actions=last)
-
-
-def _record(robot: Any) -> Decision:
-    record = robot.last_decision
-    assert record is not None
-    return record
+from hg_marl.core import Agent, State
+from tests.agents.test_pinned_hybrid_robot_gate import ROBOT_WAIT, STALLED, WORLD, _record, _turn, stall_partner
 
 
 def test_a_bool_is_refused_as_an_action() -> None:
@@ -77,21 +62,11 @@ def test_a_planner_robots_move_for_a_stalled_partner_is_recorded_as_a_random_one
     from hg_marl.agents.robots.planner import PlannerRobot
 
     robot = PlannerRobot()
-    robot.reset(WORLD, Agent.ROBOT, np.random.default_rng(0))
-    state = State((4, 6, 6), 3)  # paper2015: spot 4 is human_mat_1, 6 the bin, location 3 human_side
-    robot.act(_turn(state))
-    assert _record(robot).expected_human_action not in (-1, HUMAN_WAIT)
-    reasons = []
-    move = -1
-    for _ in range(8):
-        move = robot.act(_turn(state, last=(ROBOT_WAIT, HUMAN_WAIT)))
-        reasons.append(_record(robot).reason)
-        if reasons[-1] == "partner_stalled":
-            break
+    move, reasons = stall_partner(robot)
     assert reasons[-1] == "partner_stalled" and "no_progress" not in reasons
     record = _record(robot)
     assert record.expert == "random"
-    assert move == record.action and move != ROBOT_WAIT and WORLD.mask(state, Agent.ROBOT)[move]
+    assert move == record.action and move != ROBOT_WAIT and WORLD.mask(STALLED, Agent.ROBOT)[move]
 
 
 def test_a_budget_failure_names_the_budget_then_the_nodes_expanded() -> None:
