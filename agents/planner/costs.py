@@ -25,6 +25,7 @@ of a non-wait action, 0 for ``wait``):
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, fields
 from typing import NamedTuple
 
@@ -120,6 +121,10 @@ class PlannerConfig:
             raise ValueError(f"PlannerConfig.node_budget must be >= 1, got {self.node_budget}")
         if self.cache_size < 0:
             raise ValueError(f"PlannerConfig.cache_size must be >= 0, got {self.cache_size}")
+        if not (0 <= self.value_tolerance < math.inf):  # a negative one is never met: every search would fail
+            raise ValueError(f"PlannerConfig.value_tolerance must be finite and >= 0, got {self.value_tolerance}")
+        if self.max_sweeps < 1:
+            raise ValueError(f"PlannerConfig.max_sweeps must be >= 1, got {self.max_sweeps}")
 
 
 def robot_active(world: World, robot_action: int, human_action: int) -> bool:

@@ -75,11 +75,17 @@ def robot_alone(d: Domain, o: int, status: int, at: int) -> Work | None:
 
 
 def human_alone(d: Domain, o: int, status: int, at: int) -> Work | None:
-    """The human picks ``o`` from its side and throws it into a bin it reaches."""
+    """The human picks ``o`` from its side and throws it into a bin it reaches.
+
+    An object already in the human's hand (or its own offer) needs only the throw: a human
+    who takes but never picks still throws what it took.
+    """
     t = d.dur
-    if not d.bin_human[o] or not d.human_can({Kind.PICK, Kind.THROW}):
+    if not d.bin_human[o] or not d.human_can({Kind.THROW}):
         return None
     if status < d.n_spots and d.spot_human[status]:
+        if not d.human_can({Kind.PICK}):
+            return None
         return Work(0.0, t.pick + t.throw, _NONE, frozenset({Kind.PICK}), t.pick)
     if status in (d.human_hand, d.human_offer):
         return Work(0.0, t.throw, _NONE, frozenset({Kind.THROW}))

@@ -167,3 +167,27 @@ def test_roboergosum_plans_execute(seed: int) -> None:
     planner = Planner(world)
     state = world.initial_state(np.random.default_rng(seed))
     check_plan(world, planner, state, planner.plan(state))
+
+
+@pytest.mark.parametrize(
+    ("setting", "value"),
+    [
+        ("value_tolerance", -1e-9),
+        ("value_tolerance", math.nan),
+        ("value_tolerance", math.inf),
+        ("max_sweeps", 0),
+        ("node_budget", 0),
+        ("cache_size", -1),
+    ],
+)
+def test_search_settings_no_search_can_use_are_refused(setting: str, value: float) -> None:
+    """Value iteration stops when no value moves more than the tolerance: a negative one
+    (or NaN) is never met and every stochastic search would end in 'budget', an infinite
+    one stops after the first sweep, and no sweep at all computes nothing; a search of no
+    node finds nothing, and a cache cannot hold fewer than no plans. Each is refused with
+    the setting named; the least usable values (tolerance 0, one sweep, one node, no cache)
+    are accepted."""
+    with pytest.raises(ValueError, match=f"PlannerConfig.{setting} must be"):
+        PlannerConfig(**{setting: value})
+    least = PlannerConfig(value_tolerance=0.0, max_sweeps=1, node_budget=1, cache_size=0)
+    assert (least.value_tolerance, least.max_sweeps, least.node_budget, least.cache_size) == (0.0, 1, 1, 0)

@@ -1,0 +1,60 @@
+"""The training runs' JSON and text writers, pinned for the mutation gate.
+
+Expected values are worked by hand from the module's docstrings: ``write_json`` writes
+strict JSON (no ``NaN`` token ever), indented by two, keys sorted, one trailing newline,
+non-finite floats as ``null`` at any depth; ``write_text`` writes the text as given. Both
+return the path written and go through the atomic writer (no temporary file is left).
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from hg_marl.training.io import write_json, write_text
+
+
+def test_write_text_writes_the_text_as_given_and_returns_its_path(tmp_path: Path) -> None:
+    """The text is written byte for byte (no newline added), into a folder made on the way."""
+    target = tmp_path / "deep" / "note.txt"
+    assert write_text(target, "a\nb") == target
+    assert target.read_text() == "a\nb"
+    assert sorted(p.name for p in target.parent.iterdir()) == ["note.txt"]  # no temporary file left
+
+
+def test_write_json_returns_the_path_and_leaves_no_temporary_file(tmp_path: Path) -> None:
+    """A string path is accepted; the file is whole JSON; the folder holds it alone."""
+    path = write_json(str(tmp_path / "r.json"), {"x": 1})
+    assert path == tmp_path / "r.json"
+    assert json.loads(path.read_text()) == {"x": 1}
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["r.json"]
+
+
+def test_non_finite_floats_deep_inside_dicts_and_lists_are_null_and_finite_ones_kept(tmp_path: Path) -> None:
+    """Nested three deep: each infinity or NaN is ``null``, each finite float (0.0 too) kept as is."""
+    data = {"outer": [{"inner": (0.0, float("inf"), -2.5)}, [float("nan"), 1e300]]}
+    path = write_json(tmp_path / "n.json", data)
+    assert json.loads(path.read_text()) == {"outer": [{"inner": [0.0, None, -2.5]}, [None, 1e300]]}
+
+
+def test_a_non_float_number_that_reads_as_nan_is_refused_not_written_as_nan(tmp_path: Path) -> None:
+    """Strict JSON: a float32 NaN is not a Python float, so it reaches ``default=float`` as NaN;
+    the writer refuses it (``allow_nan=False``) rather than write the non-JSON token ``NaN``."""
+    with pytest.raises(ValueError):
+        write_json(tmp_path / "bad.json", {"x": np.float32("nan")})
+    assert not (tmp_path / "bad.json").exists()
+
+
+def test_a_non_float_number_is_converted_by_float(tmp_path: Path) -> None:
+    """``default=float``: a float32 0.5 (exact in binary) is written as the number 0.5."""
+    path = write_json(tmp_path / "f.json", {"x": np.float32(0.5)})
+    assert path.read_text() == '{\n  "x": 0.5\n}\n'
+
+
+def test_nested_keys_are_sorted_and_stringified_at_every_level(tmp_path: Path) -> None:
+    """Keys at depth two are strings too, sorted as strings ("10" before "9")."""
+    path = write_json(tmp_path / "k.json", {"z": {9: 1, 10: 2}})
+    assert path.read_text() == '{\n  "z": {\n    "10": 2,\n    "9": 1\n  }\n}\n'
