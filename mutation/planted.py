@@ -5346,6 +5346,130 @@ ROUND39_TESTS = "tests/training/test_pinned_round39.py"
 """The values round 39's missed bugs changed, pinned after the round: every round-39 bug runs them too."""
 FRESH39 = pinned_after(FRESH39, ROUND39_TESTS)
 
+FRESH40: tuple[Bug, ...] = (
+    Bug(
+        "fresh40 human base: p_idle=1 (a human who always idles, documented as allowed) refused",
+        "agents/humans/base.py",
+        "if not 0.0 <= p_idle <= 1.0:",
+        "if not 0.0 <= p_idle < 1.0:",
+        gate("human_base"),
+    ),
+    Bug(
+        "fresh40 cooperative human: a robot give answered as any other robot action of the same duration",
+        "agents/humans/cooperative.py",
+        "(world.durations.of(a.kind), a.kind is Kind.WAIT, a.kind is Kind.GIVE)",
+        "(world.durations.of(a.kind), a.kind is Kind.WAIT)",
+        gate("human_cooperative"),
+    ),
+    Bug(
+        "fresh40 adversarial human: p_idle ignored when a tactic applies (it never idles)",
+        "agents/humans/adversarial.py",
+        "return with_idle(deterministic(index), world, self.p_idle)",
+        "return deterministic(index)",
+        gate("human_adversarial"),
+    ),
+    Bug(
+        "fresh40 replay human: the mismatch warning logged in the first diverging episode only, not once per episode",
+        "agents/humans/replay.py",
+        "self.step = 0\n        self._warned = False",
+        "self.step = 0",
+        gate("human_replay"),
+    ),
+    Bug(
+        "fresh40 meta base: a zero accepted where a positive parameter is required (allow_zero=False)",
+        "agents/meta/base.py",
+        "if v < 0 or (v == 0 and not allow_zero):",
+        "if v < 0:",
+        gate("meta_base"),
+    ),
+    Bug(
+        "fresh40 planner domain: the human counted as picking from spots it does not reach (no refusal)",
+        "agents/planner/domain.py",
+        "if status < d.n_spots and d.spot_human[status]:\n        if not d.human_can({Kind.PICK}):",
+        "if status < d.n_spots:\n        if not d.human_can({Kind.PICK}):",
+        gate("planner_domain"),
+    ),
+    Bug(
+        "fresh40 expectimax: the nominal plan follows the human's least permissive choice set (the human idling)",
+        "agents/planner/expectimax.py",
+        "e = best_edge(max(branches, key=lambda b: len(b[1]))[1], clean[s])",
+        "e = best_edge(min(branches, key=lambda b: len(b[1]))[1], clean[s])",
+        gate("planner_expectimax"),
+    ),
+    Bug(
+        "fresh40 human models: the cooperative model's blocked actions (the monitor's blocking facts) ignored",
+        "agents/planner/models.py",
+        "if self.blocked or self.allowed_kinds != HUMAN_KINDS:",
+        "if self.allowed_kinds != HUMAN_KINDS:",
+        gate("planner_models"),
+    ),
+    Bug(
+        "fresh40 half-step search: at the human's turn an unknown robot action (-1) priced as robot activity",
+        "agents/planner/halfstep.py",
+        "ra >= 0 and ra != wait_r",
+        "ra != wait_r",
+        gate("planner_halfstep"),
+    ),
+    Bug(
+        "fresh40 partnering: a cycle with no task solved counted as solved (the posterior never learns)",
+        "agents/robots/partnering.py",
+        "solved = turn.reward > 0",
+        "solved = turn.reward >= 0",
+        gate("partnering"),
+    ),
+    Bug(
+        "fresh40 study files: a bad [[robots]] table reported one line above its header",
+        "training/study.py",
+        "return tables[index] + 1",
+        "return tables[index]",
+        gate("study_files"),
+    ),
+    Bug(
+        "fresh40 evaluate: a study with no test partners gets no headroom (not every stationary partner's)",
+        "training/evaluate.py",
+        'test = [h for h in pool if study.group(h.label) == "test"] or pool',
+        'test = [h for h in pool if study.group(h.label) == "test"]',
+        gate("evaluate_study"),
+    ),
+    Bug(
+        "fresh40 paper: the amplitude curve reaching exactly the threshold not counted as its rise",
+        "training/paper.py",
+        "above = np.flatnonzero(curve >= threshold)",
+        "above = np.flatnonzero(curve > threshold)",
+        gate("paper_experiment"),
+    ),
+    Bug(
+        "fresh40 views: the partner's action 0 reported with an empty name in info",
+        "agents/views.py",
+        "if partner_action >= 0 else",
+        "if partner_action > 0 else",
+        gate("views"),
+    ),
+    Bug(
+        "fresh40 homogenize: the padding refusal names one past the agent's last real action",
+        "hg_marl/wrappers/homogenize.py",
+        "(real actions 0..{self._n_real[agent] - 1})",
+        "(real actions 0..{self._n_real[agent]})",
+        gate("wrapper_homogenize"),
+    ),
+    Bug(
+        "fresh40 array partners: a population's later members answer with entries of the first member's table",
+        "agents/array_partners.py",
+        "pos[sel], found[sel] = p + self.offset[k], f",
+        "pos[sel], found[sel] = p, f",
+        gate("array_partners"),
+    ),
+)
+"""Round 40, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in sixteen of the thirty-three older modules gated in the nineteenth session, each bug run against its
+module's gate tests from modules.toml: the scripted humans' base, the cooperative, adversarial and
+replay humans, the criteria's base, the planner's domain, expectimax, human models and half-step
+search, the partnering, the study files, the study's evaluation, the paper's experiment, the views,
+the homogenize wrapper and the array partners."""
+ROUND40_TESTS = "tests/training/test_pinned_round40.py"
+"""The values round 40's missed bugs changed, pinned after the round: every round-40 bug runs them too."""
+FRESH40 = pinned_after(FRESH40, ROUND40_TESTS)
+
 
 ALL = (
     BUGS
@@ -5388,6 +5512,7 @@ ALL = (
     + FRESH37
     + FRESH38
     + FRESH39
+    + FRESH40
 )
 
 
