@@ -139,9 +139,9 @@ def test_the_compiled_planner_is_built_quietly_and_cached_by_default(
 
 def test_a_learned_human_given_by_its_spec_is_named_by_that_spec(tmp_path: Path) -> None:
     """An SB3 human plays batched under the name it was asked for (its spec), as a compiled one does."""
-    import torch
-    from stable_baselines3 import PPO
-
+    torch = pytest.importorskip("torch")  # an extra: the lowest-versions session has neither
+    sb3 = pytest.importorskip("stable_baselines3")
+    PPO = sb3.PPO
     from hg_marl.agents.humans.learned import save_sb3_policy
     from hg_marl.agents.views import HumanView
 
