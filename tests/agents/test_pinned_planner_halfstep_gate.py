@@ -47,17 +47,15 @@ class Watched:
     def __getattr__(self, name: str) -> Any:
         return getattr(self.space, name)
 
-    def cached_sums(self, state: State, key: object) -> Any:
-        return self.space.cached_sums(state, key)
-
     def robot_edges(self, state: State) -> Any:
         self.robot_calls.append(state)
-        edges = self.space.robot_edges(state)
-        return tuple(e._replace(h=0.0) for e in edges) if self.zero else edges
+        return self._bounded(self.space.robot_edges(state))
 
     def human_edges(self, state: State) -> Any:
         self.human_calls.append(state)
-        edges = self.space.human_edges(state)
+        return self._bounded(self.space.human_edges(state))
+
+    def _bounded(self, edges: Any) -> Any:
         return tuple(e._replace(h=0.0) for e in edges) if self.zero else edges
 
 
