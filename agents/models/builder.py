@@ -184,27 +184,31 @@ class _Index:
         self.by_id: list[np.ndarray] = []
         self.n = 0
 
-    def add(self, keys: np.ndarray) -> None:
-        """Give ids to the keys not known yet (``keys`` distinct, in the order ids are wanted)."""
+    def add(self, keys: np.ndarray) -> np.ndarray:
+        """Give ids to the keys not known yet (``keys`` distinct, in the order ids are wanted); every key's id."""
         pos = np.searchsorted(self.sorted, keys)
         hit = pos < len(self.sorted)
         hit[hit] = self.sorted[pos[hit]] == keys[hit]
-        new = keys[~hit]
-        if not len(new):
-            return
+        out = np.empty(len(keys), dtype=np.int64)
+        out[hit] = self.ids[pos[hit]]
+        fresh = np.flatnonzero(~hit)
+        new = keys[fresh]
         ids = np.arange(self.n, self.n + len(new), dtype=np.int64)
-        order = np.argsort(new, kind="stable")
-        self.sorted = np.insert(self.sorted, pos[~hit][order], new[order])
-        self.ids = np.insert(self.ids, pos[~hit][order], ids[order])
-        self.by_id.append(new)
-        self.n += len(new)
+        out[fresh] = ids
+        if len(new):
+            order = np.argsort(new, kind="stable")
+            self.sorted = np.insert(self.sorted, pos[fresh][order], new[order])
+            self.ids = np.insert(self.ids, pos[fresh][order], ids[order])
+            self.by_id.append(new)
+            self.n += len(new)
+        return out
 
     def id_of(self, keys: np.ndarray) -> np.ndarray:
         """Ids of known keys."""
         return self.ids[positions(self.sorted, keys)]
 
     def keys(self) -> np.ndarray:
-        return np.concatenate(self.by_id) if self.by_id else np.zeros(0, dtype=np.int64)
+        return np.concatenate([np.zeros(0, dtype=np.int64), *self.by_id])  # in order of their ids
 
 
 @dataclass
@@ -254,15 +258,16 @@ class _Front:
             ps, pa = np.nonzero(np.concatenate([mask, fails], axis=1))  # row-major: in option order
             failing = pa == n_robot
             pa[failing] = np.argmin(mask[ps[failing]], axis=1)
+            feasible = ~failing
         else:
             ps, pa = np.nonzero(mask)
-        clean = rules.is_clean(b)[ps]
+            feasible = np.ones(len(pa), dtype=bool)
         pb = _rows(b, ps)
-        ok, d_robot, _ = rules.step(pb, Agent.ROBOT, pa, mask[ps])
-        terminal = ok & (pa == rules.wait[Agent.ROBOT]) & clean
+        ok, d_robot, reward = rules.step(pb, Agent.ROBOT, pa, ok=feasible)
+        terminal = reward > 0  # the rules' own reward: a wait on a clean table completes the task
         live = np.flatnonzero(~terminal)
-        live_b = _rows(pb, live)
-        mids = (packer.pack(live_b, np.where(ok[live], pa[live], -1)), packer.pack(live_b))
+        plain = packer.pack(pb)[live]
+        mids = (packer.seen(plain, np.where(ok[live], pa[live], -1)), plain)
         distinct: dict[bool, tuple[np.ndarray, np.ndarray]] = {}
         shared: dict[bool, KeyBatch] = {}
         for uses in sorted({t.uses_robot_action for t in tables}):
@@ -411,8 +416,7 @@ def build_model(
                 lo = hi
                 continue
             uniq, inv = unique_inverse(np.concatenate([o[2].next[o[3]] for o in outcomes]))
-            index.add(uniq)  # sorted: new states get ids in key order
-            ids = index.id_of(uniq)[inv]
+            ids = index.add(uniq)[inv]  # sorted: new states get ids in key order
             at = 0
             for flow, (tcount, pair_of, ans, entry) in zip(flows, outcomes, strict=True):
                 flow["tcount"].append(tcount)

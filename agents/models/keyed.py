@@ -165,7 +165,10 @@ class SegmentTable:
 
     def lacks(self, keys: np.ndarray, searches: Searches | None = None) -> np.ndarray:
         """Per key of ``keys``, whether the table lacks it (``searches``: as :meth:`lookup`)."""
-        lack: np.ndarray = self._search("lacks", keys, lambda: ~known(self.keys, keys), searches)
+        if not len(self.keys):
+            return np.ones(len(keys), dtype=bool)
+        at = self._search("positions", keys, lambda: positions(self.keys, keys), searches)  # :meth:`lookup`'s too
+        lack: np.ndarray = self.keys[np.minimum(at, len(self.keys) - 1)] != keys
         return lack
 
     def _search(self, kind: str, keys: np.ndarray, compute: Callable[[], Any], searches: Searches | None) -> Any:

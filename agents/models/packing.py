@@ -47,9 +47,12 @@ class StatePacker:
         w, n = self.weights, self.n_objects
         key = b.where @ w[:n]
         key += b.robot_at * w[n] + (b.offer_by + 1) * w[n + 1] + (b.offer_obj + 1) * w[n + 2]
-        if seen is not None:
-            key += (seen + 1) * w[n + 3]
-        return key
+        return key if seen is None else self.seen(key, seen)
+
+    def seen(self, keys: np.ndarray, seen: np.ndarray) -> np.ndarray:
+        """``keys`` (packed with no action seen) with the robot action ``seen`` added (-1: none)."""
+        out: np.ndarray = keys + (seen + 1) * self.weights[self.n_objects + 3]
+        return out
 
     def unpack(self, keys: np.ndarray) -> tuple[BatchState, np.ndarray]:
         """The batch and the robot action seen (-1: none) that :meth:`pack` made ``keys`` from."""

@@ -91,6 +91,9 @@ class BatchedRules:
         self.goto_static = np.array(t.goto_static, dtype=np.int64)  # (at, bins + human)
         self.spot_human = np.array(t.spot_human, dtype=bool)
         self.done = np.array([[q in t.done[o] for q in range(p)] for o in range(n)], dtype=bool)
+        self._done_flat = self.done.ravel()
+        self._done_at = np.arange(n, dtype=np.int64) * p
+        """Object ``o`` at place ``q`` is done at ``_done_flat[_done_at[o] + q]`` (one flat gather per batch)."""
         self.kind = tuple(np.array([s.kind for s in specs], dtype=np.int64) for specs in t.specs)
         self.obj = tuple(np.array([s.obj for s in specs], dtype=np.int64) for specs in t.specs)
         self.target = tuple(np.array([s.target for s in specs], dtype=np.int64) for specs in t.specs)
@@ -105,7 +108,7 @@ class BatchedRules:
     # ---- questions ------------------------------------------------------------------
     def is_clean(self, b: BatchState) -> np.ndarray:
         """Per table, whether every object is in a bin that accepts it."""
-        return self.done[np.arange(self.n_objects), b.where].all(axis=1)
+        return np.asarray(self._done_flat[b.where + self._done_at].all(axis=1))
 
     def masks(self, b: BatchState, agent: int) -> np.ndarray:
         """(N, n_actions) booleans: ``RuleTable.feasible`` for every table and action."""
@@ -138,21 +141,28 @@ class BatchedRules:
         return out
 
     def step(
-        self, b: BatchState, agent: int, actions: np.ndarray, mask: np.ndarray | None = None
+        self,
+        b: BatchState,
+        agent: int,
+        actions: np.ndarray,
+        mask: np.ndarray | None = None,
+        ok: np.ndarray | None = None,
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Apply ``RuleTable.successor`` in place: returns (ok, duration, reward) per table.
 
         ``mask`` may pass the masks of ``b`` for ``agent`` if already computed (they must be
         those of the state before the offer lapses; see below, they agree on every action).
+        ``ok`` may pass each action's feasibility instead, where the caller read it from
+        those masks (the model builder: the actions are the masks' own options), so that a
+        row of masks is not gathered per action.
         """
         rows = np.arange(len(b))
         kind, o, target = self.kind[agent][actions], self.obj[agent][actions], self.target[agent][actions]
         # a partner's pending offer lapses unless this is its take; a failed take lets it lapse too.
         # The masks before and after the lapse agree: only TAKE depends on the offer, and a take of
         # the offered object keeps it.
-        if mask is None:
-            mask = self.masks(b, agent)
-        ok = mask[rows, actions]
+        if ok is None:
+            ok = (self.masks(b, agent) if mask is None else mask)[rows, actions]
         take_reply = (kind == Kind.TAKE) & (o == b.offer_obj)
         lapse = (b.offer_by == 1 - agent) & ~(take_reply & ok)
         reward = np.zeros(len(b))
@@ -180,10 +190,9 @@ class BatchedRules:
         b.offer_obj[gave] = o[gave]
         went = ok & (kind == Kind.GOTO)
         if went.any():
-            g, t = rows[went], target[went]
+            g, t = np.flatnonzero(went), target[went]
             n = self.n_objects
-            obj_t = np.minimum(t, n - 1)
-            to_obj = self.goto_obj[at[g], where[g, obj_t]]
+            to_obj = self.goto_obj[at[g], where.ravel()[g * n + np.minimum(t, n - 1)]]
             to_static = self.goto_static[at[g], np.maximum(t - n, 0)]
             at[g] = np.where(t < n, to_obj, to_static)
         duration = np.where(ok, self.duration[agent][actions], self.failed)

@@ -264,7 +264,11 @@ def test_tables_with_the_same_keys_search_once_and_share_the_merged_keys() -> No
     searches.get = counted
     assert b.lacks(queries, searches).tolist() == [False, True, False] and calls == []  # a's answer, not searched
     assert b.keys is a.keys  # equal keys: b now shares a's array
-    assert c.lacks(queries, searches).tolist() == [False, False, True] and calls == ["lacks"]  # other keys: its own
+    # other keys: its own search (the positions, which a lookup of the same queries then reads)
+    assert c.lacks(queries, searches).tolist() == [False, False, True] and calls == ["positions"]
+    both = np.array([7, 8], dtype=np.int64)  # c holds both: a lookup after the check reads the check's search
+    assert not c.lacks(both, searches).any() and c.lookup(both, searches=searches)[0].tolist() == [1, 2]
+    assert calls == ["positions", "positions"]
     new = np.array([8], dtype=np.int64)
     for table, v in ((a, 10), (b, 20)):
         table.add(new, np.array([1]), {"v": np.array([v])}, searches)

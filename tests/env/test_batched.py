@@ -54,7 +54,8 @@ def partner_of(scenario: str, human: str) -> object:
 def test_rules_step_every_table_as_world_step(scenario: str, seed: int, p_feasible: float) -> None:
     """Both agents' random actions (feasible with probability p, else any index).
 
-    Same states, oks, durations, rewards, facts and masks as ``World.step``.
+    Same states, oks, durations, rewards, facts and masks as ``World.step``, whichever
+    way the step is told what is feasible.
     """
     world = world_of(scenario)
     rules = BatchedRules(world)
@@ -69,7 +70,9 @@ def test_rules_step_every_table_as_world_step(scenario: str, seed: int, p_feasib
         actions = rng.integers(world.n_actions(agent), size=16)
         for i in np.flatnonzero(rng.random(16) < p_feasible):
             actions[i] = rng.choice(np.flatnonzero(masks[i]))
-        ok, duration, reward = rules.step(batch, agent, actions)
+        # each of the three forms: masks computed inside, passed, or the actions' feasibility passed
+        given = [{}, {"mask": masks}, {"ok": masks[np.arange(16), actions]}][(t // 2) % 3]
+        ok, duration, reward = rules.step(batch, agent, actions, **given)
         for i in range(16):
             out = world.step(states[i], agent, int(actions[i]))
             assert (out.state, out.ok, out.duration, out.reward) == (batch.state(i), ok[i], duration[i], reward[i])
