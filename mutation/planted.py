@@ -5470,6 +5470,130 @@ ROUND40_TESTS = "tests/training/test_pinned_round40.py"
 """The values round 40's missed bugs changed, pinned after the round: every round-40 bug runs them too."""
 FRESH40 = pinned_after(FRESH40, ROUND40_TESTS)
 
+FRESH41: tuple[Bug, ...] = (
+    Bug(
+        "fresh41 lazy human: never picks the first object (a pick of object 0 taken for 'nothing to do')",
+        "agents/humans/lazy.py",
+        "if index < 0:",
+        "if index <= 0:",
+        gate("human_lazy"),
+    ),
+    Bug(
+        "fresh41 no_handover human: idles a tenth of its turns by default (documented 0: always helps)",
+        "agents/humans/no_handover.py",
+        "def __init__(self, p_idle: float = 0.0) -> None:",
+        "def __init__(self, p_idle: float = 0.1) -> None:",
+        gate("human_no_handover"),
+    ),
+    Bug(
+        "fresh41 random human: act never draws the last of its options",
+        "agents/humans/random_human.py",
+        "dist[int(self.rng.integers(len(dist)))][0]",
+        "dist[int(self.rng.integers(len(dist) - 1))][0]",
+        gate("human_random"),
+    ),
+    Bug(
+        "fresh41 coin: the default coin gives the planner 0.6, not the paper's 0.5",
+        "agents/meta/coin.py",
+        "def __init__(self, p: float = 0.5) -> None:",
+        "def __init__(self, p: float = 0.6) -> None:",
+        gate("meta_coin"),
+    ),
+    Bug(
+        "fresh41 io: a NaN inside a tuple is not written as null, so writing the JSON fails",
+        "training/io.py",
+        "if isinstance(value, list | tuple):",
+        "if isinstance(value, list):",
+        gate("training_io"),
+    ),
+    Bug(
+        "fresh41 reproduce: adaptation_seeds ignored (the adaptation stage runs its default seed count)",
+        "training/reproduce.py",
+        "AdaptationConfig(scenario=config.scenario, seeds=config.adaptation_seeds)",
+        "AdaptationConfig(scenario=config.scenario)",
+        gate("reproduce_driver"),
+    ),
+    Bug(
+        "fresh41 habit robot: its decision time logged as the wall time, not the cost model's habit cost",
+        "agents/robots/habit.py",
+        "decision_time=self.cost.habit_cost(wall),",
+        "decision_time=wall,",
+        gate("habit_robot"),
+    ),
+    Bug(
+        "fresh41 canonical view: the habit asked at the original facts while its actions are permuted",
+        "agents/robots/canonical.py",
+        "return self.world.facts(canonical), maps[0], maps[1]",
+        "return facts, maps[0], maps[1]",
+        gate("canonical_view"),
+    ),
+    Bug(
+        "fresh41 partner specs: a robot that is neither a name nor an Actor accepted (no one-line refusal)",
+        "agents/partner_specs.py",
+        "        if not isinstance(robot, Actor):\n            raise",
+        "        if robot is None:\n            raise",
+        gate("partner_specs"),
+    ),
+    Bug(
+        "fresh41 flat: the same name for obs_key and mask_key accepted (the mask overwrites the facts)",
+        "hg_marl/wrappers/flat.py",
+        "if not obs_key or not mask_key or obs_key == mask_key:",
+        "if not obs_key or not mask_key:",
+        gate("wrapper_flat"),
+    ),
+    Bug(
+        "fresh41 adapters: reset(seed=0) does not reseed the scripted actors (seed 0 not reproducible)",
+        "agents/adapters.py",
+        "        if seed is not None:\n            self._rng = np.random.default_rng(seed)",
+        "        if seed:\n            self._rng = np.random.default_rng(seed)",
+        gate("adapters"),
+    ),
+    Bug(
+        "fresh41 play stats: the median response time of an even count is the lower middle value",
+        "training/play/stats.py",
+        "float(statistics.median(rt))",
+        "float(statistics.median_low(rt))",
+        gate("play_stats"),
+    ),
+    Bug(
+        "fresh41 learned: a table policy's random fallback spreads 1/(all actions), not 1/(feasible ones)",
+        "agents/humans/learned.py",
+        "p[feasible] = 1.0 / feasible.sum()",
+        "p[feasible] = 1.0 / len(feasible)",
+        gate("learned_human"),
+    ),
+    Bug(
+        "fresh41 batched learned: a human-seat SB3 policy checked against the robot seat (refused)",
+        "agents/batched_learned.py",
+        "human.reset(world, Agent.HUMAN, np.random.default_rng(0))",
+        "human.reset(world, Agent.ROBOT, np.random.default_rng(0))",
+        gate("batched_learned"),
+    ),
+    Bug(
+        "fresh41 SB3 evaluation: a rate over no seeds is 0 tasks per hour, not NaN",
+        "training/baselines/evaluation.py",
+        "return float(np.mean(rates)) if rates else math.nan",
+        "return float(np.mean(rates)) if rates else 0.0",
+        gate("baselines_evaluation"),
+    ),
+    Bug(
+        "fresh41 ppo batched: --checkpoint-freq 0 (no checkpoints, documented) refused",
+        "training/baselines/ppo_batched.py",
+        'check_int(self.checkpoint_freq, "--checkpoint-freq", minimum=0)',
+        'check_int(self.checkpoint_freq, "--checkpoint-freq", minimum=1)',
+        gate("ppo_batched"),
+    ),
+)
+"""Round 41, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in sixteen more of the modules gated in the nineteenth session, each bug run against its module's gate
+tests from modules.toml: the lazy, no-handover and random humans, the coin criterion, the result
+writers, the reproduce driver, the habit robot, the canonical view, the partner specs, the flat
+wrapper, the scripted-seat adapters, the play statistics, the learned human, the batched learned
+partner, the SB3 evaluation and the batched PPO."""
+ROUND41_TESTS = "tests/training/test_pinned_round41.py"
+"""The values round 41's missed bugs changed, pinned after the round: every round-41 bug runs them too."""
+FRESH41 = pinned_after(FRESH41, ROUND41_TESTS)
+
 
 ALL = (
     BUGS
@@ -5513,6 +5637,7 @@ ALL = (
     + FRESH38
     + FRESH39
     + FRESH40
+    + FRESH41
 )
 
 
