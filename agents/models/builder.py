@@ -415,15 +415,16 @@ def build_model(
                 bar.update(hi - lo)
                 lo = hi
                 continue
-            uniq, inv = unique_inverse(np.concatenate([o[2].next[o[3]] for o in outcomes]))
+            # the next states of the distinct keys' answers (every one is some pair's): fewer than the pairs'
+            uniq, inv = unique_inverse(np.concatenate([o[2].next for o in outcomes]))
             ids = index.add(uniq)[inv]  # sorted: new states get ids in key order
             at = 0
             for flow, (tcount, pair_of, ans, entry) in zip(flows, outcomes, strict=True):
                 flow["tcount"].append(tcount)
-                flow["next"].append(ids[at : at + len(entry)])
+                flow["next"].append(ids[at : at + len(ans.next)][entry])
                 flow["prob"].append(ans.prob[entry])
                 flow["tau"].append(np.maximum(d_robot[pair_of], ans.d_human[entry]))
-                at += len(entry)
+                at += len(ans.next)
             parts["size"].append(np.bincount(ps, minlength=hi - lo))
             parts["action"].append(pa)
             parts["terminal"].append(terminal)
