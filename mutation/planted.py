@@ -5595,6 +5595,131 @@ ROUND41_TESTS = "tests/training/test_pinned_round41.py"
 FRESH41 = pinned_after(FRESH41, ROUND41_TESTS)
 
 
+FRESH42: tuple[Bug, ...] = (
+    Bug(
+        "fresh42 parallel view: the agent-mismatch error names the agents sent as the live ones",
+        "hg_marl/envs/parallel.py",
+        'f"parallel step needs one action for each live agent {sorted(live)}; "',
+        'f"parallel step needs one action for each live agent {sorted(actions)}; "',
+        gate("parallel_view"),
+    ),
+    Bug(
+        "fresh42 audit: audit_totals reports every sent action as infeasible (sums sent twice)",
+        "hg_marl/wrappers/audit.py",
+        "infeasible[agent] = infeasible.get(agent, 0) + audit.infeasible[agent]",
+        "infeasible[agent] = infeasible.get(agent, 0) + n",
+        gate("wrapper_audit"),
+    ),
+    Bug(
+        "fresh42 partner posterior: decay=1 (documented: never forget) refused",
+        "agents/partner.py",
+        "if not 0.0 < decay <= 1.0 or",
+        "if not 0.0 < decay < 1.0 or",
+        gate("partner"),
+    ),
+    Bug(
+        "fresh42 hyperparams: a malformed YAML file's error names the line before the bad one",
+        "training/baselines/hyperparams.py",
+        'at = f"{source}:{mark.line + 1}"',
+        'at = f"{source}:{mark.line}"',
+        gate("baselines_hyperparams"),
+    ),
+    Bug(
+        "fresh42 sb3 limits: the documented widest LSTM (1024 units) and deepest (4 layers) refused",
+        "agents/sb3_limits.py",
+        "1 <= value <= most",
+        "1 <= value < most",
+        gate("sb3_limits"),
+    ),
+    Bug(
+        "fresh42 comparison: the planner and hybrid rows count the training seeds, not the evaluation seeds",
+        "training/baselines/comparison.py",
+        '"seeds": len(config.eval_seeds),',
+        '"seeds": config.seeds,',
+        gate("baselines_comparison"),
+    ),
+    Bug(
+        "fresh42 sb3 vec env: seed(s) reports the same seed for every sub-env, not s, s + 1, ...",
+        "hg_marl/wrappers/sb3.py",
+        "return [None if seed is None else seed + i for i in range(self.num_envs)]",
+        "return [None if seed is None else seed for i in range(self.num_envs)]",
+        gate("sb3_wrapper"),
+    ),
+    Bug(
+        "fresh42 convert: a robot-seat zip is converted for the human seat (and vice versa)",
+        "training/baselines/convert.py",
+        'agent = Agent.ROBOT if seat_label == "robot" else Agent.HUMAN',
+        'agent = Agent.ROBOT if seat_label == "human" else Agent.HUMAN',
+        gate("baselines_convert"),
+    ),
+    Bug(
+        "fresh42 sb3 robot: samples its actions by default (documented default: the policy's mode)",
+        "agents/robots/sb3.py",
+        "deterministic: bool = True,",
+        "deterministic: bool = False,",
+        gate("sb3_robot"),
+    ),
+    Bug(
+        "fresh42 play replay: --episode K replays against episode K + 1's moves (one episode late)",
+        "training/play/replay.py",
+        "human.episode = episode - 1",
+        "human.episode = episode",
+        gate("play_replay"),
+    ),
+    Bug(
+        "fresh42 play session: the habit's weight amplitude hidden when it proposed action 0",
+        "training/play/session.py",
+        'has_habit = record.habit_action >= 0 or record.expert == "habit"',
+        'has_habit = record.habit_action > 0 or record.expert == "habit"',
+        gate("play_session"),
+    ),
+    Bug(
+        "fresh42 envs: a partner with parameters after another (cooperative,lazy:p_idle=0.5) glued onto the first",
+        "training/baselines/envs.py",
+        'if "=" in piece and ":" not in piece and specs:',
+        'if "=" in piece and specs:',
+        gate("baselines_envs"),
+    ),
+    Bug(
+        "fresh42 backends: --address HOST:65535 (the highest port) refused",
+        "training/backends.py",
+        "not 1 <= int(match.group(3)) <= 65535",
+        "not 1 <= int(match.group(3)) < 65535",
+        gate("backends"),
+    ),
+    Bug(
+        "fresh42 bc: traces with headers but no steps end in a traceback, not 'no recorded steps'",
+        "training/baselines/bc.py",
+        "if first is None or not actions:",
+        "if first is None:",
+        gate("baselines_bc"),
+    ),
+    Bug(
+        "fresh42 callbacks: an event due exactly at a multiple of freq fires one step (or rollout) late",
+        "training/baselines/callbacks.py",
+        "if self.num_timesteps >= self._next:",
+        "if self.num_timesteps > self._next:",
+        gate("baselines_callbacks"),
+    ),
+    Bug(
+        "fresh42 compare: a cell's record gives the budget as its steps, not the steps it trained",
+        "training/baselines/compare.py",
+        '"steps": result.num_timesteps,',
+        '"steps": config.steps,',
+        gate("baselines_compare"),
+    ),
+)
+"""Round 42, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the last sixteen modules gated in the nineteenth session, each bug run against its module's gate
+tests from modules.toml: the parallel view, the mask audit, the partner monitor and posterior, the
+SB3 hyperparameters and limits, the comparison's summary, the SB3 vector envs, the zip converter,
+the SB3 robot, the play replay and session, the SB3 training envs, the backends, behaviour cloning,
+the SB3 callbacks and the comparison driver."""
+ROUND42_TESTS = "tests/training/test_pinned_round42.py"
+"""The values round 42's missed bug changed, pinned after the round: every round-42 bug runs them too."""
+FRESH42 = pinned_after(FRESH42, ROUND42_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -5638,6 +5763,7 @@ ALL = (
     + FRESH39
     + FRESH40
     + FRESH41
+    + FRESH42
 )
 
 
