@@ -150,28 +150,27 @@ class BatchedRules:
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Apply ``RuleTable.successor`` in place: returns (ok, duration, reward) per table.
 
-        ``mask`` may pass the masks of ``b`` for ``agent`` if already computed (they must be
-        those of the state before the offer lapses; see below, they agree on every action).
+        ``mask`` may pass the masks of ``b`` for ``agent`` if already computed (those of the
+        state before the step: the partner's offer, which a take needs, is still pending).
         ``ok`` may pass each action's feasibility instead, where the caller read it from
         those masks (the model builder: the actions are the masks' own options), so that a
         row of masks is not gathered per action.
         """
         rows = np.arange(len(b))
         kind, o, target = self.kind[agent][actions], self.obj[agent][actions], self.target[agent][actions]
-        # a partner's pending offer lapses unless this is its take; a failed take lets it lapse too.
-        # The masks before and after the lapse agree: only TAKE depends on the offer, and a take of
-        # the offered object keeps it.
+        # a partner's pending offer ends with this step: taken (a take is feasible only for the
+        # offered object, and only while the partner offers it) or lapsed, a failed take included.
+        # The masks before and after it ends agree on every action but that take.
         if ok is None:
             ok = (self.masks(b, agent) if mask is None else mask)[rows, actions]
-        take_reply = (kind == Kind.TAKE) & (o == b.offer_obj)
-        lapse = (b.offer_by == 1 - agent) & ~(take_reply & ok)
+        ended = b.offer_by == 1 - agent
         reward = np.zeros(len(b))
         if agent == Agent.ROBOT:  # a successful wait on a clean table (only the waits need the check)
             waits = np.flatnonzero(ok & (kind == Kind.WAIT))
             if len(waits):
                 reward[waits] = self.is_clean(BatchState(b.where[waits], b.robot_at, b.offer_by, b.offer_obj))
-        b.offer_by[lapse] = -1
-        b.offer_obj[lapse] = -1
+        b.offer_by[ended] = -1
+        b.offer_obj[ended] = -1
         where, at = b.where, b.robot_at
         moves = ok & ((kind == Kind.PICK) | (kind == Kind.TAKE) | (kind == Kind.THROW) | (kind == Kind.PLACE))
         r, ob = rows[moves], o[moves]
@@ -182,9 +181,6 @@ class BatchedRules:
             np.where(k == Kind.PLACE, target[moves], self.hand[agent]),
         )
         where[r, ob] = dest
-        took = ok & (kind == Kind.TAKE)
-        b.offer_by[took] = -1
-        b.offer_obj[took] = -1
         gave = ok & (kind == Kind.GIVE)
         b.offer_by[gave] = agent
         b.offer_obj[gave] = o[gave]
