@@ -5720,6 +5720,131 @@ ROUND42_TESTS = "tests/training/test_pinned_round42.py"
 FRESH42 = pinned_after(FRESH42, ROUND42_TESTS)
 
 
+FRESH43: tuple[Bug, ...] = (
+    Bug(
+        "fresh43 batch rules: a failed give (the robot's failing action) still leaves an offer on the table",
+        "hg_marl/core/batch.py",
+        "gave = ok & (kind == Kind.GIVE)",
+        "gave = kind == Kind.GIVE",
+        gate("batch_rules"),
+    ),
+    Bug(
+        "fresh43 model builder: the first states' ids not sorted with their keys (transitions to the wrong table)",
+        "agents/models/builder.py",
+        "self.ids = np.insert(self.ids, pos[fresh][order], ids[order])",
+        "self.ids = np.insert(self.ids, pos[fresh][order], ids)",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh43 model keyed: a segment table's key points at the next key's entries (answers shifted)",
+        "agents/models/keyed.py",
+        "first = self.n_entries + starts_of(sizes)[:-1]",
+        "first = self.n_entries + starts_of(sizes)[1:]",
+        gate("model_keyed"),
+    ),
+    Bug(
+        "fresh43 model packing: the robot action seen packed into the offered object's digit (keys collide)",
+        "agents/models/packing.py",
+        "(seen + 1) * self.weights[self.n_objects + 3]",
+        "(seen + 1) * self.weights[self.n_objects + 2]",
+        gate("model_packing"),
+    ),
+    Bug(
+        "fresh43 model answers: a batch partly answered already is answered and stored again whole",
+        "agents/models/answers.py",
+        "return batch if lack.all() else batch.rows(np.flatnonzero(lack))",
+        "return batch if lack.any() else batch.rows(np.flatnonzero(lack))",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh43 model partners: a preference human holding an object still takes the robot's offer",
+        "agents/models/partners.py",
+        "offered = (b.offer_by == Agent.ROBOT) & ~(b.where == hand).any(axis=1)",
+        "offered = b.offer_by == Agent.ROBOT",
+        gate("model_partners"),
+    ),
+    Bug(
+        "fresh43 model solve: the seconds per task leave out the re-draw cycle's seconds (rate too high)",
+        "agents/models/solve.py",
+        "np.sum(model.regen_prob * (model.regen_tau + regen))",
+        "np.sum(model.regen_prob * regen)",
+        gate("model_solve"),
+    ),
+    Bug(
+        "fresh43 model chains: a fixed policy's rate read with seconds and probabilities swapped",
+        "agents/models/chains.py",
+        "return starts_of(size), cols[at], probs[at], taus[at]",
+        "return starts_of(size), cols[at], taus[at], probs[at]",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh43 model equivariant: live_calls counts every distinct canonical key of a batch, known ones too",
+        "agents/models/equivariant.py",
+        "self.live_calls += len(new)",
+        "self.live_calls += len(uniq)",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh43 model live: with workers, the last question of the list is dropped (answers misaligned)",
+        "agents/models/live.py",
+        "return [(i, min(i + size, n)) for i in range(0, n, size)]",
+        "return [(i, min(i + size, n - 1)) for i in range(0, n, size)]",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh43 model lazy: a partner that reads the robot's action looked up by the keys without it",
+        "agents/models/lazy.py",
+        "keys = self.mid_seen if table.uses_robot_action else self.mid_plain",
+        "keys = self.mid_plain if table.uses_robot_action else self.mid_seen",
+        gate("model_lazy"),
+    ),
+    Bug(
+        "fresh43 model layouts: canonical layouts keep a class's spots unsorted (states not canonical)",
+        "agents/models/layouts.py",
+        "for o, spot in zip(objs, sorted(spots), strict=True):",
+        "for o, spot in zip(objs, spots, strict=True):",
+        gate("model_layouts"),
+    ),
+    Bug(
+        "fresh43 oracle: value_at a state outside the model reads 0 s, not inf",
+        "agents/oracle.py",
+        "return self.values.get(state, math.inf)",
+        "return self.values.get(state, 0.0)",
+        gate("oracle"),
+    ),
+    Bug(
+        "fresh43 headroom: the Python joint model shows a failed robot action to partners that read it",
+        "agents/headroom.py",
+        'seen = a if ok and getattr(human, "uses_robot_action", False) else -1',
+        'seen = a if getattr(human, "uses_robot_action", False) else -1',
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh43 compiled: a table of exactly max_keys keys refused as over the compiler's budget",
+        "agents/compiled.py",
+        "if model is None or len(table.keys) > max_keys:",
+        "if model is None or len(table.keys) >= max_keys:",
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh43 member models: members solved without the oracle's default symmetry reduction",
+        "agents/member_models.py",
+        '"symmetry": None,',
+        '"symmetry": False,',
+        gate("member_models"),
+    ),
+)
+"""Round 43, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the model builder's modules (the batched rules, the builder, the keyed tables and the packing just
+changed) and the exact references built on them, each bug run against its module's gate tests from
+modules.toml: the batched rules, the builder, the keyed tables, the packing, the answer tables, the
+partners on arrays, the solver, the chains, the equivariant answers, the live answers, the lazy
+transitions, the layouts, the oracle, the headroom, the compiled partners and the member models."""
+ROUND43_TESTS = "tests/training/test_pinned_round43.py"
+"""The values round 43's missed bugs changed, pinned after the round: every round-43 bug runs them too."""
+FRESH43 = pinned_after(FRESH43, ROUND43_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -5764,6 +5889,7 @@ ALL = (
     + FRESH40
     + FRESH41
     + FRESH42
+    + FRESH43
 )
 
 
