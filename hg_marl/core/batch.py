@@ -91,9 +91,6 @@ class BatchedRules:
         self.goto_static = np.array(t.goto_static, dtype=np.int64)  # (at, bins + human)
         self.spot_human = np.array(t.spot_human, dtype=bool)
         self.done = np.array([[q in t.done[o] for q in range(p)] for o in range(n)], dtype=bool)
-        self._done_flat = self.done.ravel()
-        self._done_at = np.arange(n, dtype=np.int64) * p
-        """Object ``o`` at place ``q`` is done at ``_done_flat[_done_at[o] + q]`` (one flat gather per batch)."""
         self.kind = tuple(np.array([s.kind for s in specs], dtype=np.int64) for specs in t.specs)
         self.obj = tuple(np.array([s.obj for s in specs], dtype=np.int64) for specs in t.specs)
         self.target = tuple(np.array([s.target for s in specs], dtype=np.int64) for specs in t.specs)
@@ -108,7 +105,7 @@ class BatchedRules:
     # ---- questions ------------------------------------------------------------------
     def is_clean(self, b: BatchState) -> np.ndarray:
         """Per table, whether every object is in a bin that accepts it."""
-        return np.asarray(self._done_flat[b.where + self._done_at].all(axis=1))
+        return self.done[np.arange(self.n_objects), b.where].all(axis=1)
 
     def masks(self, b: BatchState, agent: int) -> np.ndarray:
         """(N, n_actions) booleans: ``RuleTable.feasible`` for every table and action."""
@@ -186,9 +183,10 @@ class BatchedRules:
         b.offer_obj[gave] = o[gave]
         went = ok & (kind == Kind.GOTO)
         if went.any():
-            g, t = np.flatnonzero(went), target[went]
+            g, t = rows[went], target[went]
             n = self.n_objects
-            to_obj = self.goto_obj[at[g], where.ravel()[g * n + np.minimum(t, n - 1)]]
+            obj_t = np.minimum(t, n - 1)
+            to_obj = self.goto_obj[at[g], where[g, obj_t]]
             to_static = self.goto_static[at[g], np.maximum(t - n, 0)]
             at[g] = np.where(t < n, to_obj, to_static)
         duration = np.where(ok, self.duration[agent][actions], self.failed)
