@@ -1,7 +1,10 @@
 """Model building on arrays beside the Python enumeration it replaced, measured in the same run.
 
 Run: ``python benchmarks/model_build.py [--member m01] [--skip-rates] [--members] [--headroom [--jobs N]]
-[--eight] [--robot]``.
+[--eight] [--robot] [--scenario NAME --population FILE]``. ``--scenario`` and ``--population``
+(default ``roboergosum`` and its bundled population, the goals' table) point 1., 2., 3. and 5.
+at another table: a smaller one checks that every part runs (the test suite does so on
+``paper2015``); the goals are read on the default.
 
 1. **Builder rate** on ``roboergosum`` against a population member (a stationary human;
    no symmetry reduction: the full model). Each builder runs twice: cold (the partner
@@ -38,6 +41,7 @@ from hg_marl.agents.models.python_model import PythonModel
 from hg_marl.agents.oracle import OverBudget, oracle_rate
 from hg_marl.core import Agent, State, World
 
+SCENARIO = "roboergosum"
 POPULATION = "populations/roboergosum.toml"
 
 
@@ -67,11 +71,11 @@ def python_build(world: World, human: Any) -> int:
     return len(model.states)
 
 
-def builder_rates(member: str) -> None:
-    spec = {m.name: m.spec for m in load_population(POPULATION).members()}[member]
-    world = World("roboergosum")
+def builder_rates(member: str, scenario: str = SCENARIO, population: str = POPULATION) -> None:
+    spec = {m.name: m.spec for m in load_population(population).members()}[member]
+    world = World(scenario)
     layouts = layout_distribution(world)
-    print(f"roboergosum against {member} ({spec}), full model, one core:")
+    print(f"{scenario} against {member} ({spec}), full model, one core:")
     tab = Tabulated(stationary_human(spec, world))
     old = new = 0.0
     for run in ("cold", "warm"):
@@ -96,35 +100,35 @@ def report(what: str, run: str, n: int, wall: float, cpu: float) -> None:
     print(f"  {what:<32} {run}: {n:>9,} states, {wall:7.2f} s wall, {cpu:7.2f} s CPU = {n / cpu:>11,.0f} states/s")
 
 
-def members() -> None:
-    print("every roboergosum member's oracle (goal <= 5 s each):")
-    for m in load_population(POPULATION).members():
+def members(scenario: str = SCENARIO, population: str = POPULATION) -> None:
+    print(f"every {scenario} member's oracle (goal <= 5 s each):")
+    for m in load_population(population).members():
         start, cpu = time.perf_counter(), time.process_time()
         try:
-            r = oracle_rate("roboergosum", m.spec, max_seconds=600)
+            r = oracle_rate(scenario, m.spec, max_seconds=600)
             what = f"{r.rate_per_hour:8.3f} tasks/h, {r.n_states:>8,} states, {r.iterations} sweeps"
         except OverBudget as exc:
             what = f"refused: {exc}"
         print(f"  {m.name}: {time.perf_counter() - start:7.2f} s wall, {time.process_time() - cpu:6.2f} s CPU  {what}")
 
 
-def headroom_time(jobs: int) -> None:
+def headroom_time(jobs: int, scenario: str = SCENARIO, population: str = POPULATION) -> None:
     """The headroom in one process and, beside it in the same run, with ``jobs`` forked workers (same matrix)."""
     from hg_marl.agents.headroom import headroom
 
-    pop = load_population(POPULATION)
+    pop = load_population(population)
     matrices = []
     for n in dict.fromkeys((1, jobs)):
         start, cpu = time.perf_counter(), time.process_time()
         try:
-            res = headroom("roboergosum", [(m.name, m.spec) for m in pop.members()], max_seconds=600, jobs=n)
+            res = headroom(scenario, [(m.name, m.spec) for m in pop.members()], max_seconds=600, jobs=n)
             what = f"{res.n_states:,} states, headroom {res.headroom:.3f}"
             matrices.append(res.rates)
         except OverBudget as exc:
             what = f"refused: {exc}"
         wall, spent = time.perf_counter() - start, time.process_time() - cpu
         print(
-            f"headroom roboergosum, whole population, jobs={n}: {wall:.1f} s wall, {spent:.1f} s CPU in the parent "
+            f"headroom {scenario}, whole population, jobs={n}: {wall:.1f} s wall, {spent:.1f} s CPU in the parent "
             f"({what}); goal <= 60 s"
         )
     if len(matrices) == 2:
@@ -146,16 +150,17 @@ def eight() -> None:
     )
 
 
-def robot(sample: int = 300) -> None:
-    """The compiled planner robot on roboergosum: its states by the builder, and the cold plans' cost on a sample."""
+def robot(sample: int = 300, scenario: str = SCENARIO) -> None:
+    """The compiled planner robot on a scenario: its states by the builder, and the cold plans' cost on a sample."""
     import numpy as np
 
     from hg_marl.agents.compiled_robot import MAX_STATES, compile_robot, planner_action, robot_states
 
-    world = World("roboergosum")
+    world = World(scenario)
     cpu = time.process_time()
     keys = robot_states(world, max_states=10**7)
-    print(f"compiled robot, roboergosum: {len(keys):,} robot-turn states in {time.process_time() - cpu:.1f} s CPU")
+    sample = min(sample, len(keys))
+    print(f"compiled robot, {scenario}: {len(keys):,} robot-turn states in {time.process_time() - cpu:.1f} s CPU")
     b, _ = StatePacker(world).unpack(keys[np.random.default_rng(0).choice(len(keys), sample, replace=False)])
     cpu = time.process_time()
     for i in range(sample):
@@ -183,17 +188,19 @@ def main() -> None:
     )
     parser.add_argument("--eight", action="store_true", help="time an 8-object table's oracle")
     parser.add_argument("--robot", action="store_true", help="the compiled planner robot's states and plan cost")
+    parser.add_argument("--scenario", default=SCENARIO, help="the table of 1., 2., 3. and 5. (default: %(default)s)")
+    parser.add_argument("--population", default=POPULATION, help="its population (default: %(default)s)")
     args = parser.parse_args()
     if not args.skip_rates:
-        builder_rates(args.member)
+        builder_rates(args.member, args.scenario, args.population)
     if args.members:
-        members()
+        members(args.scenario, args.population)
     if args.eight:
         eight()
     if args.headroom:
-        headroom_time(args.jobs)
+        headroom_time(args.jobs, args.scenario, args.population)
     if args.robot:
-        robot()
+        robot(scenario=args.scenario)
 
 
 if __name__ == "__main__":

@@ -16,6 +16,7 @@ from hg_marl.agents.planner.costs import CostWeights, cycle_cost
 from hg_marl.agents.planner.domain import Domain
 from hg_marl.agents.planner.halfstep import SearchOutcome
 from hg_marl.agents.planner.space import HumanEdge, RobotEdge, Space
+from hg_marl.agents.planner.tables import candidate_entries
 from hg_marl.core import Agent, Kind, State
 
 
@@ -25,6 +26,7 @@ class ReferenceSpace(Space):
     def __init__(self, domain: Domain, weights: CostWeights) -> None:
         super().__init__(domain, weights)
         self._exact.packed = None  # the bound's sums by ``fsum``
+        self._entries = candidate_entries(self)  # every kind per entry, as the loop was
 
     def robot_edges(self, state: State) -> tuple[RobotEdge, ...]:
         out = self._robot_edges.get(state)

@@ -5845,6 +5845,130 @@ ROUND43_TESTS = "tests/training/test_pinned_round43.py"
 FRESH43 = pinned_after(FRESH43, ROUND43_TESTS)
 
 
+FRESH44: tuple[Bug, ...] = (
+    Bug(
+        "fresh44 recurrent ppo sb3: history=0 (facts only, as documented) refused as out of range",
+        "training/baselines/recurrent_ppo_sb3.py",
+        'check_int(self.history, "history", minimum=0, maximum=MAX_HISTORY)',
+        'check_int(self.history, "history", minimum=1, maximum=MAX_HISTORY)',
+        gate("recurrent_ppo_sb3"),
+    ),
+    Bug(
+        "fresh44 recipes: with two training humans only the first is compiled (the second partner never met)",
+        "training/baselines/recipes.py",
+        "list(humans) if len(humans) > 1 else humans[0]",
+        "list(humans) if len(humans) > 2 else humans[0]",
+        gate("recipes"),
+    ),
+    Bug(
+        "fresh44 random robot: the last feasible action never drawn (and a lone wait refused)",
+        "agents/robots/uniform.py",
+        "feasible[self.rng.integers(len(feasible))]",
+        "feasible[self.rng.integers(len(feasible) - 1)]",
+        gate("random_robot"),
+    ),
+    Bug(
+        "fresh44 forked: jobs=1 forks a worker pool anyway (parallel is True with one job)",
+        "agents/models/forked.py",
+        "return self.jobs > 1 and _fork_context() is not None",
+        "return self.jobs >= 1 and _fork_context() is not None",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh44 world: a reset deals the layout's spots to the objects in index order, not shuffled",
+        "hg_marl/core/world.py",
+        "where[int(order[k])] = group.spots[int(c)]",
+        "where[k] = group.spots[int(c)]",
+        gate("world"),
+    ),
+    Bug(
+        "fresh44 sweep: a run found in the store counted as ran, not reused",
+        "training/sweep.py",
+        "                stats.reused += 1\n",
+        "                stats.ran += 1\n",
+        gate("sweep"),
+    ),
+    Bug(
+        "fresh44 store: a summary with null in a numeric field (tasks_solved: null) used, not repaired",
+        "training/store.py",
+        "not (template is None and value is None)",
+        "not (value is None)",
+        gate("store"),
+    ),
+    Bug(
+        "fresh44 runner: the log's decision column numbered from 1, not 0",
+        "training/runner.py",
+        '"decision": len(rows),',
+        '"decision": len(rows) + 1,',
+        gate("runner"),
+    ),
+    Bug(
+        "fresh44 habit: a tried action's sd read from its state's mean, an untried one's from its own prior",
+        "agents/habit.py",
+        "np.where(self._tried[code], self._var[code], self._state_var[code])",
+        "np.where(self._tried[code], self._state_var[code], self._var[code])",
+        gate("habit"),
+    ),
+    Bug(
+        "fresh44 meta controller: with no planner, an untrained habit's decision calls the missing plan (crash)",
+        "agents/meta/controller.py",
+        "if plan is not None and habit.visits < crit.min_visits:",
+        "if habit.visits < crit.min_visits:",
+        gate("meta_controller"),
+    ),
+    Bug(
+        "fresh44 budget: the memory refusal states its budget in MB labelled GB (4096 GB for 4 GB)",
+        "agents/models/budget.py",
+        'f"{self.memory / 2**30:g} GB of memory"',
+        'f"{self.memory / 2**20:g} GB of memory"',
+        gate("model_budget"),
+    ),
+    Bug(
+        "fresh44 memory policy: a memoryless model file rebuilt with a GRU (loading it fails)",
+        "agents/memory_policy.py",
+        "MemoryNet(shape.obs_size, shape.n_actions, shape.hidden, shape.recurrent)",
+        "MemoryNet(shape.obs_size, shape.n_actions, shape.hidden)",
+        gate("memory_policy"),
+    ),
+    Bug(
+        "fresh44 model format: a policy saved for other actions but the same facts accepted by check_world",
+        "agents/model_format.py",
+        'mf.header["fact_names"] != list(world.fact_names) or mf.header',
+        'mf.header["fact_names"] != list(world.fact_names) and mf.header',
+        gate("model_format"),
+    ),
+    Bug(
+        "fresh44 model limits: an array with more or fewer dimensions than the header implies passes the shape check",
+        "agents/model_limits.py",
+        "if len(shape) != len(want) or any(",
+        "if any(",
+        gate("model_limits"),
+    ),
+    Bug(
+        "fresh44 relabel: a goto to the first bin mapped back as if it were an object (IndexError)",
+        "hg_marl/core/relabel.py",
+        "elif kind is Kind.GOTO and target < len(orig):",
+        "elif kind is Kind.GOTO and target <= len(orig):",
+        gate("relabel"),
+    ),
+    Bug(
+        "fresh44 vector envs: the human seat's effort_weight ignored (no effort penalty in its reward)",
+        "agents/vector_envs.py",
+        "        time_budget,\n        effort_weight,\n",
+        "        time_budget,\n        0.0,\n",
+        gate("vector_envs"),
+    ),
+)
+"""Round 44, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules whose last planted bug was oldest, each bug run against its module's gate
+tests from modules.toml: the SB3 recurrent baseline, the population recipes, the random robot, the
+forked workers, the world, the sweep, the store, the runner, the habit, the meta controller, the
+budget, the memory policy, the model format and limits, the relabelling and the vector envs."""
+ROUND44_TESTS = "tests/training/test_pinned_round44.py"
+"""The values round 44's missed bugs changed, pinned after the round: every round-44 bug runs them too."""
+FRESH44 = pinned_after(FRESH44, ROUND44_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -5890,6 +6014,7 @@ ALL = (
     + FRESH41
     + FRESH42
     + FRESH43
+    + FRESH44
 )
 
 
