@@ -6,9 +6,10 @@ torch and SB3 are imported inside these functions only, so the numpy kinds of
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeGuard
 
 import gymnasium
 import numpy as np
@@ -77,6 +78,16 @@ MAX_SPACE_SIZE = 1_000_000
 """A space in a header may have at most this many elements (checked before any allocation)."""
 
 
+def _is_int(x: object) -> TypeGuard[int]:
+    """An integer in JSON: ``true`` and ``false`` are not (Python's ``bool`` is an ``int``)."""
+    return isinstance(x, int) and not isinstance(x, bool)
+
+
+def _is_shape(x: object, scalar: bool = False) -> TypeGuard[list[int]]:
+    """A list of positive integers (``scalar``: the empty list too, a one-element space's shape)."""
+    return isinstance(x, list) and (scalar or len(x) > 0) and all(_is_int(n) and n > 0 for n in x)
+
+
 def space_from_json(data: Any, where: str) -> Any:
     """Rebuild a space written by :func:`space_to_json`, checking every field."""
     from gymnasium import spaces
@@ -90,10 +101,10 @@ def space_from_json(data: Any, where: str) -> Any:
     try:
         if kind == "Box":
             shape = data.get("shape")
-            if not isinstance(shape, list) or not all(isinstance(n, int) and n > 0 for n in shape):
+            if not _is_shape(shape, scalar=True):
                 raise fail("Box shape must be a list of positive integers")
-            if int(np.prod(shape)) > MAX_SPACE_SIZE:
-                raise fail(f"Box of {int(np.prod(shape))} elements is over the limit {MAX_SPACE_SIZE}")
+            if math.prod(shape) > MAX_SPACE_SIZE:  # Python's integers: no wrap-around past 2**63
+                raise fail(f"Box of {math.prod(shape)} elements is over the limit {MAX_SPACE_SIZE}")
             dtype = np.dtype(str(data.get("dtype")))
             if dtype.kind not in "biuf":
                 raise fail(f"Box dtype {dtype} is not numeric")
@@ -102,18 +113,18 @@ def space_from_json(data: Any, where: str) -> Any:
             return spaces.Box(low.astype(dtype), high.astype(dtype), tuple(shape), dtype)
         if kind == "Discrete":
             n, start = data.get("n"), data.get("start", 0)
-            if (
-                not isinstance(n, int)
-                or isinstance(n, bool)
-                or not 0 < n <= MAX_SPACE_SIZE
-                or not isinstance(start, int)
-            ):
+            if not _is_int(n) or not 0 < n <= MAX_SPACE_SIZE:
                 raise fail(f"Discrete n must be an integer in [1, {MAX_SPACE_SIZE}]")
+            if not _is_int(start):
+                raise fail("Discrete start must be an integer")
             return spaces.Discrete(n, start=start)
         if kind == "MultiBinary":
-            n = data.get("n")
-            if not isinstance(n, int) or not 0 < n <= MAX_SPACE_SIZE:
-                raise fail(f"MultiBinary n must be an integer in [1, {MAX_SPACE_SIZE}]")
+            n = data.get("n")  # an integer, or a shape (``MultiBinary([2, 3])``)
+            if (
+                not (_is_int(n) or _is_shape(n))
+                or not 0 < math.prod(n if isinstance(n, list) else [n]) <= MAX_SPACE_SIZE
+            ):
+                raise fail(f"MultiBinary n must be an integer or a shape of 1 to {MAX_SPACE_SIZE} elements")
             return spaces.MultiBinary(n)
         if kind == "Dict":
             sub = data.get("spaces")

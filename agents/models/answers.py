@@ -84,14 +84,10 @@ class KeyBatch:
         self._subset = (rows, out)
         if self._unpacked is not None:
             b, seen = self._unpacked
-            out._unpacked = (_rows(b, rows), seen[rows])
+            out._unpacked = (b.take(rows), seen[rows])
         if self._mask is not None:
             out._mask = self._mask[rows]
         return out
-
-
-def _rows(b: BatchState, rows: np.ndarray) -> BatchState:
-    return BatchState(b.where[rows], b.robot_at[rows], b.offer_by[rows], b.offer_obj[rows])
 
 
 class AnswerTable:
@@ -260,7 +256,7 @@ class AnswerTable:
     def _store(self, batch: KeyBatch, size: np.ndarray, actions: np.ndarray, probs: np.ndarray) -> None:
         """Step the answers of the keys of ``batch`` once and merge them into the table."""
         rep = np.repeat(np.arange(len(size)), size)
-        b = _rows(batch.unpacked[0], rep)  # a copy: stepped in place
+        b = batch.unpacked[0].take(rep)  # a copy: stepped in place
         _, d_human, _ = self.rules.step(b, Agent.HUMAN, actions, batch.mask[rep])
         nxt = self.packer.pack(b)
         if self.relabelled is not False:

@@ -171,10 +171,6 @@ class Model:
         return [b.state(i) for i in range(len(b))]
 
 
-def _rows(b: BatchState, rows: np.ndarray) -> BatchState:
-    return BatchState(b.where[rows], b.robot_at[rows], b.offer_by[rows], b.offer_obj[rows])
-
-
 class _Index:
     """Known state keys, sorted, with their ids; ids in order of discovery."""
 
@@ -262,7 +258,7 @@ class _Front:
         else:
             ps, pa = np.nonzero(mask)
             feasible = np.ones(len(pa), dtype=bool)
-        pb = _rows(b, ps)
+        pb = b.take(ps)
         ok, d_robot, reward = rules.step(pb, Agent.ROBOT, pa, ok=feasible)
         terminal = reward > 0  # the rules' own reward: a wait on a clean table completes the task
         live = np.flatnonzero(~terminal)

@@ -39,6 +39,7 @@ class StatePacker:
             )
         self.weights = np.concatenate([[1], np.cumprod(self.radix[:-1])]).astype(np.int64)
         self._weights = [int(w) for w in self.weights]
+        self._radix = [int(r) for r in self.radix]
         relabel = Relabel(world)
         self.classes = [np.array(c, dtype=np.int64) for c in relabel.classes]
 
@@ -56,15 +57,17 @@ class StatePacker:
 
     def unpack(self, keys: np.ndarray) -> tuple[BatchState, np.ndarray]:
         """The batch and the robot action seen (-1: none) that :meth:`pack` made ``keys`` from."""
-        digits = (keys[:, None] // self.weights[None, :]) % self.radix[None, :]
         n = self.n_objects
-        b = BatchState(
-            np.ascontiguousarray(digits[:, :n]),
-            digits[:, n].copy(),
-            digits[:, n + 1] - 1,
-            digits[:, n + 2] - 1,
-        )
-        return b, digits[:, n + 3] - 1
+        where = np.empty((len(keys), n), dtype=np.int64)
+        rest = keys
+        for o, radix in enumerate(self._radix[:n]):  # the lowest digit first: one division per digit
+            rest, where[:, o] = np.divmod(rest, radix)
+        tail = []
+        for radix in self._radix[n:]:
+            rest, digit = np.divmod(rest, radix)
+            tail.append(digit)
+        at, by, obj, seen = tail
+        return BatchState(where, at, by - 1, obj - 1), seen - 1
 
     def canonical(self, b: BatchState) -> np.ndarray:
         """Relabel ``b`` in place into :meth:`Relabel.canonical`'s state (each class sorted by place).

@@ -4,12 +4,15 @@ work; a state it holds gives its value back."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
 from hg_marl.agents.models.layouts import layout_distribution
 from hg_marl.agents.models.packing import PackedMap, StatePacker
-from hg_marl.core import State, World
+from hg_marl.core import Agent, State, World
+from hg_marl.core.batch import BatchState
 
 
 def test_absent_states_are_key_errors_on_both_sides_of_the_keys() -> None:
@@ -27,3 +30,40 @@ def test_absent_states_are_key_errors_on_both_sides_of_the_keys() -> None:
     other = State(held[0].where[:-1], 0, -1, -1)  # another scenario's shape
     assert other not in m and "not a state" not in m  # type: ignore[operator]
     assert sorted(m, key=packer.pack_one) == held
+
+
+def _radices(world: World) -> list[int]:
+    """The packing's digits worked from the table's counts (each place, the robot's location,
+    who offers (none, robot, human), the offered object or none, the robot action seen or none)."""
+    t = world.table
+    return [t.n_places] * t.n_objects + [t.n_locations, 3, t.n_objects + 1, world.n_actions(Agent.ROBOT) + 1]
+
+
+@pytest.mark.parametrize("scenario", ["generated:objects=4,spots=5", "paper2015"])
+def test_every_robot_action_seen_unpacks_to_itself(scenario: str) -> None:
+    """The seen action's digit holds every robot action and none; on a table with an odd
+    number of robot actions (23 here) too, the last one (``wait``) included."""
+    world = World(scenario)
+    packer = StatePacker(world)
+    n_actions = world.n_actions(Agent.ROBOT)
+    state = layout_distribution(world)[0][0]
+    seen = np.arange(-1, n_actions, dtype=np.int64)
+    b = BatchState.of([state] * len(seen))
+    keys = packer.pack(b, seen)
+    assert len(set(keys.tolist())) == len(seen)
+    back, got = packer.unpack(keys)
+    assert got.tolist() == seen.tolist()
+    assert all(back.state(i) == state for i in range(len(seen)))
+
+
+def test_the_key_limit_is_two_to_the_62() -> None:
+    """A table whose keys need fewer than 2**62 values is packed (12 objects on 14 spots:
+    about 2**61.3 by the digits worked above), one that needs more (15 spots: 2**62.3) is
+    refused with the scenario named."""
+    fits, too_big = World("generated:objects=12,spots=14"), World("generated:objects=12,spots=15")
+    assert 2**61 < math.prod(_radices(fits)) < 2**62 < math.prod(_radices(too_big))
+    packer = StatePacker(fits)
+    state = fits.initial_state(np.random.default_rng(0))
+    assert packer.unpack(np.array([packer.pack_one(state)], dtype=np.int64))[0].state(0) == state
+    with pytest.raises(ValueError, match=r"too many states to pack into 64-bit keys"):
+        StatePacker(too_big)

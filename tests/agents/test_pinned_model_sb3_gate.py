@@ -33,6 +33,34 @@ def test_a_dict_space_round_trips() -> None:
     assert back == space
 
 
+@pytest.mark.parametrize("space", [spaces.MultiBinary([2, 3]), spaces.MultiBinary(4), spaces.Box(0.0, 1.0, ())])
+def test_multi_dimensional_and_scalar_spaces_round_trip(space: Any) -> None:
+    """A ``MultiBinary`` of shape (2, 3) is written as ``"n": [2, 3]``: it must read back too
+    (it was saved and then refused on load); a scalar ``Box`` has the empty shape."""
+    assert space_from_json(space_to_json(space), "h.json") == space
+
+
+@pytest.mark.parametrize(
+    ("data", "field"),
+    [
+        ({"type": "MultiBinary", "n": True}, "MultiBinary n"),  # JSON's true is not the integer 1
+        ({"type": "MultiBinary", "n": []}, "MultiBinary n"),
+        ({"type": "MultiBinary", "n": [1000, 1001]}, "MultiBinary n"),  # 1,001,000 elements: over the limit
+        ({"type": "MultiBinary", "n": [2, 0]}, "MultiBinary n"),
+        ({"type": "Discrete", "n": 3, "start": False}, "Discrete start"),
+        ({"type": "Box", "shape": [True], "low": 0, "high": 1, "dtype": "float32"}, "Box shape"),
+        # 2**64 elements: numpy's product of the shape wraps to 0, Python's integers do not
+        (
+            {"type": "Box", "shape": [2**32, 2**32], "low": 0, "high": 1, "dtype": "float32"},
+            "Box of 18446744073709551616",
+        ),
+    ],
+)
+def test_malformed_sizes_are_refused_naming_the_field(data: dict[str, Any], field: str) -> None:
+    with pytest.raises(ModelFileError, match=rf"^h\.json: {field}"):
+        space_from_json(data, "h.json")
+
+
 def test_an_unknown_space_type_is_refused_by_name() -> None:
     with pytest.raises(ModelFileError, match="unknown space type 'Tuple'"):
         space_from_json({"type": "Tuple", "spaces": [{"type": "Discrete", "n": 2}]}, "h")
