@@ -5969,6 +5969,377 @@ ROUND44_TESTS = "tests/training/test_pinned_round44.py"
 FRESH44 = pinned_after(FRESH44, ROUND44_TESTS)
 
 
+FRESH45: tuple[Bug, ...] = (
+    Bug(
+        "fresh45 planner bound: a goto to the first robot location (paper2015's bin_side) never a candidate"
+        " (the robot cannot walk back to the bin)",
+        "agents/planner/space.py",
+        "for k, dest in enumerate(row) if dest >= 0)",
+        "for k, dest in enumerate(row) if dest > 0)",
+        gate("planner_bound"),
+    ),
+    Bug(
+        "fresh45 planner steps: a goto to an object leads where the place numbered like the object leads, not"
+        " where the object lies",
+        "agents/planner/steps.py",
+        "a2 = goto_obj[where[x]] if x < n else goto_static[x - n]",
+        "a2 = goto_obj[x] if x < n else goto_static[x - n]",
+        gate("planner_steps"),
+    ),
+    Bug(
+        "fresh45 exact sums: a dead end whose other objects all sum to zero given finite sums, not None",
+        "agents/planner/exactsum.py",
+        "if total >= self.flag:",
+        "if total > self.flag:",
+        gate("planner_exactsum"),
+    ),
+    Bug(
+        "fresh45 entropy and cost: the per-state decision costs filtered with the weights swapped (a new cost"
+        " weighted 1 - rate)",
+        "agents/meta/entropy_cost.py",
+        "new = value if old is None else (1.0 - self.rate) * old + self.rate * value",
+        "new = value if old is None else self.rate * old + (1.0 - self.rate) * value",
+        gate("entropy_cost"),
+    ),
+    Bug(
+        "fresh45 vpi: a VPI equal to the threshold (0 and no reward yet) plans instead of letting the habit act",
+        "agents/meta/vpi.py",
+        "return gain > threshold",
+        "return gain >= threshold",
+        gate("vpi"),
+    ),
+    Bug(
+        "fresh45 outputs: a file in a missing folder under an existing one refused as '<folder> is a file, not a"
+        " folder'",
+        "training/outputs.py",
+        "if found.exists() and not found.is_dir():",
+        "if found.exists() and found.is_dir():",
+        gate("outputs"),
+    ),
+    Bug(
+        "fresh45 server limits: trickling headers given the body timeout and a trickling body the header timeout",
+        "training/play/server_limits.py",
+        'delay = limits.header_timeout if phase == "header" else limits.body_timeout',
+        'delay = limits.body_timeout if phase == "header" else limits.header_timeout',
+        gate("server_limits"),
+    ),
+    Bug(
+        "fresh45 registry: an unknown name's listing shows text defaults unquoted (kind=x, not kind='x')",
+        "hg_marl/core/registry.py",
+        "f\"{n}({', '.join(f'{k}={p.default!r}' for k, p in e.params.items())})\"",
+        "f\"{n}({', '.join(f'{k}={p.default}' for k, p in e.params.items())})\"",
+        gate("registry"),
+    ),
+    Bug(
+        "fresh45 scenario file: an unsolvable layout's one problem reported with '(and 0 more)'",
+        "hg_marl/core/scenario_file.py",
+        'more = f" (and {len(problems) - 1} more)" if len(problems) > 1 else ""',
+        'more = f" (and {len(problems) - 1} more)" if len(problems) >= 1 else ""',
+        gate("scenario_file"),
+    ),
+    Bug(
+        "fresh45 scenario generated: human_only read inverted (human_only=0 makes most spots human-only)",
+        "hg_marl/core/scenario_generated.py",
+        "if rng.random() < human_only:",
+        "if rng.random() > human_only:",
+        gate("scenario_generated"),
+    ),
+    Bug(
+        "fresh45 scenario model: a scenario exactly at a documented size limit (40 objects) refused",
+        "hg_marl/core/scenario_model.py",
+        "if value > limit:",
+        "if value >= limit:",
+        gate("scenario_model"),
+    ),
+    Bug(
+        "fresh45 heldout curve: a policy beating the oracle's rate (noise) gets a BR-Prox above 1",
+        "training/baselines/heldout_curve.py",
+        "prox = min(1.0, rate / best) if best else None",
+        "prox = rate / best if best else None",
+        gate("heldout_curve"),
+    ),
+    Bug(
+        "fresh45 cycle: a run's clock truncates after max_cycles + 1 cycles, not max_cycles",
+        "hg_marl/core/cycle.py",
+        "self.cycles = cycles = self.cycles + 1\n        return cycles >= self._cap",
+        "self.cycles = cycles = self.cycles + 1\n        return cycles > self._cap",
+        gate("cycle"),
+    ),
+    Bug(
+        "fresh45 history: cycles since the partner's progress stop one short of the cap (the 'cap or more'"
+        " feature never set)",
+        "hg_marl/envs/history.py",
+        "np.minimum(self.since[:, a] + 1, self.cap)",
+        "np.minimum(self.since[:, a] + 1, self.cap - 1)",
+        gate("history"),
+    ),
+    Bug(
+        "fresh45 content: files named in a '|' list without a colon (a.csv|b.csv) not keyed",
+        "agents/content.py",
+        'if ":" not in text and "|" not in text and not text.startswith("["):',
+        'if ":" not in text and not text.startswith("["):',
+        gate("content"),
+    ),
+    Bug(
+        "fresh45 memory robot: both a model file and an in-memory net accepted (the net silently replaced)",
+        "agents/robots/memory.py",
+        "if (path is None) == (net is None):",
+        "if path is None and net is None:",
+        gate("memory_robot"),
+    ),
+)
+"""Round 45, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the next sixteen gated modules whose last planted bug was oldest, each bug run against its module's
+gate tests from modules.toml: the planner's bound, steps and exact sums, the entropy-and-cost and VPI
+criteria, the outputs, the server limits, the registry, the scenario file, generator and model, the
+held-out curve, the cycle, the history, the content keys and the memory robot."""
+ROUND45_TESTS = "tests/training/test_pinned_round45.py"
+"""The values round 45's missed bugs changed, pinned after the round: every round-45 bug runs them too."""
+FRESH45 = pinned_after(FRESH45, ROUND45_TESTS)
+
+
+FRESH46: tuple[Bug, ...] = (
+    Bug(
+        "fresh46 progress: the array guard counts a robot that walks between two places as unchanged (it fires)",
+        "agents/progress.py",
+        "same = still & (self._at[rows] == batch.robot_at)",
+        "same = still",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh46 baselines train: a rollout counted as one env's steps, not n_envs' (checkpoints off whole rollouts)",
+        "training/baselines/train.py",
+        "return max(1, int(per_env)) * hp.n_envs",
+        "return max(1, int(per_env))",
+        gate("baselines_train"),
+    ),
+    Bug(
+        "fresh46 fixed criteria: the planner-only criterion plays the habit",
+        "agents/meta/fixed.py",
+        '"""The planner, always."""\n        return Expert.PLANNER',
+        '"""The planner, always."""\n        return Expert.HABIT',
+        gate("meta_fixed"),
+    ),
+    Bug(
+        "fresh46 errors: a too-long number's digit count includes its underscores",
+        "hg_marl/core/errors.py",
+        "digits = sum(c.isdigit() for c in found.group())",
+        "digits = len(found.group())",
+        gate("core_errors"),
+    ),
+    Bug(
+        "fresh46 planner costs: the robot's action 0 never counted as activity (balance charged as if it waited)",
+        "agents/planner/costs.py",
+        "if robot_action < 0:",
+        "if robot_action <= 0:",
+        gate("planner_costs"),
+    ),
+    Bug(
+        "fresh46 planner tables: each agent's candidate kinds read from the other agent's next steps",
+        "agents/planner/tables.py",
+        "kinds |= w.robot_next if agent is Agent.ROBOT else w.human_next",
+        "kinds |= w.human_next if agent is Agent.ROBOT else w.robot_next",
+        gate("planner_tables"),
+    ),
+    Bug(
+        "fresh46 ppo_recurrent: --gamma 1 (undiscounted, in the documented (0, 1]) refused",
+        "training/baselines/ppo_recurrent.py",
+        "if not 0 < self.gamma <= 1 or",
+        "if not 0 < self.gamma < 1 or",
+        gate("ppo_recurrent"),
+    ),
+    Bug(
+        "fresh46 model sb3: a Discrete space's start not written to the header (rebuilt from 0: the spaces differ)",
+        "agents/model_sb3.py",
+        '{"type": "Discrete", "n": int(space.n), "start": int(space.start)}',
+        '{"type": "Discrete", "n": int(space.n)}',
+        gate("model_sb3"),
+    ),
+    Bug(
+        "fresh46 array partner: the clock capability not runtime-checkable (isinstance against it raises TypeError)",
+        "hg_marl/envs/array_partner.py",
+        "@runtime_checkable\nclass FollowsClock(Protocol):",
+        "class FollowsClock(Protocol):",
+        gate("array_partner"),
+    ),
+    Bug(
+        "fresh46 meta cost: a planner call charged its wall time in model mode and the model's constants in wall mode",
+        "agents/meta/cost.py",
+        'return wall_time if self.mode == "wall" else self.planner_base',
+        'return wall_time if self.mode == "model" else self.planner_base',
+        gate("meta_cost"),
+    ),
+    Bug(
+        "fresh46 entropy: the logged h_planner is the habit's entropy",
+        "agents/meta/entropy.py",
+        '"h_planner": h_planner}',
+        '"h_planner": h_habit}',
+        gate("entropy"),
+    ),
+    Bug(
+        "fresh46 learning state: the habit acts where its value settled OR it has min_visits visits (either, not both)",
+        "agents/meta/learning_state.py",
+        "self.threshold and habit.visits",
+        "self.threshold or habit.visits",
+        gate("learning_state"),
+    ),
+    Bug(
+        "fresh46 cache: cache=False (no disk cache) raises TypeError instead of naming no folder",
+        "agents/models/cache.py",
+        "if cache is None or cache is False:",
+        "if cache is None:",
+        gate("model_cache"),
+    ),
+    Bug(
+        "fresh46 limits: check_count ignores its minimum (--train 0 refused, --candidates 1 accepted)",
+        "training/limits.py",
+        "count = check_int(value, what, minimum=minimum, error=error)",
+        "count = check_int(value, what, minimum=1, error=error)",
+        gate("limits"),
+    ),
+    Bug(
+        "fresh46 memory numpy: a header field at its upper bound refused (history = MAX_HISTORY, hidden = 1024)",
+        "agents/memory_numpy.py",
+        "not low <= value <= high",
+        "not low <= value < high",
+        gate("memory_numpy"),
+    ),
+    Bug(
+        "fresh46 atomic: a write that fails with an OS error (a full disk) leaves its temporary file behind",
+        "hg_marl/core/atomic.py",
+        "    except OSError as exc:\n        Path(tmp).unlink(missing_ok=True)\n"
+        "        error = output_error(exc, path)",
+        "    except OSError as exc:\n        error = output_error(exc, path)",
+        gate("atomic"),
+    ),
+)
+"""Round 46, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in sixteen gated modules planted in long ago, each bug run against its module's gate tests from
+modules.toml: the progress guard, the SB3 training script, the fixed criteria, the errors, the planner's
+costs and tables, the recurrent PPO, the SB3 model files, the array partner protocols, the decision
+cost, the entropy and learning-state criteria, the oracle cache, the limits, the numpy memory policy
+and the atomic writes."""
+ROUND46_TESTS = "tests/training/test_pinned_round46.py"
+"""The values round 46's missed bugs changed, pinned after the round: every round-46 bug runs them too."""
+FRESH46 = pinned_after(FRESH46, ROUND46_TESTS)
+
+
+FRESH47: tuple[Bug, ...] = (
+    Bug(
+        "fresh47 scenario loader: a scenario file that is not UTF-8 names the byte after the bad one",
+        "hg_marl/core/scenario.py",
+        "not UTF-8 text (byte {exc.start})",
+        "not UTF-8 text (byte {exc.end})",
+        gate("scenario_loader"),
+    ),
+    Bug(
+        "fresh47 durations: a too-long duration in a file refused without the file's name (no upper bound checked)",
+        "hg_marl/core/durations.py",
+        "value, f\"{source}: field 'durations.{key}'\", minimum=MIN_DURATION, maximum=MAX_DURATION",
+        "value, f\"{source}: field 'durations.{key}'\", minimum=MIN_DURATION",
+        gate("durations"),
+    ),
+    Bug(
+        "fresh47 planner robot: once stalled, the robot moves at random every turn after (never plans again)",
+        "agents/robots/planner.py",
+        "            self.partnering.monitor.fell_back()\n",
+        "",
+        gate("planner_robot"),
+    ),
+    Bug(
+        "fresh47 rule table: a bin with no colour accepts no object (not every colour)",
+        "hg_marl/core/table.py",
+        'if bn.colour in ("", colour)',
+        "if bn.colour == colour",
+        gate("rule_table"),
+    ),
+    Bug(
+        "fresh47 spec parser: a boolean written True or FALSE refused (only lower case read)",
+        "hg_marl/core/spec.py",
+        'value.lower() in ("true", "false")',
+        'value in ("true", "false")',
+        gate("spec_parser"),
+    ),
+    Bug(
+        "fresh47 aec env: a turn's events give the partner's action before the agent's own",
+        "hg_marl/envs/table_cleaning.py",
+        "events = self._last_events[me] + self._last_events[me.other]",
+        "events = self._last_events[me.other] + self._last_events[me]",
+        gate("aec_env"),
+    ),
+    Bug(
+        "fresh47 hybrid robot: a guard or stall move not remembered (the habit learns the turn before's move)",
+        "agents/robots/hybrid.py",
+        "            self._remember(facts, move)\n",
+        "",
+        gate("hybrid_robot"),
+    ),
+    Bug(
+        "fresh47 robot base: a dict q_config fills in QLearnerConfig's defaults, not the robot's default_habit",
+        "agents/robots/base.py",
+        "q_config = replace(self.default_habit, **q_config)",
+        "q_config = replace(QLearnerConfig(), **q_config)",
+        gate("robot_base"),
+    ),
+    Bug(
+        "fresh47 regret: a task solved at the switch's very time counted after the switch (D one too low)",
+        "training/regret.py",
+        '(log["time"] > switch_at)',
+        '(log["time"] >= switch_at)',
+        gate("regret"),
+    ),
+    Bug(
+        "fresh47 preference: equally good actions go to the highest action index, not the lowest",
+        "agents/humans/preference.py",
+        "for index in sorted(scores):",
+        "for index in sorted(scores, reverse=True):",
+        gate("preference"),
+    ),
+    Bug(
+        "fresh47 trace: a turn too long after the one before is reported at the line before it",
+        "agents/humans/trace.py",
+        "line = episode.lines[k + 1] if",
+        "line = episode.lines[k] if",
+        gate("trace"),
+    ),
+    Bug(
+        "fresh47 population: a repeated member name is said to be its own index's, not the first one's",
+        "agents/humans/population.py",
+        "is also members[{seen[m.name]}]'s name",
+        "is also members[{i}]'s name",
+        gate("population"),
+    ),
+    Bug(
+        "fresh47 human switching: a one-phase schedule (one human, no thresholds) refused",
+        "agents/humans/switching.py",
+        "if len(humans) < 1 or",
+        "if len(humans) <= 1 or",
+        gate("human_switching"),
+    ),
+    Bug(
+        "fresh47 noisy: the robot's action 0 under way timed as unknown (0 s), the cycle as the human's alone",
+        "agents/humans/noisy.py",
+        "if robot_action >= 0 else 0.0",
+        "if robot_action > 0 else 0.0",
+        gate("noisy"),
+    ),
+    Bug(
+        "fresh47 planner plan: a wait's waits_for link points at the partner's first step on the object, not its last",
+        "agents/planner/plan.py",
+        "before[-1][0]",
+        "before[0][0]",
+        gate("planner_plan"),
+    ),
+    Bug(
+        "fresh47 planner: a full plan cache drops the plan just stored, not the oldest (new states never cached)",
+        "agents/planner/planner.py",
+        "self._cache.popitem(last=False)",
+        "self._cache.popitem(last=True)",
+        gate("planner_main"),
+    ),
+)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -6015,6 +6386,9 @@ ALL = (
     + FRESH42
     + FRESH43
     + FRESH44
+    + FRESH45
+    + FRESH46
+    + FRESH47
 )
 
 
