@@ -12,7 +12,6 @@ read from the rules (``World.step``), not from the batched table.
 
 from __future__ import annotations
 
-import itertools
 from typing import ClassVar
 
 import numpy as np
@@ -24,6 +23,7 @@ from hg_marl.agents.robots.uniform import RandomRobot
 from hg_marl.agents.vector_envs import human_vector_env
 from hg_marl.core import Agent, State, World
 from hg_marl.policy import Turn
+from tests.core.test_pinned_world_gate import _by_hand
 
 
 def _turn(world: World, state: State, mask: np.ndarray) -> Turn:
@@ -50,16 +50,10 @@ def test_the_random_robot_draws_every_feasible_action_and_only_those() -> None:
 
 
 def _paper2015_layouts() -> set[tuple[int, ...]]:
-    """By hand from paper2015.toml: spots 0-2 are the robot-side mats (two tapes, distinct
-    spots), 4-5 the human mats (one tape); any tape may be the human-side one."""
-    out = set()
-    for human_tape in range(3):
-        others = [o for o in range(3) if o != human_tape]
-        for human_spot in (4, 5):
-            for a, b in itertools.permutations((0, 1, 2), 2):
-                where = [0, 0, 0]
-                where[human_tape], where[others[0]], where[others[1]] = human_spot, a, b
-                out.add(tuple(where))
+    """By hand from paper2015.toml (the world gate's own enumeration: spots 0-2 are the
+    robot-side mats, two tapes on distinct spots, 4-5 the human mats, one tape; any tape
+    may be the human-side one): 3 x 2 x 3 x 2 = 36 tables."""
+    out = _by_hand()
     assert len(out) == 36
     return out
 
