@@ -123,3 +123,31 @@ def test_the_benchmark_runs_and_prints_its_comparison(script: str) -> None:
     if script == "belief_ready.py":
         first = json.loads(next(line for line in lines if line.startswith("{")))
         assert first["first_move_cpu_s"] >= 0 and isinstance(first["built"], list)
+
+
+def _documented_options() -> dict[str, set[str]]:
+    """Per script, the ``--options`` the README and the pages pass it (``python benchmarks/X.py ...``)."""
+    out: dict[str, set[str]] = {}
+    for page in [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]:
+        for script, rest in re.findall(r"python benchmarks/([a-z_]+\.py)([^`\n]*)", page.read_text()):
+            out.setdefault(script, set()).update(re.findall(r"(--[a-z][a-z-]*)", rest.split("#")[0]))
+    return out
+
+
+DOCUMENTED = _documented_options()
+
+
+def test_the_pages_name_only_benchmarks_that_exist() -> None:
+    assert len(DOCUMENTED) >= 10 and set(DOCUMENTED) <= set(CASES)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("script", sorted(DOCUMENTED))
+def test_the_options_the_pages_pass_a_benchmark_are_its_own(script: str) -> None:
+    """Each option a page shows is one the script's ``--help`` lists (nothing else is run)."""
+    out = subprocess.run(
+        [sys.executable, str(BENCHMARKS / script), "--help"], cwd=ROOT, capture_output=True, text=True, timeout=300
+    )
+    assert out.returncode == 0, out.stderr[-2000:]
+    listed = set(re.findall(r"(--[a-z][a-z-]*)", out.stdout))
+    assert DOCUMENTED[script] <= listed, f"{script} has no {sorted(DOCUMENTED[script] - listed)}"
