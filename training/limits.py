@@ -23,7 +23,18 @@ MAX_RUNS = 200_000
 MAX_SEED_VALUE = 2**63 - 1
 """Largest seed value (what a trace header and the store's keys accept)."""
 
-__all__ = ["MAX_MEMBERS", "MAX_RUNS", "MAX_SEEDS", "MAX_SEED_VALUE", "check_count", "check_runs"]
+MAX_STUDY_BYTES = 1 << 20
+"""A study file may be at most 1 MiB (as scenario and population files)."""
+
+__all__ = [
+    "MAX_MEMBERS",
+    "MAX_RUNS",
+    "MAX_SEEDS",
+    "MAX_SEED_VALUE",
+    "MAX_STUDY_BYTES",
+    "check_count",
+    "check_runs",
+]
 
 
 def check_count(

@@ -11,6 +11,7 @@ members taken in the splits' fixed order; narrowing by exact label or registry n
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -274,3 +275,47 @@ def test_narrowing_refuses_an_unknown_name_listing_what_the_study_has() -> None:
         study.narrowed(scenarios=["kitchen"])
     assert study.narrowed(scenarios=["my_layout"]).scenarios == ("/x/my_layout.toml",)
     assert study.narrowed(scenarios=["paper2015"]).scenarios == ("paper2015",)
+
+
+def test_a_fifo_or_a_device_is_refused_unread(tmp_path: Path) -> None:
+    """Opening a FIFO blocks until a writer comes and ``/dev/zero`` never ends: both are
+    refused from their file type, before any read (a hang here is the bug)."""
+    fifo = tmp_path / "pipe.toml"
+    os.mkfifo(fifo)
+    for path in (fifo, Path("/dev/zero")):
+        with pytest.raises(StudyError, match=r": cannot read the study file \(not a regular file\)$"):
+            load_study(path)
+
+
+def test_a_study_file_is_read_up_to_one_mebibyte(tmp_path: Path) -> None:
+    """1 MiB exactly is read (then refused for what it holds, not its size); a byte more is refused by size."""
+    limit = 1 << 20
+    body = "robots = [\n"  # not valid TOML: a file read whole is refused by the parser
+    exact = tmp_path / "exact.toml"
+    exact.write_text(body + "#" * (limit - len(body)))
+    assert exact.stat().st_size == limit
+    with pytest.raises(StudyError, match=r": not valid TOML: "):
+        load_study(exact)
+    over = tmp_path / "over.toml"
+    over.write_text(body + "#" * (limit - len(body) + 1))
+    with pytest.raises(StudyError, match=rf"over\.toml: larger than {limit} bytes \(the limit of a study file\)$"):
+        load_study(over)
+
+
+def test_the_oracle_budget_may_be_a_single_state(tmp_path: Path) -> None:
+    """``oracle_max_states`` counts model states: 1 is a budget (every oracle then refused,
+    the study falling back to its best robot), 0 is not."""
+    text = 'robots = ["planner"]\nhumans = ["cooperative"]\noracle_max_states = {}\n'
+    assert load_study(_write(tmp_path, text.format(1))).oracle_max_states == 1
+    assert _refusal(tmp_path, text.format(0)).startswith("3: oracle_max_states")
+
+
+def test_evaluate_refuses_a_fifo_study_in_one_line_and_writes_nothing(tmp_path: Path) -> None:
+    from tests.cli_helpers import run_main
+
+    fifo = tmp_path / "pipe.toml"
+    os.mkfifo(fifo)
+    out = tmp_path / "out"
+    code, _, err = run_main(["evaluate", str(fifo), "--out", str(out)])
+    assert code == 2 and err.strip().splitlines() == [f"error: {fifo}: cannot read the study file (not a regular file)"]
+    assert not out.exists()
