@@ -44,7 +44,16 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from hg_marl.core.errors import HgMarlError, StudyError, check_digits, check_finite, check_int, where
+from hg_marl.core.errors import (
+    HgMarlError,
+    NotRegularFileError,
+    StudyError,
+    check_digits,
+    check_finite,
+    check_int,
+    read_limited,
+    where,
+)
 from hg_marl.core.spec import AgentSpec, format_spec, parse_spec
 from hg_marl.training.limits import MAX_SEED_VALUE, MAX_SEEDS, MAX_STUDY_BYTES, check_count, check_runs
 
@@ -301,14 +310,12 @@ def load_study(path: str | Path) -> Study:
 
     path = Path(path)
     try:
-        if path.exists() and not (path.is_file() or path.is_dir()):
-            # a FIFO would block the open and a device (``/dev/zero``) never end: refused unread
-            raise StudyError(f"{path}: cannot read the study file (not a regular file)")
-        with open(path, "rb") as handle:
-            raw = handle.read(MAX_STUDY_BYTES + 1)
-        if len(raw) > MAX_STUDY_BYTES:
+        raw = read_limited(path, MAX_STUDY_BYTES)
+        if raw is None:
             raise StudyError(f"{path}: larger than {MAX_STUDY_BYTES} bytes (the limit of a study file)")
         text = raw.decode("utf-8")
+    except NotRegularFileError:
+        raise StudyError(f"{path}: cannot read the study file (not a regular file)") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise StudyError(f"{path}: cannot read the study file ({exc.__class__.__name__})") from None
     check_digits(text, str(path), StudyError, lines=True)

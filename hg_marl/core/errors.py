@@ -16,6 +16,7 @@ import errno
 import math
 import re
 import sys
+from pathlib import Path
 from typing import Any
 
 
@@ -180,3 +181,25 @@ def check_digits(text: str, what: str, error: type[HgMarlError] = ConfigError, *
     at = f"{what}:{text.count(chr(10), 0, found.start()) + 1}" if lines else what
     digits = sum(c.isdigit() for c in found.group())
     raise error(f"{at}: a number of {digits:,} digits, over the limit of {MAX_DIGITS:,} digits")
+
+
+class NotRegularFileError(OSError):
+    """A path that names a FIFO, a device or a socket where a user's file was expected."""
+
+
+def read_limited(path: Path, limit: int) -> bytes | None:
+    """The bytes of a user's file, or None where it holds more than ``limit`` bytes.
+
+    A file is read only if it is a regular file: opening a FIFO blocks until some writer
+    comes, and a device (``/dev/zero``) never ends, where a size from ``stat`` reads 0.
+    At most ``limit + 1`` bytes are read, so a file that grows meanwhile is refused too.
+
+    Raises:
+        NotRegularFileError: the path names neither a regular file nor a folder.
+        OSError: as ``open`` raises it (a missing file, a folder, no permission).
+    """
+    if path.exists() and not (path.is_file() or path.is_dir()):
+        raise NotRegularFileError(errno.EINVAL, "not a regular file", str(path))
+    with open(path, "rb") as handle:
+        data = handle.read(limit + 1)
+    return None if len(data) > limit else data

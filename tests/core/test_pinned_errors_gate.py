@@ -13,6 +13,7 @@ import errno
 import os
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -21,6 +22,7 @@ from hg_marl.core.errors import (
     ConfigError,
     HgMarlError,
     HumanError,
+    NotRegularFileError,
     OutputError,
     check_bool,
     check_digits,
@@ -28,6 +30,7 @@ from hg_marl.core.errors import (
     check_int,
     check_probability,
     output_error,
+    read_limited,
     where,
 )
 
@@ -166,3 +169,29 @@ def test_the_digit_limit_is_the_interpreters_own_or_pythons_default_when_it_has_
     Python's documented default, 4300."""
     assert _digit_limit_under(5000) == 5000
     assert _digit_limit_under(0) == 4300
+
+
+def test_read_limited_reads_up_to_its_limit_and_says_none_past_it(tmp_path: Path) -> None:
+    """``limit`` bytes are the file's; one byte more gives None (at most ``limit + 1`` read)."""
+    path = tmp_path / "f.txt"
+    path.write_bytes(b"abcde")
+    assert read_limited(path, 5) == b"abcde"
+    assert read_limited(path, 6) == b"abcde"
+    assert read_limited(path, 4) is None
+    path.write_bytes(b"")
+    assert read_limited(path, 0) == b""
+
+
+def test_read_limited_refuses_a_fifo_and_a_device_unread_and_passes_open_errors_on(tmp_path: Path) -> None:
+    """A FIFO (an open would wait for a writer) and ``/dev/zero`` (its size reads 0, its bytes
+    never end) are not regular files; a missing file and a folder raise as ``open`` does."""
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    for path in (fifo, Path("/dev/zero")):
+        with pytest.raises(NotRegularFileError) as info:
+            read_limited(path, 10)
+        assert isinstance(info.value, OSError) and info.value.errno == errno.EINVAL
+    with pytest.raises(FileNotFoundError):
+        read_limited(tmp_path / "missing", 10)
+    with pytest.raises(IsADirectoryError):
+        read_limited(tmp_path, 10)

@@ -9,6 +9,7 @@ The YAML files here are written by the tests, so every value is known in advance
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -245,3 +246,12 @@ def test_model_kwargs_turn_activation_names_into_torch_classes_without_touching_
     }
     with pytest.raises(HyperparamError, match="swish"):
         model_kwargs(Hyperparams("ppo", kwargs={"policy_kwargs": {"activation_fn": "swish"}}))
+
+
+def test_a_fifo_or_a_device_is_refused_unread(tmp_path: Path) -> None:
+    """A FIFO would block the open and ``/dev/zero`` (whose size reads 0) never end."""
+    fifo = tmp_path / "pipe.yml"
+    os.mkfifo(fifo)
+    for path in (fifo, Path("/dev/zero")):
+        with pytest.raises(HyperparamError, match=r"^--hyperparams .*: not a regular file \(a FIFO or a device\)$"):
+            load_hyperparams("a2c", path=path)

@@ -23,7 +23,7 @@ from typing import Any
 import yaml
 
 from hg_marl.agents.sb3_limits import check_kwargs
-from hg_marl.core.errors import ConfigError, ModelFileError, check_digits, check_int
+from hg_marl.core.errors import ConfigError, ModelFileError, NotRegularFileError, check_digits, check_int, read_limited
 
 ALGOS: Mapping[str, str] = {
     "ppo": "PPO",
@@ -175,9 +175,12 @@ MAX_YAML_BYTES = 1 << 20
 def _read_yaml(source: Path) -> Any:
     """A hyperparameter YAML file, any problem reported as one line with ``path:line``."""
     try:
-        if source.stat().st_size > MAX_YAML_BYTES:
+        raw = read_limited(source, MAX_YAML_BYTES)
+        if raw is None:
             raise HyperparamError(f"{source}: larger than {MAX_YAML_BYTES} bytes")
-        text = source.read_text(encoding="utf-8")
+        text = raw.decode("utf-8")
+    except NotRegularFileError:
+        raise HyperparamError(f"--hyperparams {source}: not a regular file (a FIFO or a device)") from None
     except FileNotFoundError:
         raise HyperparamError(f"--hyperparams {source}: no such file") from None
     except IsADirectoryError:
