@@ -41,7 +41,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from hg_marl.core.errors import HgMarlError, PopulationError, check_digits, where
+from hg_marl.core.errors import HgMarlError, PopulationError, check_digits, read_limited, where
 from hg_marl.core.scenario import _line_of
 
 SPLITS = ("train", "validation", "held_out")
@@ -153,10 +153,11 @@ def _member(item: Any, index: int, src: _Source) -> Member:
 def _read(path: Path) -> tuple[str, dict[str, Any]]:
     if not path.is_file():
         raise PopulationError(f"{path}: no such population file")
-    if path.stat().st_size > MAX_FILE_BYTES:
-        raise PopulationError(f"{path}: larger than {MAX_FILE_BYTES} bytes")
     try:
-        text = path.read_bytes().decode("utf-8")
+        raw = read_limited(path, MAX_FILE_BYTES)
+        if raw is None:
+            raise PopulationError(f"{path}: larger than {MAX_FILE_BYTES} bytes")
+        text = raw.decode("utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise PopulationError(f"{path}: cannot read the population file ({exc.__class__.__name__})") from None
     check_digits(text, str(path), PopulationError, lines=True)

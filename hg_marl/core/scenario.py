@@ -28,7 +28,7 @@ import tomllib
 from importlib import resources
 from pathlib import Path
 
-from hg_marl.core.errors import ScenarioError, SpecError, check_digits
+from hg_marl.core.errors import ScenarioError, SpecError, check_digits, read_limited
 from hg_marl.core.scenario_file import NAME_PATTERN, RESERVED_NAMES, SCENARIO_NAME_PATTERN, parse_scenario
 from hg_marl.core.scenario_file import _line_of as _line_of  # re-exported: tests read it here
 from hg_marl.core.scenario_generated import generate_scenario
@@ -133,10 +133,11 @@ def load_scenario(spec: str | Path | Scenario, *, strict: bool = False) -> Scena
         )
         return generate_scenario(**params)
     path = Path(text)
-    if path.stat().st_size > MAX_FILE_BYTES:
+    content = read_limited(path, MAX_FILE_BYTES)
+    if content is None:
         raise ScenarioError(f"scenario file {path}: larger than {MAX_FILE_BYTES} bytes")
     try:
-        raw = path.read_bytes().decode("utf-8")
+        raw = content.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise ScenarioError(
             f"scenario file {path}: not UTF-8 text (byte {exc.start}); TOML files must be UTF-8, re-save it as UTF-8"
