@@ -6338,6 +6338,139 @@ FRESH47: tuple[Bug, ...] = (
         gate("planner_main"),
     ),
 )
+"""Round 47, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in sixteen gated modules last planted in round 38, each bug run against its module's gate tests from
+modules.toml: the scenario loader, the durations, the planner robot, the rule table, the spec parser,
+the AEC environment, the hybrid robot, the robots' base, the regret, the preference, trace, population,
+switching and noisy humans, and the planner's plans and planner."""
+ROUND47_TESTS = "tests/training/test_pinned_round47.py"
+"""The values round 47's missed bugs changed, pinned after the round: every round-47 bug runs them too."""
+FRESH47 = pinned_after(FRESH47, ROUND47_TESTS)
+
+
+FRESH48: tuple[Bug, ...] = (
+    Bug(
+        "fresh48 batched env: info's partner_effort reports the learning seat's own seconds of work, not the partner's",
+        "hg_marl/envs/batched.py",
+        '"partner_effort": self.effort[rows, 1 - me]',
+        '"partner_effort": self.effort[rows, me]',
+        gate("batched"),
+    ),
+    Bug(
+        "fresh48 compiled robot: the budget not in the cache key (a table cached at one max_states read at another)",
+        "agents/compiled_robot.py",
+        "key = robot_cache_key(world, robot, stall_after, max_states)",
+        "key = robot_cache_key(world, robot, stall_after)",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh48 belief robot: a partner's wait taken for an act (robot's wait index): the planner's drive ends",
+        "agents/robots/belief.py",
+        "turn.last_actions[1] != world.n_actions(Agent.HUMAN) - 1",
+        "turn.last_actions[1] != world.n_actions(Agent.ROBOT) - 1",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh48 headroom report: headroom.json lists every column as held out, not the population's held-out split",
+        "training/headroom.py",
+        '"held_out": list(result.held_out),',
+        '"held_out": list(result.true),',
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh48 population generator: candidates that solve no task with the first robot kept (none dropped)",
+        "training/population_gen.py",
+        'measured[c][f"{first}.tasks_per_hour"] > 0]',
+        'measured[c][f"{first}.tasks_per_hour"] >= 0]',
+        gate("population_gen"),
+    ),
+    Bug(
+        "fresh48 switching sweep: no recovery measured after a change into a phase exactly min_phase long",
+        "training/switching.py",
+        "if end - start < min_phase:",
+        "if end - start <= min_phase:",
+        gate("switching"),
+    ),
+    Bug(
+        "fresh48 aggregate: the probability of improvement counts a tie as a win, not a half (two equal robots: 1)",
+        "training/aggregate.py",
+        "wins = (diff > 0) + 0.5 * (diff == 0)",
+        "wins = (diff > 0) + 1.0 * (diff == 0)",
+        gate("aggregate"),
+    ),
+    Bug(
+        "fresh48 report: BR-Prox's headroom looked up by the scenario's file name (a scenario path reads '-')",
+        "training/report.py",
+        "{_num(headrooms.get(r['scenario']))}",
+        "{_num(headrooms.get(name))}",
+        gate("report"),
+    ),
+    Bug(
+        "fresh48 adaptation: the rate curve counts the tasks of each completion time alone, not all so far",
+        "training/adaptation.py",
+        "ys = np.concatenate([[0.0], np.cumsum(counts)]).astype(float)",
+        "ys = np.concatenate([[0.0], counts]).astype(float)",
+        gate("adaptation"),
+    ),
+    Bug(
+        "fresh48 partner model: a kind feasible exactly min_chances times and never done not refused",
+        "agents/partner_model.py",
+        "n >= min_chances and",
+        "n > min_chances and",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh48 stalls: a task solved by a run's first logged decision does not end the stretch from the start",
+        "training/stalls.py",
+        "    if len(solved) and solved[0] > 0:\n        marks.append(float(times[0]))\n",
+        "",
+        gate("stalls"),
+    ),
+    Bug(
+        "fresh48 family-out: fo_shy freezes at a handover place though the robot has nothing else to do (both wait on)",
+        "agents/humans/family_out.py",
+        "if state.robot_at in world.scenario.handover_locations and not robot_stuck(world, state):",
+        "if state.robot_at in world.scenario.handover_locations:",
+        gate("family_out"),
+    ),
+    Bug(
+        "fresh48 human base: a tidy human leaves an object out of the robot's reach when the shared spots are full",
+        "agents/humans/base.py",
+        "(place in only_human and (free_shared or can_hand_over))",
+        "(place in only_human and free_shared)",
+        gate("human_base"),
+    ),
+    Bug(
+        "fresh48 cooperative human: the robot's action 0 under way read as unknown (planned without its duration)",
+        "agents/humans/cooperative.py",
+        "robot_action = self._canonical[robot_action] if robot_action >= 0 else -1",
+        "robot_action = self._canonical[robot_action] if robot_action > 0 else -1",
+        gate("human_cooperative"),
+    ),
+    Bug(
+        "fresh48 adversarial human: holding object 0 it steals instead of hiding it (keeps it in hand)",
+        "agents/humans/adversarial.py",
+        "if held >= 0:",
+        "if held > 0:",
+        gate("human_adversarial"),
+    ),
+    Bug(
+        "fresh48 replay human: with loop=True the reset after the last episode raises IndexError, not starting again",
+        "agents/humans/replay.py",
+        "if self.episode >= len(self.episodes):",
+        "if self.episode > len(self.episodes):",
+        gate("human_replay"),
+    ),
+)
+"""Round 48, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen newest modules (last planted in rounds 39-40), each bug run against its module's gate
+tests from modules.toml: the batched env, the compiled robot, the belief robot, the headroom report,
+the population generator, the switching sweep, the aggregate, the report, the adaptation experiment,
+the partner model, the stalls, the family-out partners and the base, cooperative, adversarial and
+replay humans."""
+ROUND48_TESTS = "tests/training/test_pinned_round48.py"
+"""The values round 48's missed bug changed, pinned after the round: every round-48 bug runs them too."""
+FRESH48 = pinned_after(FRESH48, ROUND48_TESTS)
 
 
 ALL = (
@@ -6389,6 +6522,7 @@ ALL = (
     + FRESH45
     + FRESH46
     + FRESH47
+    + FRESH48
 )
 
 
