@@ -107,9 +107,12 @@ def _limit(name: str, default: int) -> int:
     if raw is None:
         return default
     try:
-        return max(1, int(raw))
+        value = int(raw)
     except ValueError:
         raise ScenarioError(f"HG_MARL_MAX_{name.upper()}={raw!r}: expected an integer") from None
+    if value < 1:  # a limit of 0 or below would refuse every scenario under a message naming another limit
+        raise ScenarioError(f"HG_MARL_MAX_{name.upper()}={raw!r}: expected an integer >= 1")
+    return value
 
 
 LIMITS = {"objects": 40, "spots": 120, "bins": 16, "locations": 32, "actions": 4000}

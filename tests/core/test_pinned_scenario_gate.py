@@ -151,3 +151,15 @@ def test_without_robot_start_the_robot_starts_at_its_first_location(tmp_path: Pa
     assert load_scenario(str(plain)).robot_start == (0,)
     assert load_scenario(str(moved)).robot_start == (0,)  # still the first listed, now pass
     assert load_scenario(str(moved)).robot_locations[0] == "pass"
+
+
+@pytest.mark.parametrize("raw", ["0", "-5"])
+def test_a_limit_below_one_is_refused_naming_the_variable(monkeypatch, raw: str) -> None:  # type: ignore[no-untyped-def]
+    """A limit of 0 or less would refuse every scenario (it used to be read as 1, and the
+    refusal then named a limit of 1 the user never set); 1 itself is a limit."""
+    monkeypatch.setenv("HG_MARL_MAX_BINS", raw)
+    with pytest.raises(ScenarioError) as info:
+        load_scenario("paper2015")
+    assert str(info.value) == f"HG_MARL_MAX_BINS={raw!r}: expected an integer >= 1"
+    monkeypatch.setenv("HG_MARL_MAX_BINS", "1")
+    assert len(load_scenario("paper2015").bins) == 1
