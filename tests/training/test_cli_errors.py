@@ -34,6 +34,7 @@ CASES = [
     (["plan", "--human", "adversarial"], "--human"),
     (["plan", "--png", "/nonexistent-folder/plan.png"], "--png"),
     (["plan", "--budget", "0"], "--budget"),
+    (["oracle", "--human", "lazy", "--max-states", "0"], "--max-states"),
     (["reproduce", "--duration", "nan"], "--duration"),
     (["reproduce", "--duration", "0"], "--duration"),
     (["train", "--algo", "sac"], "unknown algorithm"),

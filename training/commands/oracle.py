@@ -12,7 +12,7 @@ def register(app: typer.Typer) -> None:
     def oracle(
         scenario: str = typer.Option("paper2015", help="scenario name or TOML path"),
         human: str = typer.Option("cooperative", help="stationary human, e.g. lazy or lazy:p_idle=0.5"),
-        max_states: int = typer.Option(1_500_000, help="states budget (over it: refused, exit 2)"),
+        max_states: int = typer.Option(1_500_000, min=1, help="states budget (over it: refused, exit 2)"),
         failed_actions: bool = typer.Option(True, help="let the robot use infeasible actions (0.2 s no-ops)"),
         max_seconds: float = typer.Option(60.0, help="wall-time budget in seconds (over it: refused, exit 2)"),
         max_memory: float = typer.Option(4.0, help="resident-memory budget in GB (over it: refused, exit 2)"),
