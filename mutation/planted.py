@@ -6473,6 +6473,130 @@ ROUND48_TESTS = "tests/training/test_pinned_round48.py"
 FRESH48 = pinned_after(FRESH48, ROUND48_TESTS)
 
 
+FRESH49: tuple[Bug, ...] = (
+    Bug(
+        "fresh49 meta base: a count of zero refused (min_visits=0, a non-negative count, rejected)",
+        "agents/meta/base.py",
+        "or value < 0 or int(value) != value:",
+        "or value <= 0 or int(value) != value:",
+        gate("meta_base"),
+    ),
+    Bug(
+        "fresh49 half-step search: a robot's give taken in its own cycle priced as robot idle time (cheaper plans)",
+        "agents/planner/halfstep.py",
+        "active_r and (not give or take)",
+        "active_r and not give",
+        gate("planner_halfstep"),
+    ),
+    Bug(
+        "fresh49 paper: the tasks' spread over seeds is the population sd (ddof 0), not the sample sd",
+        "training/paper.py",
+        '"tasks_solved_std": float(tasks.std(ddof=1))',
+        '"tasks_solved_std": float(tasks.std())',
+        gate("paper_experiment"),
+    ),
+    Bug(
+        "fresh49 planner domain: the robot's carry counted from a spot in its bin's reach, not from one outside it",
+        "agents/planner/domain.py",
+        "carry = t.goto if not spot & bins else 0.0",
+        "carry = t.goto if spot & bins else 0.0",
+        gate("planner_domain"),
+    ),
+    Bug(
+        "fresh49 expectimax: at the human's turn the cost terms not weighted by the model's probabilities",
+        "agents/planner/expectimax.py",
+        "root_terms = root_terms + tuple(p * (a + b) for",
+        "root_terms = root_terms + tuple((a + b) for",
+        gate("planner_expectimax"),
+    ),
+    Bug(
+        "fresh49 human models: the no_handover model still takes what the robot offers (only give ruled out)",
+        "agents/planner/models.py",
+        "HUMAN_KINDS - {Kind.GIVE, Kind.TAKE}",
+        "HUMAN_KINDS - {Kind.GIVE}",
+        gate("planner_models"),
+    ),
+    Bug(
+        "fresh49 partnering: the human's action 0 never fed to the posterior (its evidence lost)",
+        "agents/robots/partnering.py",
+        "and not solved and human_action >= 0:",
+        "and not solved and human_action > 0:",
+        gate("partnering"),
+    ),
+    Bug(
+        "fresh49 study files: a bad spec on the file's last line reported at its key's line",
+        "training/study.py",
+        "for i in range(start or 0, len(self.lines)):",
+        "for i in range(start or 0, len(self.lines) - 1):",
+        gate("study_files"),
+    ),
+    Bug(
+        "fresh49 evaluate: the best-robot reference taken over every scenario, not the cell's own",
+        "training/evaluate.py",
+        'mine = frame[(frame["human"] == human.label) & (frame["scenario"] == scenario)]',
+        'mine = frame[frame["human"] == human.label]',
+        gate("evaluate_study"),
+    ),
+    Bug(
+        "fresh49 homogenize: a padding action stands in for the last ruled-out real action, not the first",
+        "hg_marl/wrappers/homogenize.py",
+        "return int(ruled_out[0])",
+        "return int(ruled_out[-1])",
+        gate("wrapper_homogenize"),
+    ),
+    Bug(
+        "fresh49 views: the robot view's reward drops a task the robot's own action completed",
+        "agents/views.py",
+        'reward += float(self.env.rewards["robot"])',
+        'reward = float(self.env.rewards["robot"])',
+        gate("views"),
+    ),
+    Bug(
+        "fresh49 array partners: a population reset of the table one past its member array fails (IndexError)",
+        "agents/array_partners.py",
+        "if len(self.member) <= int(rows.max(initial=-1)):",
+        "if len(self.member) < int(rows.max(initial=-1)):",
+        gate("array_partners"),
+    ),
+    Bug(
+        "fresh49 lazy human: a p_idle outside [0, 1) accepted (no refusal)",
+        "agents/humans/lazy.py",
+        "self.p_idle = check_p_idle(p_idle)",
+        "self.p_idle = float(p_idle)",
+        gate("human_lazy"),
+    ),
+    Bug(
+        "fresh49 no_handover human: p_idle ignored (it never idles when there is something to do)",
+        "agents/humans/no_handover.py",
+        "return with_idle(deterministic(index), world, self.p_idle)",
+        "return deterministic(index)",
+        gate("human_no_handover"),
+    ),
+    Bug(
+        "fresh49 random human: played as the robot it draws among the human's actions",
+        "agents/humans/random_human.py",
+        "dist = self.distribution_for(turn.world, turn.state, turn.agent)",
+        "dist = self.distribution_for(turn.world, turn.state, Agent.HUMAN)",
+        gate("human_random"),
+    ),
+    Bug(
+        "fresh49 coin: the planner wins the coin but the habit's action is executed",
+        "agents/meta/coin.py",
+        "return Expert.PLANNER",
+        "return Expert.HABIT",
+        gate("meta_coin"),
+    ),
+)
+"""Round 49, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen modules last planted in rounds 40-41, each bug run against its module's gate tests
+from modules.toml: the meta base and coin criteria, the half-step search, the paper experiment, the
+planner's domain, expectimax and human models, partnering, the study files, the study evaluation,
+the homogenising wrapper, the views, the array partners and the lazy, no_handover and random humans."""
+ROUND49_TESTS = "tests/training/test_pinned_round49.py"
+"""The values round 49's missed bugs changed, pinned after the round: every round-49 bug runs them too."""
+FRESH49 = pinned_after(FRESH49, ROUND49_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -6523,6 +6647,7 @@ ALL = (
     + FRESH46
     + FRESH47
     + FRESH48
+    + FRESH49
 )
 
 
