@@ -6597,6 +6597,131 @@ ROUND49_TESTS = "tests/training/test_pinned_round49.py"
 FRESH49 = pinned_after(FRESH49, ROUND49_TESTS)
 
 
+FRESH50: tuple[Bug, ...] = (
+    Bug(
+        "fresh50 io: a numpy integer in a result is written as a quoted string, not a number",
+        "training/io.py",
+        "indent=2, sort_keys=True, default=float, allow_nan=False",
+        "indent=2, sort_keys=True, default=str, allow_nan=False",
+        gate("training_io"),
+    ),
+    Bug(
+        "fresh50 reproduce: the summary's seed count is the adaptation stage's, not the paper runs'",
+        "training/reproduce.py",
+        '"seeds": config.seeds,',
+        '"seeds": config.adaptation_seeds,',
+        gate("reproduce_driver"),
+    ),
+    Bug(
+        "fresh50 habit robot: its decisions logged as the planner's (the source of every decision wrong)",
+        "agents/robots/habit.py",
+        'self._record(\n            "habit",',
+        'self._record(\n            "planner",',
+        gate("habit_robot"),
+    ),
+    Bug(
+        "fresh50 canonical view: the canonical action map taken as the original one (a 3-cycle mapped backwards)",
+        "agents/robots/canonical.py",
+        "to_canonical[to_original] = np.arange(n)",
+        "to_canonical[:] = to_original",
+        gate("canonical_view"),
+    ),
+    Bug(
+        "fresh50 partner specs: the robot's view gets a robot as partner and the human's view a human",
+        "agents/partner_specs.py",
+        "resolve_human(partner) if seat is Agent.ROBOT else make_robot_actor(partner)",
+        "resolve_human(partner) if seat is Agent.HUMAN else make_robot_actor(partner)",
+        gate("partner_specs"),
+    ),
+    Bug(
+        "fresh50 flat: the observation space declares the mask in the facts' dtype (float32), not int8",
+        "hg_marl/wrappers/flat.py",
+        "mask_key: spaces.Box(0, 1, (n,), np.int8)",
+        "mask_key: spaces.Box(0, 1, (n,), self.dtype)",
+        gate("wrapper_flat"),
+    ),
+    Bug(
+        "fresh50 adapters: a scripted robot reset for the human seat and a scripted human for the robot's",
+        "agents/adapters.py",
+        'seat = Agent.ROBOT if name == "robot" else Agent.HUMAN',
+        'seat = Agent.ROBOT if name == "human" else Agent.HUMAN',
+        gate("adapters"),
+    ),
+    Bug(
+        "fresh50 play stats: resemblance ignores handover acceptance (the profile holds the shares only)",
+        "training/play/stats.py",
+        "np.array([self.shares.get(k, 0.0) for k in KINDS] + [self.handover_acceptance or 0.0])",
+        "np.array([self.shares.get(k, 0.0) for k in KINDS])",
+        gate("play_stats"),
+    ),
+    Bug(
+        "fresh50 SB3 evaluation: every seed runs seed 0 (the mean over seeds is one run's rate)",
+        "training/baselines/evaluation.py",
+        "RunConfig(scenario=scenario, duration=duration, seed=seed)",
+        "RunConfig(scenario=scenario, duration=duration, seed=0)",
+        gate("baselines_evaluation"),
+    ),
+    Bug(
+        "fresh50 learned: a table whose action index equals the action count accepted on load (fails mid-run)",
+        "agents/humans/learned.py",
+        "actions.max() < n_a):\n        raise ModelFileError",
+        "actions.max() <= n_a):\n        raise ModelFileError",
+        gate("learned_human"),
+    ),
+    Bug(
+        "fresh50 batched learned: the partner's given name ignored (always the human's own)",
+        "agents/batched_learned.py",
+        "self.name = name or str(human.name)",
+        "self.name = str(human.name)",
+        gate("batched_learned"),
+    ),
+    Bug(
+        "fresh50 ppo batched: --gae-lambda 0 (documented range [0, 1]) refused",
+        "training/baselines/ppo_batched.py",
+        "not 0 <= self.gae_lambda <= 1",
+        "not 0 < self.gae_lambda <= 1",
+        gate("ppo_batched"),
+    ),
+    Bug(
+        "fresh50 parallel view: an actions dict missing a live agent accepted (only unknown agents refused)",
+        "hg_marl/envs/parallel.py",
+        "if set(actions) != live:",
+        "if not set(actions) <= live:",
+        gate("parallel_view"),
+    ),
+    Bug(
+        "fresh50 audit: action 0 counted as infeasible even where the mask allows it",
+        "hg_marl/wrappers/audit.py",
+        "if not (0 <= index < mask.shape[0] and mask[index]):",
+        "if not (0 < index < mask.shape[0] and mask[index]):",
+        gate("wrapper_audit"),
+    ),
+    Bug(
+        "fresh50 partner monitor: after a fallback the robot waits a full stall_after misses, not half, to stall again",
+        "agents/partner.py",
+        "self.misses = self.stall_after // 2",
+        "self.misses = 0",
+        gate("partner"),
+    ),
+    Bug(
+        "fresh50 hyperparams: n_steps=1 refused even with several envs (checked alone, not n_steps x n_envs)",
+        "training/baselines/hyperparams.py",
+        "isinstance(n_steps, int) and n_steps * n_envs < 2:",
+        "isinstance(n_steps, int) and n_steps < 2:",
+        gate("baselines_hyperparams"),
+    ),
+)
+"""Round 50, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen modules last planted in rounds 41-42, each bug run against its module's gate tests
+from modules.toml: the result writers, the reproduce driver, the habit and canonical views, the
+partner specs, the flat and audit wrappers, the adapters, the play statistics, the SB3 evaluation,
+the learned human and its batched partner, the batched PPO, the parallel view, the partner monitor
+and the hyperparameters."""
+ROUND50_TESTS = "tests/training/test_pinned_round50.py"
+"""The value round 50's missed bug changed, pinned after the round: every round-50 bug runs it too."""
+FRESH50 = pinned_after(FRESH50, ROUND50_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -6648,6 +6773,7 @@ ALL = (
     + FRESH47
     + FRESH48
     + FRESH49
+    + FRESH50
 )
 
 
