@@ -6722,6 +6722,131 @@ ROUND50_TESTS = "tests/training/test_pinned_round50.py"
 FRESH50 = pinned_after(FRESH50, ROUND50_TESTS)
 
 
+FRESH51: tuple[Bug, ...] = (
+    Bug(
+        "fresh51 sb3 limits: sde_sample_freq=-1 (SB3's default, sample only at a rollout's start) refused",
+        "agents/sb3_limits.py",
+        '"sde_sample_freq": (_INT, -1, 1_000_000),',
+        '"sde_sample_freq": (_INT, 0, 1_000_000),',
+        gate("sb3_limits"),
+    ),
+    Bug(
+        "fresh51 comparison: a row's final rate is each seed's first evaluation (step 0), not its last",
+        "training/baselines/comparison.py",
+        'finals = [c["curve"][-1][1] for c in mine]',
+        'finals = [c["curve"][0][1] for c in mine]',
+        gate("baselines_comparison"),
+    ),
+    Bug(
+        "fresh51 sb3 wrapper: a finished sub-env's terminal observation is the reset table's, not its last",
+        "hg_marl/wrappers/sb3.py",
+        'infos[i]["terminal_observation"] = final[i]',
+        'infos[i]["terminal_observation"] = obs[i]',
+        gate("sb3_wrapper"),
+    ),
+    Bug(
+        "fresh51 convert: --observation ignored when the old metadata names an observation mode",
+        "training/baselines/convert.py",
+        'observation = observation or old.get("observation", "facts")',
+        'observation = old.get("observation") or observation or "facts"',
+        gate("baselines_convert"),
+    ),
+    Bug(
+        "fresh51 sb3 robot: a DQN robot with deterministic=False explores (epsilon-greedy), not greedy",
+        "agents/robots/sb3.py",
+        "predicted, _ = self.model.predict(obs, deterministic=True, **kwargs)",
+        "predicted, _ = self.model.predict(obs, deterministic=self.deterministic, **kwargs)",
+        gate("sb3_robot"),
+    ),
+    Bug(
+        "fresh51 play replay: a trace without rewards in its end line reports 0 recorded rewards, not none",
+        "training/play/replay.py",
+        'if "rewards" in ep.end else None,',
+        'if "rewards" in ep.end else 0.0,',
+        gate("play_replay"),
+    ),
+    Bug(
+        "fresh51 play session: the robot expecting the person's action 0 shows no expected move",
+        "training/play/session.py",
+        "if 0 <= expected < len(names[Agent.HUMAN]) else",
+        "if 0 < expected < len(names[Agent.HUMAN]) else",
+        gate("play_session"),
+    ),
+    Bug(
+        "fresh51 baselines envs: the robot seat's training view is continuing (a clean table ends no episode)",
+        "training/baselines/envs.py",
+        "human=partners,\n                continuing=False,",
+        "human=partners,\n                continuing=True,",
+        gate("baselines_envs"),
+    ),
+    Bug(
+        "fresh51 backends: --workers accepted up to 256 whatever the CPU count (min taken as max)",
+        "training/backends.py",
+        "return min(MAX_WORKERS, MAX_WORKERS_PER_CPU * (os.cpu_count() or 1))",
+        "return max(MAX_WORKERS, MAX_WORKERS_PER_CPU * (os.cpu_count() or 1))",
+        gate("backends"),
+    ),
+    Bug(
+        "fresh51 bc: traces recording another action count accepted (only the fact count checked)",
+        "training/baselines/bc.py",
+        "if data.facts.shape[1] != world.n_facts or data.masks.shape[1] != n_actions:",
+        "if data.facts.shape[1] != world.n_facts:",
+        gate("baselines_bc"),
+    ),
+    Bug(
+        "fresh51 callbacks: a frequency of 0 steps accepted (a division by zero at training start)",
+        "training/baselines/callbacks.py",
+        "if freq < 1:",
+        "if freq < 0:",
+        gate("baselines_callbacks"),
+    ),
+    Bug(
+        "fresh51 compare: a ppo_batched cell's curve has no step-0 evaluation (first due at eval_every)",
+        "training/baselines/compare.py",
+        "due = [0]",
+        "due = [config.eval_every]",
+        gate("baselines_compare"),
+    ),
+    Bug(
+        "fresh51 oracle: off its model without a plan the oracle robot answers an index past wait",
+        "agents/oracle.py",
+        "self._wait = world.n_actions(Agent.ROBOT) - 1",
+        "self._wait = world.n_actions(Agent.ROBOT)",
+        gate("oracle"),
+    ),
+    Bug(
+        "fresh51 headroom: each column's optimum read from the diagonal (row t), not the row of its own label",
+        "agents/headroom.py",
+        "rates[list(rows).index(label), t] for t",
+        "rates[t, t] for t",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh51 batch rules: the last object never checked, so a table with it off the bins is clean",
+        "hg_marl/core/batch.py",
+        "for o in range(self.n_objects):\n            rows = rows[",
+        "for o in range(self.n_objects - 1):\n            rows = rows[",
+        gate("batch_rules"),
+    ),
+    Bug(
+        "fresh51 compiled: a human ignoring the robot's action looked up with it, so every table falls back",
+        "agents/compiled.py",
+        "keys = self.packer.pack(b, seen if self.uses_robot_action else np.full(len(b), -1, dtype=np.int64))",
+        "keys = self.packer.pack(b, seen)",
+        gate("compiled"),
+    ),
+)
+"""Round 51, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen modules last planted in rounds 42-43, each bug run against its module's gate tests
+from modules.toml: the SB3 limits, the comparison's summary, the SB3 wrapper, the converter, the
+SB3 robot, the play replay and session, the training envs, the backends, behaviour cloning, the
+callbacks, the comparison driver, the oracle, the headroom matrix, the batched rules and the
+compiled partners."""
+ROUND51_TESTS = "tests/training/test_pinned_round51.py"
+"""The values round 51's missed bugs changed, pinned after the round: every round-51 bug runs them too."""
+FRESH51 = pinned_after(FRESH51, ROUND51_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -6774,6 +6899,7 @@ ALL = (
     + FRESH48
     + FRESH49
     + FRESH50
+    + FRESH51
 )
 
 

@@ -63,13 +63,17 @@ class BatchState:
         return len(self.robot_at)
 
     def take(self, rows: np.ndarray) -> BatchState:
-        """A new batch of tables ``rows`` (copies; a row may repeat).
+        """A new batch of tables ``rows`` (copies; a row may repeat), each still naming its env table.
 
         ``np.take`` along the rows: numpy's fancy indexing of a 2-D array by one index
         array takes about twice as long for the same copy.
         """
         return BatchState(
-            np.take(self.where, rows, axis=0), self.robot_at[rows], self.offer_by[rows], self.offer_obj[rows]
+            np.take(self.where, rows, axis=0),
+            self.robot_at[rows],
+            self.offer_by[rows],
+            self.offer_obj[rows],
+            self.rows[rows],
         )
 
     def put(self, rows: np.ndarray, other: BatchState) -> None:
