@@ -67,3 +67,18 @@ def test_the_key_limit_is_two_to_the_62() -> None:
     assert packer.unpack(np.array([packer.pack_one(state)], dtype=np.int64))[0].state(0) == state
     with pytest.raises(ValueError, match=r"too many states to pack into 64-bit keys"):
         StatePacker(too_big)
+
+
+def test_a_state_past_the_last_key_of_a_large_map_is_a_key_error() -> None:
+    """A map of more than 256 keys (Python caches the small integers, so an identity test of
+    the position against the length holds below that by chance): a state whose key is above
+    every held key is a ``KeyError`` too, not an index past the end."""
+    world = World("roboergosum")
+    packer = StatePacker(world)
+    states = sorted({s for s, _ in layout_distribution(world)}, key=packer.pack_one)
+    assert len(states) > 300
+    held = states[:-1]
+    m = PackedMap(packer, np.array([packer.pack_one(s) for s in held], dtype=np.int64), np.arange(len(held)))
+    with pytest.raises(KeyError):
+        m[states[-1]]
+    assert m[held[-1]] == len(held) - 1

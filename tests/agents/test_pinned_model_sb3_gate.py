@@ -117,3 +117,29 @@ def test_arrays_of_another_dtype_are_refused(tmp_path: Path, saved: Any, needed:
     with pytest.raises(ModelFileError, match="the buffer needs"):
         load_replay_buffer(target, tmp_path / "model.json", entry)
     assert target.pos == 0 and target.observations.tolist() == [[0, 1], [2, 3], [4, 5], [6, 7]]
+
+
+def test_a_header_sb3_cannot_build_from_is_refused_in_one_line(tmp_path: Path) -> None:
+    """SB3 asserts an algorithm's supported spaces (DQN: a Discrete action space): a header
+    whose action space is a Box makes the constructor raise ``AssertionError``, which must
+    come back as the file's one-line refusal, not a traceback."""
+    import json
+
+    pytest.importorskip("stable_baselines3")
+    from stable_baselines3 import DQN
+
+    from hg_marl.agents.model_file import save_sb3, world_fields
+    from hg_marl.agents.model_format import load_model_file
+    from hg_marl.agents.model_sb3 import build_sb3
+    from hg_marl.agents.views import RobotView
+    from hg_marl.core import Agent, World
+
+    world = World("paper2015")
+    model = DQN("MlpPolicy", RobotView("paper2015"), buffer_size=16, learning_starts=0, seed=0, device="cpu")
+    path = save_sb3(model, tmp_path / "model.json", world_fields(world, Agent.ROBOT), observation="facts")
+    header = json.loads(path.read_text())
+    header["action_space"] = space_to_json(spaces.Box(0.0, 1.0, (2,)))
+    path.write_text(json.dumps(header))
+    with pytest.raises(ModelFileError, match=r"model\.json: cannot rebuild the DQN model \(.*Discrete") as info:
+        build_sb3(load_model_file(path))
+    assert "\n" not in str(info.value)
