@@ -18,17 +18,15 @@ The expected values are stated independently of the code under test:
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import pytest
-from gymnasium import spaces
-from pettingzoo import AECEnv
 
 from hg_marl.agents.array_partners import CompiledPopulation
 from hg_marl.core.errors import StudyError
 from hg_marl.training.study import load_study
 from hg_marl.wrappers.homogenize import HomogenizeWrapper
+from tests.env.test_pinned_wrapper_homogenize_gate import _Stub
 
 # --- training/study.py ---
 
@@ -45,50 +43,9 @@ def test_a_bad_spec_on_the_study_files_last_line_is_reported_at_that_line(tmp_pa
 # --- hg_marl/wrappers/homogenize.py ---
 
 
-class _Stub(AECEnv):
-    """Agent ``a`` with 3 real actions, ``b`` with 5; masks set by the test; actions recorded."""
-
-    metadata = {"render_modes": [], "name": "stub"}  # noqa: RUF012 (as AECEnv)
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.possible_agents = ["a", "b"]
-        self.n_actions = {"a": 3, "b": 5}
-        self.masks = {a: np.ones(n, np.int8) for a, n in self.n_actions.items()}
-        self.received: list[Any] = []
-        self.reset()
-
-    def observation_space(self, agent: str) -> spaces.Space:
-        return spaces.Dict(
-            {
-                "observation": spaces.Box(0, 1, (2,), np.int8),
-                "action_mask": spaces.Box(0, 1, (self.n_actions[agent],), np.int8),
-            }
-        )
-
-    def action_space(self, agent: str) -> spaces.Space:
-        return spaces.Discrete(self.n_actions[agent])
-
-    def reset(self, seed: int | None = None, options: dict[str, Any] | None = None) -> None:
-        self.agents = list(self.possible_agents)
-        self.agent_selection = "a"
-        self.rewards = dict.fromkeys(self.agents, 0.0)
-        self._cumulative_rewards = dict.fromkeys(self.agents, 0.0)
-        self.terminations = dict.fromkeys(self.agents, False)
-        self.truncations = dict.fromkeys(self.agents, False)
-        self.infos: dict[str, dict[str, Any]] = {a: {} for a in self.agents}
-
-    def observe(self, agent: str) -> dict[str, np.ndarray]:
-        return {"observation": np.zeros(2, np.int8), "action_mask": self.masks[agent].copy()}
-
-    def step(self, action: Any) -> None:
-        self.received.append(action)
-        self.agent_selection = "b" if self.agent_selection == "a" else "a"
-
-
 def test_a_padded_index_stands_in_for_the_first_of_several_ruled_out_actions() -> None:
     """Mask [1, 0, 0]: actions 1 and 2 are ruled out; the first of them, 1, stands in for padding 4."""
-    stub = _Stub()
+    stub = _Stub({"a": 3, "b": 5}, {"a": 2, "b": 2})  # the wrapper gate's stub: a has 3 real actions, b 5
     stub.masks["a"] = np.array([1, 0, 0], np.int8)
     env = HomogenizeWrapper(stub)
     env.reset()
