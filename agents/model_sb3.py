@@ -120,12 +120,10 @@ def space_from_json(data: Any, where: str) -> Any:
             return spaces.Discrete(n, start=start)
         if kind == "MultiBinary":
             n = data.get("n")  # an integer, or a shape (``MultiBinary([2, 3])``)
-            if (
-                not (_is_int(n) or _is_shape(n))
-                or not 0 < math.prod(n if isinstance(n, list) else [n]) <= MAX_SPACE_SIZE
-            ):
+            shape = [n] if _is_int(n) else n
+            if not _is_shape(shape) or math.prod(shape) > MAX_SPACE_SIZE:
                 raise fail(f"MultiBinary n must be an integer or a shape of 1 to {MAX_SPACE_SIZE} elements")
-            return spaces.MultiBinary(n)
+            return spaces.MultiBinary(shape[0] if _is_int(n) else shape)
         if kind == "Dict":
             sub = data.get("spaces")
             if not isinstance(sub, dict):

@@ -57,17 +57,13 @@ class StatePacker:
 
     def unpack(self, keys: np.ndarray) -> tuple[BatchState, np.ndarray]:
         """The batch and the robot action seen (-1: none) that :meth:`pack` made ``keys`` from."""
-        n = self.n_objects
-        where = np.empty((len(keys), n), dtype=np.int64)
-        rest = keys
-        for o, radix in enumerate(self._radix[:n]):  # the lowest digit first: one division per digit
-            rest, where[:, o] = np.divmod(rest, radix)
-        tail = []
-        for radix in self._radix[n:]:
+        digits, rest = [], keys
+        for radix in self._radix:  # the lowest digit first: one division per digit
             rest, digit = np.divmod(rest, radix)
-            tail.append(digit)
-        at, by, obj, seen = tail
-        return BatchState(where, at, by - 1, obj - 1), seen - 1
+            digits.append(digit)
+        n = self.n_objects
+        at, by, obj, seen = digits[n:]
+        return BatchState(np.stack(digits[:n], axis=1), at, by - 1, obj - 1), seen - 1
 
     def canonical(self, b: BatchState) -> np.ndarray:
         """Relabel ``b`` in place into :meth:`Relabel.canonical`'s state (each class sorted by place).

@@ -47,6 +47,7 @@ def test_multi_dimensional_and_scalar_spaces_round_trip(space: Any) -> None:
         ({"type": "MultiBinary", "n": []}, "MultiBinary n"),
         ({"type": "MultiBinary", "n": [1000, 1001]}, "MultiBinary n"),  # 1,001,000 elements: over the limit
         ({"type": "MultiBinary", "n": [2, 0]}, "MultiBinary n"),
+        ({"type": "Discrete", "n": 0}, "Discrete n"),  # no actions
         ({"type": "Discrete", "n": 3, "start": False}, "Discrete start"),
         ({"type": "Box", "shape": [True], "low": 0, "high": 1, "dtype": "float32"}, "Box shape"),
         # 2**64 elements: numpy's product of the shape wraps to 0, Python's integers do not
@@ -143,3 +144,24 @@ def test_a_header_sb3_cannot_build_from_is_refused_in_one_line(tmp_path: Path) -
     with pytest.raises(ModelFileError, match=r"model\.json: cannot rebuild the DQN model \(.*Discrete") as info:
         build_sb3(load_model_file(path))
     assert "\n" not in str(info.value)
+
+
+@pytest.mark.parametrize("which", ["observation", "action"])
+def test_an_environment_differing_in_either_space_is_refused(tmp_path: Path, which: str) -> None:
+    """Resuming on an environment whose observation space, or whose action space alone,
+    differs from the header's is refused (paper2015's robot: 24 facts, 18 actions)."""
+    pytest.importorskip("stable_baselines3")
+    from stable_baselines3 import DQN
+
+    from hg_marl.agents.model_file import save_sb3, world_fields
+    from hg_marl.agents.model_format import load_model_file
+    from hg_marl.agents.model_sb3 import _SpacesOnly, build_sb3
+    from hg_marl.agents.views import RobotView
+    from hg_marl.core import Agent, World
+
+    model = DQN("MlpPolicy", RobotView("paper2015"), buffer_size=16, learning_starts=0, seed=0, device="cpu")
+    path = save_sb3(model, tmp_path / "model.json", world_fields(World("paper2015"), Agent.ROBOT), observation="facts")
+    obs = spaces.Box(0, 1, (25 if which == "observation" else 24,), np.int8)
+    env = _SpacesOnly(obs, spaces.Discrete(19 if which == "action" else 18))
+    with pytest.raises(ModelFileError, match=r"model\.json: its spaces differ from the environment's$"):
+        build_sb3(load_model_file(path), env=env)
