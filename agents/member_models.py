@@ -35,7 +35,8 @@ from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.cache import cache_folder, result_key
 from hg_marl.agents.models.python_model import PythonModel
 from hg_marl.agents.oracle import OracleResult, oracle_rate
-from hg_marl.core import World
+from hg_marl.agents.planner.space import Relabel
+from hg_marl.core import Agent, State, World
 
 MEMO_ENTRIES = 32
 """Member results kept in this process (a ``roboergosum`` member's packed keys, policy and
@@ -113,3 +114,20 @@ class MemberModels:
             human = stationary_human(self.specs[m], self.world)
             model = self._models[m] = PythonModel(self.world, human, True, 1)
         return model
+
+
+def backup(world: World, state: State, result: OracleResult, model: PythonModel, relabel: Relabel) -> dict[int, float]:
+    """Per feasible robot action, the expected seconds to the next success: the one-step backup
+    of ``result``'s values through ``model``'s replies (the oracle's own transition rule)."""
+    table = world.table
+    out: dict[int, float] = {}
+    for a in world.feasible_indices(state, Agent.ROBOT):  # feasible: each succeeds, and the partner sees it
+        mid, _, duration = table.successor(state, Agent.ROBOT, a)
+        if table.solves(state, Agent.ROBOT, a):
+            out[a] = 0.0  # the completing wait: the oracle's terminal pair
+            continue
+        q = 0.0
+        for nxt, p, tau in model.replies(mid, duration, a):
+            q += p * (tau + result.value_at(world, nxt, relabel))
+        out[a] = q
+    return out

@@ -45,7 +45,7 @@ from __future__ import annotations
 import logging
 import math
 import time
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -161,6 +161,7 @@ def oracle_rate(
     max_memory: int | None = DEFAULT_MEMORY,
     budget: Budget | None = None,
     cache: Path | str | bool | None = True,
+    roots: Sequence[State] = (),
 ) -> OracleResult:
     """The optimal tasks per simulated hour against ``human``, and the policy achieving it.
 
@@ -184,6 +185,12 @@ def oracle_rate(
         cache: a folder to keep results in by content (``agents/models/cache.py``); True:
             ``$HG_MARL_CACHE/oracle`` when set, else none; None/False: none. Only a human
             given by its spec is cached.
+        roots: the tables to solve from instead of every initial layout (empty: every
+            layout). The model then holds the states reachable from them until a task is
+            solved, and a solved task re-draws one of them: each state's value (the expected
+            seconds to the next success) is the same as in the whole model, and
+            ``rate_per_hour`` is the rate of a table re-drawn as ``roots``. Not cached, not
+            reduced by symmetry.
 
     Raises:
         HumanError: the human is not stationary.
@@ -203,22 +210,26 @@ def oracle_rate(
             "tolerance": tolerance,
             "max_iterations": max_iterations,
         }
-        folder = cache_folder(cache) if isinstance(human, str | AgentSpec) else None
-        path = key = None
+        folder = cache_folder(cache) if isinstance(human, str | AgentSpec) and not roots else None
+        entry: tuple[Path, str] | None = None  # where the result is kept, and its key
         if folder is not None:
             key = result_key(world, str(human), options)
             path = entry_path(folder, world, key)
+            entry = (path, key)
             stored = load_entry(path, key)
             if stored is not None:
                 return _from_entry(world, policy_human, stored, time.perf_counter() - start)
         relabel: Relabel | None = Relabel(world)
         if symmetry is None:
             symmetry = bool(getattr(policy_human, "equivariant", False))
-        if not (symmetry and relabel is not None and relabel.active):
+        if roots or not (symmetry and relabel is not None and relabel.active):
             relabel = None
-        deals = layout_count(world.scenario) if relabel is None else canonical_layout_count(world)
-        budget.refuse_count("layouts", deals, "initial layouts")  # before enumerating them
-        layouts = layout_distribution(world, budget) if relabel is None else canonical_layouts(world, budget)
+        if roots:
+            layouts = [(state, 1.0 / len(roots)) for state in roots]
+        else:
+            deals = layout_count(world.scenario) if relabel is None else canonical_layout_count(world)
+            budget.refuse_count("layouts", deals, "initial layouts")  # before enumerating them
+            layouts = layout_distribution(world, budget) if relabel is None else canonical_layouts(world, budget)
         answers = AnswerTable(world, policy_human, StatePacker(world), budget)
         model = build_model(
             world,
@@ -233,10 +244,9 @@ def oracle_rate(
         solution = solve(model, tolerance=tolerance, max_iterations=max_iterations, budget=budget)
     expected = solution.seconds_per_task
     rate = 0.0 if math.isinf(expected) else HOUR / expected
-    if path is not None and key is not None:
+    if entry is not None:
         save_entry(
-            path,
-            key,
+            *entry,
             {
                 "keys": model.keys,
                 "policy": model.pair_action[solution.best_pair],

@@ -6847,6 +6847,382 @@ ROUND51_TESTS = "tests/training/test_pinned_round51.py"
 FRESH51 = pinned_after(FRESH51, ROUND51_TESTS)
 
 
+FRESH52: tuple[Bug, ...] = (
+    Bug(
+        "fresh52 model solve: a pair that only returns to its state valued at one step's seconds (rates too high)",
+        "agents/models/solve.py",
+        "inf_at, dead = np.flatnonzero(terminal & ok), np.flatnonzero(~ok | looping), np.flatnonzero(~alive)",
+        "inf_at, dead = np.flatnonzero(terminal & ok), np.flatnonzero(~ok), np.flatnonzero(~alive)",
+        gate("model_solve"),
+    ),
+    Bug(
+        "fresh52 model packing: an unpacked key reports the robot action seen one too high (none read as action 0)",
+        "agents/models/packing.py",
+        "by - 1, obj - 1), seen - 1",
+        "by - 1, obj - 1), seen",
+        gate("model_packing"),
+    ),
+    Bug(
+        "fresh52 model partners: a preference human's answers keep entries of probability 0 (a wait listed twice)",
+        "agents/models/partners.py",
+        "keep = (act >= 0) & (prob > 0.0)",
+        "keep = act >= 0",
+        gate("model_partners"),
+    ),
+    Bug(
+        "fresh52 model layouts: a deal's probability not divided by the object subsets' count (sums past 1)",
+        "agents/models/layouts.py",
+        "q = p / (len(subsets) * len(spots))",
+        "q = p / len(spots)",
+        gate("model_layouts"),
+    ),
+    Bug(
+        "fresh52 model lazy: a kept-in-tables transition lasts the shorter of the two actions, not the longer",
+        "agents/models/lazy.py",
+        'tau = np.maximum(self.d_robot[pair_of], table.entries["d_human"][at])',
+        'tau = np.minimum(self.d_robot[pair_of], table.entries["d_human"][at])',
+        gate("model_lazy"),
+    ),
+    Bug(
+        "fresh52 model keyed: keys added out of order stored with the entry counts of the keys in their sorted places",
+        "agents/models/keyed.py",
+        "self.size = np.insert(self.size, at, sizes[order].astype(np.int64))",
+        "self.size = np.insert(self.size, at, sizes.astype(np.int64))",
+        gate("model_keyed"),
+    ),
+    Bug(
+        "fresh52 model equivariant: a robot action seen keyed as itself, not its class's representative",
+        "agents/models/equivariant.py",
+        "rep = self.rep[seen] if self.uses_robot_action else",
+        "rep = seen if self.uses_robot_action else",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh52 model chains: a policy's rate leaves the re-drawn tables out of its reached states (wrong rate)",
+        "agents/models/chains.py",
+        "    frontier = unique(chain.regen_next)\n    seen[frontier] = True\n",
+        "    frontier = unique(chain.regen_next)\n",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh52 model builder: a re-drawn table's first answer asked as if the robot's wait failed (seen -1)",
+        "agents/models/builder.py",
+        "np.full(len(lay), wait if table.uses_robot_action else -1, dtype=np.int64)",
+        "np.full(len(lay), -1, dtype=np.int64)",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh52 member models: a member's one-step model leaves out the robot's failed actions",
+        "agents/member_models.py",
+        "PythonModel(self.world, human, True, 1)",
+        "PythonModel(self.world, human, False, 1)",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh52 model live: two questions start the workers, and once they run a batch under 128 is answered here",
+        "agents/models/live.py",
+        "len(rows) >= (2 if workers.started else MIN_PARALLEL)",
+        "len(rows) >= (MIN_PARALLEL if workers.started else 2)",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh52 model answers: an entry's next state recorded relabelled (an unreduced model reaches canonical ones)",
+        "agents/models/answers.py",
+        '"next": nxt,',
+        '"next": self.packer.pack(b),',
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh52 random robot: draws from a fresh unseeded generator, not the robot's (a seed gives another run)",
+        "agents/robots/uniform.py",
+        "feasible[self.rng.integers(len(feasible))]",
+        "feasible[np.random.default_rng().integers(len(feasible))]",
+        gate("random_robot"),
+    ),
+    Bug(
+        "fresh52 recurrent ppo sb3: greedy play's infeasible share counted per cycle, not per action (it exceeds 1)",
+        "training/baselines/recurrent_ppo_sb3.py",
+        "acts += num_envs",
+        "acts += 1",
+        gate("recurrent_ppo_sb3"),
+    ),
+    Bug(
+        "fresh52 habit: beta=0 (a uniform Boltzmann policy) refused as out of range",
+        "agents/habit.py",
+        '"beta": self.beta >= 0,',
+        '"beta": self.beta > 0,',
+        gate("habit"),
+    ),
+    Bug(
+        "fresh52 meta controller: the criterion choosing the planner executes the habit's action (and vice versa)",
+        "agents/meta/controller.py",
+        "action = proposal.action if expert is Expert.PLANNER else habit.action",
+        "action = proposal.action if expert is Expert.HABIT else habit.action",
+        gate("meta_controller"),
+    ),
+)
+"""Round 52, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen modules last planted in rounds 43-44, each bug run against its module's gate tests
+from modules.toml: the model builder's solver, packing, array partners, layouts, lazy transitions,
+keyed tables, canonical answers, chains, builder, live answers and answer tables, the belief's
+member models, the random robot, the SB3 recurrent PPO, the habit and the meta-controller."""
+ROUND52_TESTS = "tests/training/test_pinned_round52.py"
+"""The values round 52's missed bugs changed, pinned after the round: every round-52 bug runs them too."""
+FRESH52 = pinned_after(FRESH52, ROUND52_TESTS)
+
+FRESH53: tuple[Bug, ...] = (
+    Bug(
+        "fresh53 budget: a layout count of exactly max_states refused before it is enumerated",
+        "agents/models/budget.py",
+        "if self.states is not None and count > self.states:",
+        "if self.states is not None and count >= self.states:",
+        gate("model_budget"),
+    ),
+    Bug(
+        "fresh53 recipes: a noisy partner's eps read backwards (the eps=0 checkpoint acts at random every turn)",
+        "training/baselines/recipes.py",
+        "noisy = rng.random(len(batch)) < self.eps[batch.rows]",
+        "noisy = rng.random(len(batch)) > self.eps[batch.rows]",
+        gate("recipes"),
+    ),
+    Bug(
+        "fresh53 memory policy: the heads read the encoder, not the GRU's state (a recurrent robot remembers nothing)",
+        "agents/memory_policy.py",
+        "h = self.gru(x, h)\n            x = h\n",
+        "h = self.gru(x, h)\n",
+        gate("memory_policy"),
+    ),
+    Bug(
+        "fresh53 model format: a model named by its .npz read as its own header (refused as not a header)",
+        "agents/model_format.py",
+        'header = p.with_suffix(".json") if p.suffix in ("", ".npz") else p',
+        'header = p.with_suffix(".json") if p.suffix == "" else p',
+        gate("model_format"),
+    ),
+    Bug(
+        "fresh53 model limits: the SB3 budget not doubled for target networks (a large DQN file refused)",
+        "agents/model_limits.py",
+        "return weights * 8 * 3 * 2 + SB3_SLACK_BYTES",
+        "return weights * 8 * 3 + SB3_SLACK_BYTES",
+        gate("model_limits"),
+    ),
+    Bug(
+        "fresh53 relabel: two interchangeable objects never put in canonical order (only classes of three or more)",
+        "hg_marl/core/relabel.py",
+        "if len(g) > 1)",
+        "if len(g) > 2)",
+        gate("relabel"),
+    ),
+    Bug(
+        "fresh53 vector envs: the robot seat's durations ignored (the scenario's own durations used)",
+        "agents/vector_envs.py",
+        "world = World(scenario, durations)\n    check_batch(world, num_envs)",
+        "world = World(scenario)\n    check_batch(world, num_envs)",
+        gate("vector_envs"),
+    ),
+    Bug(
+        "fresh53 world: the hands' names swapped (an object in the robot's hand named as in the human's)",
+        "hg_marl/core/world.py",
+        'return "robot\'s hand" if place == self.hand[Agent.ROBOT] else "human\'s hand"',
+        'return "robot\'s hand" if place == self.hand[Agent.HUMAN] else "human\'s hand"',
+        gate("world"),
+    ),
+    Bug(
+        "fresh53 sweep: an output folder's store is the folder itself, not out/store (earlier sweeps' runs not found)",
+        "training/sweep.py",
+        'return Store(Path(out) / "store")',
+        "return Store(Path(out))",
+        gate("sweep"),
+    ),
+    Bug(
+        "fresh53 store: a summary with true in a numeric field (tasks_solved: true) used, not repaired",
+        "training/store.py",
+        "number = isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)",
+        "number = isinstance(value, int | float) and math.isfinite(value)",
+        gate("store"),
+    ),
+    Bug(
+        "fresh53 runner: the summary's final weight amplitude is the first decision's, not the last",
+        "training/runner.py",
+        'float(log["weight_amplitude"].iloc[-1])',
+        'float(log["weight_amplitude"].iloc[0])',
+        gate("runner"),
+    ),
+    Bug(
+        "fresh53 forked: a map in this process checks its budget only before the first item, never after a result",
+        "agents/models/forked.py",
+        (
+            "out.append(self.owner.function(item))\n"
+            "                if check is not None:\n"
+            "                    check(len(out))\n"
+        ),
+        "out.append(self.owner.function(item))\n",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh53 planner bound: an empty-handed start gives back a wait's duration, not a move's (the bound too high)",
+        "agents/planner/space.py",
+        "cr * world.durations.goto for cr, _ in self.coefs",
+        "cr * world.durations.wait for cr, _ in self.coefs",
+        gate("planner_bound"),
+    ),
+    Bug(
+        "fresh53 entropy and cost: H_MF read from the habit's raw distribution, not its filtered one",
+        "agents/meta/entropy_cost.py",
+        "h_mf_bits = entropy_bits(p_habit)",
+        "h_mf_bits = entropy_bits(habit.probs)",
+        gate("entropy_cost"),
+    ),
+    Bug(
+        "fresh53 vpi: the normal cdf of the expected gain taken as erf(z), not erf(z / sqrt 2)",
+        "agents/meta/vpi.py",
+        "cdf = 0.5 * (1.0 + math.erf(z / _SQRT2))",
+        "cdf = 0.5 * (1.0 + math.erf(z))",
+        gate("vpi"),
+    ),
+    Bug(
+        "fresh53 outputs: an output folder probed in its missing parent, not its nearest existing ancestor (refused)",
+        "training/outputs.py",
+        "base = _nearest_existing(path)\n",
+        "base = path.parent\n",
+        gate("outputs"),
+    ),
+)
+"""Round 53, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the next sixteen gated modules planted in longest ago (last planted in rounds 44-45), each bug run
+against its module's gate tests from modules.toml: the budget, the recipes, the memory policy, the
+model format and limits, the relabelling, the vector envs, the world, the sweep, the store, the
+runner, the forked workers, the planner's bound, entropy and cost, VPI and the outputs."""
+ROUND53_TESTS = "tests/training/test_pinned_round53.py"
+"""The values round 53's missed bugs changed, pinned after the round: every round-53 bug runs them too."""
+FRESH53 = pinned_after(FRESH53, ROUND53_TESTS)
+
+
+FRESH54: tuple[Bug, ...] = (
+    Bug(
+        "fresh54 server limits: the max_connections-th connection closed as soon as it is accepted",
+        "training/play/server_limits.py",
+        "if len(self.connections) > limits.max_connections:",
+        "if len(self.connections) >= limits.max_connections:",
+        gate("server_limits"),
+    ),
+    Bug(
+        "fresh54 held-out curve: after a late update the next checkpoint is off the checkpoint_freq grid",
+        "training/baselines/heldout_curve.py",
+        "self.next = (steps // self.every + 1) * self.every",
+        "self.next = steps + self.every",
+        gate("heldout_curve"),
+    ),
+    Bug(
+        "fresh54 registry: a tuple default listed as a tuple, not a list (a listing's parameters not JSON's)",
+        "hg_marl/core/registry.py",
+        'out[name] = Param(list(default) if isinstance(default, tuple) else default, self.param_docs.get(name, ""))',
+        'out[name] = Param(default, self.param_docs.get(name, ""))',
+        gate("registry"),
+    ),
+    Bug(
+        "fresh54 scenario file: a coloured object refused when only colourless bins (which accept any colour) exist",
+        "hg_marl/core/scenario_file.py",
+        'if not any(b.colour in ("", colour) for b in bins):',
+        "if not any(b.colour == colour for b in bins):",
+        gate("scenario_file"),
+    ),
+    Bug(
+        "fresh54 generated scenario: two bins left colourless (objects not shared between them)",
+        "hg_marl/core/scenario_generated.py",
+        'colours = [f"c{b}" for b in range(bins)] if bins > 1 else [""]',
+        'colours = [f"c{b}" for b in range(bins)] if bins > 2 else [""]',
+        gate("scenario_generated"),
+    ),
+    Bug(
+        "fresh54 scenario model: HG_MARL_MAX_OBJECTS=0 accepted (every scenario then refused under that limit)",
+        "hg_marl/core/scenario_model.py",
+        "if value < 1:",
+        "if value < 0:",
+        gate("scenario_model"),
+    ),
+    Bug(
+        "fresh54 planner steps: a take puts the offered object in the giver's hand, not the taker's",
+        "agents/planner/steps.py",
+        "return (TAKE, o, table.hand[agent], d)",
+        "return (TAKE, o, table.hand[1 - agent], d)",
+        gate("planner_steps"),
+    ),
+    Bug(
+        "fresh54 cycle: the human's half played in the state before the robot's action",
+        "hg_marl/core/cycle.py",
+        "human = half(world, robot.state, Agent.HUMAN, human_action, redraw)",
+        "human = half(world, state, Agent.HUMAN, human_action, redraw)",
+        gate("cycle"),
+    ),
+    Bug(
+        "fresh54 history: a robot rebuilding its history reads the human's action as failed when its own failed",
+        "hg_marl/envs/history.py",
+        'int(human), "human" not in failed',
+        'int(human), "robot" not in failed',
+        gate("history"),
+    ),
+    Bug(
+        "fresh54 exact sums: the offered object's place term left in the sum (its value counted twice)",
+        "agents/planner/exactsum.py",
+        "total += values[status] - values[where[obj]]",
+        "total += values[status]",
+        gate("planner_exactsum"),
+    ),
+    Bug(
+        "fresh54 content: the code key of named registry entries covers every other entry's module instead",
+        "agents/content.py",
+        "if wanted is None or name in wanted",
+        "if wanted is None or name not in wanted",
+        gate("content"),
+    ),
+    Bug(
+        "fresh54 memory robot: infeasible actions scored 0, not -inf (a policy with negative logits picks one)",
+        "agents/robots/memory.py",
+        "scores = np.where(mask, logits[0], -np.inf)",
+        "scores = np.where(mask, logits[0], 0.0)",
+        gate("memory_robot"),
+    ),
+    Bug(
+        "fresh54 fixed criteria: the habit criterion registered as 'planner' (criterion habit unknown)",
+        "agents/meta/fixed.py",
+        'name = "habit"',
+        'name = "planner"',
+        gate("meta_fixed"),
+    ),
+    Bug(
+        "fresh54 baselines train: a resumed run's steps per second counts the checkpoint's steps too",
+        "training/baselines/train.py",
+        'return self.session_steps / self.seconds if self.seconds > 0 else float("nan")',
+        'return self.num_timesteps / self.seconds if self.seconds > 0 else float("nan")',
+        gate("baselines_train"),
+    ),
+    Bug(
+        "fresh54 errors: a user's file of exactly the limit's bytes refused as too large",
+        "hg_marl/core/errors.py",
+        "return None if len(data) > limit else data",
+        "return None if len(data) >= limit else data",
+        gate("core_errors"),
+    ),
+    Bug(
+        "fresh54 planner costs: cache_size=0 (documented: no cache) refused",
+        "agents/planner/costs.py",
+        "if self.cache_size < 0:",
+        "if self.cache_size <= 0:",
+        gate("planner_costs"),
+    ),
+)
+"""Round 54, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the next sixteen gated modules planted in longest ago (last planted in rounds 45-46), each bug run
+against its module's gate tests from modules.toml: the server limits, the held-out curve, the registry,
+the scenario file, generator and model, the planner's steps, the cycle, the history, the exact sums,
+the content keys, the memory robot, the fixed criteria, the SB3 training, the errors and the planner's
+costs."""
+ROUND54_TESTS = "tests/training/test_pinned_round54.py"
+"""The values round 54's missed bugs changed, pinned after the round: every round-54 bug runs them too."""
+FRESH54 = pinned_after(FRESH54, ROUND54_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -6900,6 +7276,9 @@ ALL = (
     + FRESH49
     + FRESH50
     + FRESH51
+    + FRESH52
+    + FRESH53
+    + FRESH54
 )
 
 

@@ -32,6 +32,15 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   sees and rules out the moves the partner refuses, until a member explains the partner
   again, so such a partner gets about what the plain planner gets rather than a closed
   world's wrong best response (``docs/hard-layouts.md``).
+- **Observed answers** (``open_world="observed"``). The "none of them" hypothesis is
+  the partner's own answers at each (state, robot move) it was seen at, the most probable
+  member's answer elsewhere (:mod:`~hg_marl.agents.observed_partner`). When it is the
+  most probable hypothesis the robot plays that model's exact best response, solved from
+  the table in front of it and again only after the partner surprised it at the current
+  state; a solve is charged to the clock as a planner call expanding one node per state.
+  A partner whose answers at a state contradict its earlier ones there (a clock, its own
+  history), or a table whose members' models are too large (``roboergosum``), is planned
+  for as the plain planner plans.
 - **Probing** (``probe=S``, default off). While no member holds 90% of the belief, the
   robot may take, instead of its best action, the action whose reply tells the members
   apart most (mutual information between member and reply, :meth:`information`) if it
@@ -74,7 +83,8 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.humans.preference import never_takes
-from hg_marl.agents.member_models import MemberModels
+from hg_marl.agents.member_models import MemberModels, backup
+from hg_marl.agents.observed_partner import ObservedPartner, ObservedSolver
 from hg_marl.agents.oracle import OracleResult, OracleRobot
 from hg_marl.agents.partner import PartnerPosterior
 from hg_marl.agents.partner_model import LearnedPartner
@@ -88,6 +98,7 @@ from hg_marl.core.errors import RobotError, check_bool, check_finite
 from hg_marl.policy import Decision, Turn
 
 HEDGES = ("qmdp", "map")
+OPEN_WORLDS = ("uniform", "learned", "observed")
 NEGLIGIBLE = 1e-3
 """Members with less posterior mass than this have no say in the mixture (nor its cost)."""
 UNKNOWN = "random"
@@ -129,10 +140,14 @@ class BeliefRobot(Robot):
         hedge: ``"map"`` (most probable member) or ``"qmdp"`` (expected seconds under the mixture).
         unknown: prior probability that the partner is none of the members (0: a closed world).
         probe: expected seconds the robot may give up to learn who its partner is (0: never probes).
-        open_world: the "none of them" hypothesis: ``"uniform"`` (the uniform partner) or
+        open_world: the "none of them" hypothesis: ``"uniform"`` (the uniform partner),
             ``"learned"`` (a partner model learned online from this partner's answers,
             :class:`~hg_marl.agents.partner_model.LearnedPartner`; its prequential evidence
-            competes with the members').
+            competes with the members') or ``"observed"`` (the partner's own answers where it
+            answered, the most probable member's elsewhere,
+            :class:`~hg_marl.agents.observed_partner.ObservedPartner`; when it is the most
+            probable hypothesis the robot plays its exact best response, solved from the
+            table in front of it where the members' models are small enough).
         cache: a folder that keeps the members' solved models by content (empty:
             ``$HG_MARL_CACHE/oracle`` when set, else none), so a later robot reads them.
         refusals: plan against the members as partners who never take once the partner
@@ -178,11 +193,13 @@ class BeliefRobot(Robot):
             raise RobotError(f"belief.population: a member plays {UNKNOWN!r}, the robot's 'none of them' hypothesis")
         # The open world: "none of the members" is the uniform partner (the registry's
         # `random` human), so it wins only where the members explain the moves worse than chance.
-        if open_world not in ("uniform", "learned"):
-            raise RobotError(f"belief.open_world: expected uniform or learned, got {open_world!r}")
+        if open_world not in OPEN_WORLDS:
+            raise RobotError(f"belief.open_world: expected one of {', '.join(OPEN_WORLDS)}, got {open_world!r}")
         self.open_world = open_world
         self.bayes_factor = check_finite(bayes_factor, "belief.bayes_factor", minimum=1.0, error=RobotError)
-        learned = LearnedPartner() if open_world == "learned" and unknown > 0 else None
+        learned: LearnedPartner | ObservedPartner | None = None
+        if unknown > 0 and open_world != "uniform":
+            learned = LearnedPartner() if open_world == "learned" else ObservedPartner()
         self._unknown_name = learned.name if learned is not None else UNKNOWN
         types = (*self.member_specs, self._unknown_name) if unknown > 0 else self.member_specs
         prior = [(1.0 - unknown) / len(members)] * len(members) + ([unknown] if unknown > 0 else [])
@@ -203,6 +220,7 @@ class BeliefRobot(Robot):
         """A planner per learned model, asked whether that model leaves the table clearable."""
         self._prev: tuple[State, int] | None = None
         self.progress = ProgressGuard()
+        self._observed = ObservedSolver()
 
     def _reset(self, world: World) -> None:
         """Forget the previous run's evidence (members' models are solved when first consulted)."""
@@ -225,6 +243,7 @@ class BeliefRobot(Robot):
         self._checkers = {}
         self._off_population = False
         self.progress.reset()
+        self._observed.reset()
 
     def _observe(self, turn: Turn) -> None:
         """Update the posterior from the human's move since the previous turn."""
@@ -236,6 +255,11 @@ class BeliefRobot(Robot):
         if turn.world.step(step.state, Agent.HUMAN, human_action).state == turn.state:
             seen = robot_action if step.ok else -1  # what the partner saw the robot do
             self._count_refusal(turn.world, step.state, seen, human_action)
+            if isinstance(self.posterior.learned, ObservedPartner):
+                # where the partner was never seen, it answers as the most probable member would
+                post = self.posterior.posterior()
+                best = max(range(len(self.member_specs)), key=lambda m: post[self.member_specs[m]])
+                self.posterior.learned.base = self.posterior.humans[best]
             self.posterior.observe(turn.world, step.state, seen, human_action)
 
     def _count_refusal(self, world: World, mid: State, robot_action: int, human_action: int) -> None:
@@ -286,19 +310,7 @@ class BeliefRobot(Robot):
     def q_values(self, world: World, state: State, member: int) -> dict[int, float]:
         """Member ``member``'s expected seconds to the next success after each feasible robot action."""
         members = self._never_takes if self.refuses_offers() else self.members
-        result, model = members.result(member), members.model(member)
-        table = world.table
-        out: dict[int, float] = {}
-        for a in world.feasible_indices(state, Agent.ROBOT):
-            mid, ok, duration = table.successor(state, Agent.ROBOT, a)
-            if ok and table.solves(state, Agent.ROBOT, a):
-                out[a] = 0.0  # the completing wait: the oracle's terminal pair
-                continue
-            q = 0.0
-            for nxt, p, tau in model.replies(mid, duration, a if ok else -1):
-                q += p * (tau + result.value_at(world, nxt, self._relabel))
-            out[a] = q
-        return out
+        return backup(world, state, members.result(member), members.model(member), self._relabel)
 
     def _clears(self, world: World, model: Any, state: State) -> bool:
         """Whether a planner with the human ``model`` finds a plan that clears the table from ``state``."""
@@ -370,7 +382,11 @@ class BeliefRobot(Robot):
             if not self._off_population:
                 self._planner.last_decision = None  # its expectation from an earlier spell is stale
             self._off_population = True
-            if self.posterior.learned is not None:
+            if isinstance(self.posterior.learned, ObservedPartner):
+                observed = self._observed_action(world, state, weights, start)
+                if observed >= 0:
+                    return observed
+            if isinstance(self.posterior.learned, LearnedPartner):
                 # Plan as the partner behaves: without the kinds of action it refuses, unless
                 # without them the table cannot be cleared from here and with the fixed model it
                 # can (the partner has not yet shown every kind it will do): then as the
@@ -424,6 +440,33 @@ class BeliefRobot(Robot):
             )
         self._prev = (state, int(action))
         return int(action)
+
+    def _observed_action(self, world: World, state: State, weights: list[float], start: float) -> int:
+        """The exact best response to the observed partner at ``state`` (-1: not solved here).
+
+        Its model is solved again only when the observed answers surprised it or the most
+        probable member (its answer where the partner was never seen) changed; a solve is
+        charged to the clock as a planner call expanding one node per state.
+        """
+        partner = self.posterior.learned
+        assert isinstance(partner, ObservedPartner)
+        best = int(np.argmax(weights))
+        q, solved = self._observed.q_values(world, state, partner, self.members.result(best).n_states, self._relabel)
+        finite = {a: v for a, v in q.items() if not math.isinf(v)}
+        if not finite:
+            return -1  # too large to solve, or off its model: the planner drives
+        action = min(finite, key=lambda a: (finite[a], a))
+        self.last_decision = Decision(
+            "belief",
+            action,
+            planning_time=time.perf_counter() - start,
+            decision_time=self.cost.planner_cost(solved) if solved else 0.0,
+            partner=self._unknown_name,
+            reason="no member explains the partner: the exact best response to its observed answers",
+            stats=(("expected_seconds", finite[action]), ("solves", float(self._observed.solves))),
+        )
+        self._prev = (state, action)
+        return action
 
     def members_built(self) -> list[int]:
         """The members whose models have been solved (or read from a cache) so far."""

@@ -164,3 +164,34 @@ def test_the_memo_keeps_at_most_its_bound(builds: list[int], monkeypatch: pytest
     again.reset(world)
     again.result(0)
     assert len(builds) == 4
+
+
+@pytest.mark.parametrize("spec", [MAT, IDLE])
+def test_the_backup_satisfies_the_oracles_bellman_equation(spec: str) -> None:
+    """At every state of a solved model, the best one-step backup is the state's value.
+
+    The oracle's values are the expected seconds to the next success under the optimal
+    policy, so ``V(s) = min_a sum p (tau + V(next))`` (Bellman's optimality equation, to the
+    solver's tolerance), and the completing wait on a clean table costs nothing: a property
+    of the values, not a re-computation of :func:`backup`. Solved without failed actions,
+    so every action the policy takes is one :func:`backup` offers.
+    """
+    from hg_marl.agents.member_models import backup
+    from hg_marl.agents.models.python_model import PythonModel
+    from hg_marl.agents.planner.space import Relabel
+
+    world = World("paper2015")
+    result = oracle_rate(world, spec, failed_actions=False, cache=False, symmetry=False)
+    model = PythonModel(world, make_human(spec), False, 1)
+    relabel = Relabel(world)
+    checked = 0
+    for state in list(result.values)[:300]:
+        value = result.value_at(world, state)
+        if not np.isfinite(value):
+            continue
+        q = backup(world, state, result, model, relabel)
+        assert min(q.values()) == pytest.approx(value, abs=1e-6)
+        if world.is_clean(state):
+            assert q[world.n_actions(0) - 1] == 0.0 and value == pytest.approx(0.0, abs=1e-9)
+        checked += 1
+    assert checked >= 100

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 from collections import Counter
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -287,3 +288,20 @@ def test_an_oracle_robot_reset_on_other_durations_solves_that_table() -> None:
     given = robot.result
     robot.reset(doubled, Agent.ROBOT, np.random.default_rng(0))  # the same table: kept
     assert robot.result is given
+
+
+@pytest.mark.parametrize("scenario", ["paper2015", "asymmetric_advantages"])
+def test_a_solve_from_one_table_gives_its_states_the_whole_models_values(scenario: str, tmp_path: Path) -> None:
+    """``roots``: the states reachable from one table until a task is solved, each valued as in
+    the model of every layout (the expected seconds to the next success do not depend on the
+    tables drawn after it); fewer states, never cached, never reduced."""
+    human = "preference:handover=-1.0,shared=1.0"
+    whole = oracle_rate(scenario, human, cache=False, symmetry=False)
+    table = World(scenario).initial_state(np.random.default_rng(3))
+    part = oracle_rate(scenario, human, cache=str(tmp_path), roots=(table,))
+    assert not part.reduced and part.n_layouts == 1 and 0 < part.n_states < whole.n_states
+    assert not list(tmp_path.iterdir())  # nothing cached
+    world = World(scenario)
+    for state in part.values:
+        assert part.value_at(world, state) == pytest.approx(whole.value_at(world, state), rel=1e-6)
+    assert part.action_at(world, table) is not None and part.value_at(world, table) < np.inf
