@@ -201,8 +201,7 @@ class ObservedSolver:
     - **From the table in front of the robot.** A solve holds the states reachable from the
       current state until the task is solved (``oracle_rate(..., roots=(state,))``): the
       value of a state, the expected seconds to the next success, does not depend on the
-      tables drawn after it, and one table's states are a fraction of every layout's (on
-      ``asymmetric_advantages`` about a fifth).
+      tables drawn after it, and one table's states are fewer than every layout's.
     - **Kept by table.** Each solution is kept under the table it was solved from and the
       :attr:`~ObservedPartner.version` it was solved at, so a table dealt again under the
       same model (no surprise since) is not solved again.
