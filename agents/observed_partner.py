@@ -242,7 +242,10 @@ class ObservedSolver:
             return {}, 0
         if self.result is None or state not in self.result.values:
             kept = self.tables.get(state)  # solved from this table before, under the same model?
-            self.key, self.result = kept if kept is not None and kept[0] == partner.version else (-1, None)
+            if kept is not None and kept[0] == partner.version:
+                self.key, self.result = kept
+            else:
+                self.result = None
         solved = 0
         if (
             self.result is None
@@ -255,7 +258,6 @@ class ObservedSolver:
                     world,
                     partner.snapshot(),
                     failed_actions=False,
-                    cache=False,
                     max_states=self.max_states,
                     max_seconds=None,
                     roots=(state,),

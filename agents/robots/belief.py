@@ -382,8 +382,9 @@ class BeliefRobot(Robot):
             if not self._off_population:
                 self._planner.last_decision = None  # its expectation from an earlier spell is stale
             self._off_population = True
+            unpaid = 0.0  # a solve that gave no move is charged with the planner's decision
             if isinstance(self.posterior.learned, ObservedPartner):
-                observed = self._observed_action(world, state, weights, start)
+                observed, unpaid = self._observed_action(world, state, weights, start)
                 if observed >= 0:
                     return observed
             if isinstance(self.posterior.learned, LearnedPartner):
@@ -401,7 +402,9 @@ class BeliefRobot(Robot):
             record = self._planner.last_decision
             assert record is not None
             reason = "no member explains the partner, the planner drives: " + record.reason
-            self.last_decision = replace(record, reason=reason, partner=self._unknown_name)
+            self.last_decision = replace(
+                record, reason=reason, partner=self._unknown_name, decision_time=record.decision_time + unpaid
+            )
             self._prev = (state, int(action))
             return int(action)
         self._off_population = False
@@ -441,8 +444,9 @@ class BeliefRobot(Robot):
         self._prev = (state, int(action))
         return int(action)
 
-    def _observed_action(self, world: World, state: State, weights: list[float], start: float) -> int:
-        """The exact best response to the observed partner at ``state`` (-1: not solved here).
+    def _observed_action(self, world: World, state: State, weights: list[float], start: float) -> tuple[int, float]:
+        """The exact best response to the observed partner at ``state`` (-1: none here), and the
+        seconds its solve is charged (with the planner's decision when it gave no move).
 
         Its model is solved again only when the observed answers surprised it or the most
         probable member (its answer where the partner was never seen) changed; a solve is
@@ -453,20 +457,21 @@ class BeliefRobot(Robot):
         best = int(np.argmax(weights))
         q, solved = self._observed.q_values(world, state, partner, self.members.result(best).n_states, self._relabel)
         finite = {a: v for a, v in q.items() if not math.isinf(v)}
+        charge = self.cost.planner_cost(solved) if solved else 0.0
         if not finite:
-            return -1  # too large to solve, or off its model: the planner drives
+            return -1, charge  # too large to solve, or no move leads to a success: the planner drives
         action = min(finite, key=lambda a: (finite[a], a))
         self.last_decision = Decision(
             "belief",
             action,
             planning_time=time.perf_counter() - start,
-            decision_time=self.cost.planner_cost(solved) if solved else 0.0,
+            decision_time=charge,
             partner=self._unknown_name,
             reason="no member explains the partner: the exact best response to its observed answers",
             stats=(("expected_seconds", finite[action]), ("solves", float(self._observed.solves))),
         )
         self._prev = (state, action)
-        return action
+        return action, 0.0
 
     def members_built(self) -> list[int]:
         """The members whose models have been solved (or read from a cache) so far."""

@@ -109,6 +109,12 @@ def test_a_surprise_is_an_answer_given_less_than_half_the_mass() -> None:
     assert model.contradictions == pytest.approx(0.98 * 1.0)
     model.update(world, mid, wait, b)
     assert model.contradictions == pytest.approx(0.98 * 0.98 + 1.0)
+    # Exactly half the earlier answers is not a contradiction: never forgetting, a then b
+    # (contradicted) then a again, which has 1 of 2.
+    even = ObservedPartner(forget=1.0)
+    for answer in (a, b, a):
+        even.update(world, mid, wait, answer)
+    assert even.contradictions == pytest.approx(0.98)
     # The threshold: under 10% of the repeats, counted as at least 5.
     model.repeats, model.contradictions = 1.0, 0.49
     assert model.stationary()
@@ -203,3 +209,90 @@ def test_the_exact_best_response_to_a_partner_no_member_explains() -> None:
     assert closed.summary["tasks_solved"] <= best - 3
     reasons = observed.log["reason"].astype(str)
     assert reasons.str.startswith("no member explains the partner: the exact best response").any()
+
+
+def test_each_solve_is_charged_as_a_planner_call_of_one_node_per_state(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The clock pays for every solve (``planner_base + planner_per_node * states``, the cost
+    model's own constants), and the decisions that read a kept solution pay nothing."""
+    import hg_marl.agents.observed_partner as module
+
+    sizes: list[int] = []
+    real = module.oracle_rate
+
+    def counted(*args: object, **kwargs: object) -> object:
+        result = real(*args, **kwargs)
+        sizes.append(result.n_states)
+        return result
+
+    monkeypatch.setattr(module, "oracle_rate", counted)
+    robot = make_robot("belief", population=HARD, open_world="observed")
+    log = run(robot, LastFirst(), RunConfig(scenario="forced_coordination", duration=300.0, seed=0)).log
+    exact = log[log["reason"].astype(str).str.startswith("no member explains the partner: the exact")]
+    assert sizes and len(exact) > len(sizes)
+    cost = robot.cost
+    assert exact["decision_time"].sum() == pytest.approx(
+        sum(cost.planner_base + cost.planner_per_node * n for n in sizes)
+    )
+    assert (exact["decision_time"] == 0.0).sum() == len(exact) - len(sizes)
+
+
+def test_a_failed_robot_move_is_counted_as_the_partner_saw_it_failed() -> None:
+    """What the partner answered after a failed robot move is kept under the move -1 (what the
+    partner sees: nothing done), not under the move the robot tried."""
+    from hg_marl.policy import Turn
+
+    world = World("forced_coordination")
+    robot = make_robot("belief", population=HARD, open_world="observed")
+    robot.reset(world, Agent.ROBOT, np.random.default_rng(0))
+    state = world.initial_state(np.random.default_rng(0))
+    tried = next(a for a in range(world.n_actions(Agent.ROBOT)) if a not in world.feasible_indices(state, Agent.ROBOT))
+    step = world.step(state, Agent.ROBOT, tried)
+    assert not step.ok
+    answer = world.feasible_indices(step.state, Agent.HUMAN)[0]
+    after = world.step(step.state, Agent.HUMAN, answer).state
+    robot._prev = (state, tried)
+    robot._observe(Turn(world, after, Agent.ROBOT, {}, last_actions=(tried, answer)))
+    partner = robot.posterior.learned
+    assert isinstance(partner, ObservedPartner)
+    assert set(partner.counts) == {(step.state, -1)} and partner.counts[(step.state, -1)] == {answer: 1.0}
+
+
+def test_the_kept_solutions_are_dropped_once_they_reach_256() -> None:
+    """``MAX_TABLES`` = 256: a solve with 255 kept adds the 256th; with 256 kept, they are
+    dropped first and the new one is the only one left."""
+    world = World("forced_coordination")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    relabel = Relabel(world)
+    state = world.initial_state(np.random.default_rng(0))
+    for kept, after in ((255, 256), (256, 1)):
+        solver = ObservedSolver()
+        dummy = State(where=(-1,) * 3, robot_at=0, offer_by=-1, offer_obj=-1)
+        solver.tables = {dummy._replace(robot_at=k): (0, None) for k in range(kept)}
+        solver.q_values(world, state, partner, 0, relabel)
+        assert len(solver.tables) == after and state in solver.tables
+
+
+def test_a_table_dealt_again_under_the_same_model_is_not_solved_again() -> None:
+    """Two tables of ``paper2015`` (seeds 0 and 1), each solved from itself; the first dealt
+    again reads its kept solution (no solve); after a surprise the model changed, and the
+    second dealt again is solved again."""
+    world = World("paper2015")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    relabel = Relabel(world)
+    first, second = (world.initial_state(np.random.default_rng(seed)) for seed in (0, 1))
+    solver = ObservedSolver()
+    solver.q_values(world, first, partner, 0, relabel)
+    assert solver.result is not None and second not in solver.result.values
+    solver.q_values(world, second, partner, 0, relabel)
+    assert solver.solves == 2
+    q_first, solved = solver.q_values(world, first, partner, 0, relabel)
+    assert (solver.solves, solved) == (2, 0) and q_first
+    wait = world.n_actions(Agent.ROBOT) - 1
+    mid = world.step(first, Agent.ROBOT, wait).state
+    expected = LastFirst().distribution(world, mid, wait)[0][0]
+    partner.update(world, mid, wait, next(h for h in world.feasible_indices(mid, Agent.HUMAN) if h != expected))
+    assert partner.version == 1
+    _, solved = solver.q_values(world, second, partner, 0, relabel)
+    assert solver.solves == 3 and solved > 0

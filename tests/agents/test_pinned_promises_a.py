@@ -378,6 +378,20 @@ def test_a_robot_probes_only_while_no_member_holds_ninety_percent(
     assert action == 1 and reason == "probe: 1.00 nats about the partner for 4.0 s"
 
 
+def test_a_probe_may_be_an_action_of_a_lower_index_than_the_best(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The same as above with the indices swapped: action 1 10 s, action 0 14 s and telling 1
+    nat: the probe is action 0, below the best action's index (every action but the best is a
+    candidate, whatever its index)."""
+    robot = _belief(tmp_path, unknown=0.0, probe=20.0)
+    monkeypatch.setattr(robot, "information", lambda w, s, a, weights: 1.0 if a == 0 else 0.0)
+    q = [{0: 14.0, 1: 10.0}, {0: 14.0, 1: 10.0}]
+    top = float(np.nextafter(0.9, 0.0))
+    action, _, reason = _decide(robot, monkeypatch, {"cooperative": top, "lazy": 1 - top}, q)
+    assert action == 0 and reason == "probe: 1.00 nats about the partner for 4.0 s"
+
+
 def test_off_every_members_model_the_fallback_says_so(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Every member's values infinite (hopeless) or absent: no member has a say, the oracle
     robot's fallback moves and the reason starts "off every member's model: "."""
