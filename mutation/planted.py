@@ -7223,6 +7223,261 @@ ROUND54_TESTS = "tests/training/test_pinned_round54.py"
 FRESH54 = pinned_after(FRESH54, ROUND54_TESTS)
 
 
+FRESH55: tuple[Bug, ...] = (
+    Bug(
+        "fresh55 observed partner: solved again after a surprise the last solve already held (more solves)",
+        "agents/observed_partner.py",
+        "if partner.surprised.get((mid, a), 0) > self.key:",
+        "if partner.surprised.get((mid, a), 0) >= self.key:",
+        gate("observed_partner"),
+    ),
+    Bug(
+        "fresh55 belief: the observed partner answers as the least probable member where it was never seen",
+        "agents/robots/belief.py",
+        "best = max(range(len(self.member_specs)), key=lambda m: post[self.member_specs[m]])",
+        "best = min(range(len(self.member_specs)), key=lambda m: post[self.member_specs[m]])",
+        gate("belief"),
+    ),
+    Bug(
+        "fresh55 member models: the partner's reply seconds left out of each move's expected seconds",
+        "agents/member_models.py",
+        "q += p * (tau + result.value_at(world, nxt, relabel))",
+        "q += p * result.value_at(world, nxt, relabel)",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh55 oracle: a solve from given roots kept in the content cache (a later whole solve reads its rate)",
+        "agents/oracle.py",
+        "folder = cache_folder(cache) if isinstance(human, str | AgentSpec) and not roots else None",
+        "folder = cache_folder(cache) if isinstance(human, str | AgentSpec) else None",
+        gate("oracle"),
+    ),
+    Bug(
+        "fresh55 planner tables: a throw into the first bin never a candidate (the planner never throws there)",
+        "agents/planner/tables.py",
+        "if table.throw_to[agent][at][o] >= 0:",
+        "if table.throw_to[agent][at][o] > 0:",
+        gate("planner_tables"),
+    ),
+    Bug(
+        "fresh55 ppo recurrent: --history 0 (the facts only, documented) refused",
+        "training/baselines/ppo_recurrent.py",
+        'check_int(self.history, "--history", minimum=0, maximum=MAX_HISTORY)',
+        'check_int(self.history, "--history", minimum=1, maximum=MAX_HISTORY)',
+        gate("ppo_recurrent"),
+    ),
+    Bug(
+        "fresh55 model sb3: a header's Discrete(0) space crashes with an AssertionError, not a one-line refusal",
+        "agents/model_sb3.py",
+        "if not _is_int(n) or not 0 < n <= MAX_SPACE_SIZE:",
+        "if not _is_int(n) or not 0 <= n <= MAX_SPACE_SIZE:",
+        gate("model_sb3"),
+    ),
+    Bug(
+        "fresh55 array partner: a compiled human not taken for tabled (its table unused, every answer asked live)",
+        "hg_marl/envs/array_partner.py",
+        "    def fall_back(\n",
+        "    def fallback(\n",
+        gate("array_partner"),
+    ),
+    Bug(
+        "fresh55 meta cost: the default cost model charges wall time (results not reproducible)",
+        "agents/meta/cost.py",
+        'mode: CostMode = "model"',
+        'mode: CostMode = "wall"',
+        gate("meta_cost"),
+    ),
+    Bug(
+        "fresh55 entropy: the expert with the higher filtered entropy executed",
+        "agents/meta/entropy.py",
+        "return Expert.HABIT if h_habit < h_planner else Expert.PLANNER",
+        "return Expert.HABIT if h_habit > h_planner else Expert.PLANNER",
+        gate("entropy"),
+    ),
+    Bug(
+        "fresh55 learning state: the default threshold a tenth of 0.5 (the habit hardly ever takes over)",
+        "agents/meta/learning_state.py",
+        "threshold: float = 0.5,",
+        "threshold: float = 0.05,",
+        gate("learning_state"),
+    ),
+    Bug(
+        "fresh55 model cache: an entry saved without its key (never read back, every solve redone)",
+        "agents/models/cache.py",
+        "np.savez(buf, key=np.array(key), **arrays)",
+        "np.savez(buf, **arrays)",
+        gate("model_cache"),
+    ),
+    Bug(
+        "fresh55 limits: at most 1,000 seeds per condition, not the documented 10,000",
+        "training/limits.py",
+        "MAX_SEEDS = 10_000\n",
+        "MAX_SEEDS = 1_000\n",
+        gate("limits"),
+    ),
+    Bug(
+        "fresh55 memory numpy: the GRU's state not fed to the actor (actions from the encoder alone)",
+        "agents/memory_numpy.py",
+        "            x = h\n",
+        "",
+        gate("memory_numpy"),
+    ),
+    Bug(
+        "fresh55 atomic: result files written 0640 (not readable by others)",
+        "hg_marl/core/atomic.py",
+        "FILE_MODE = 0o644\n",
+        "FILE_MODE = 0o640\n",
+        gate("atomic"),
+    ),
+    Bug(
+        "fresh55 progress: the array guard's rotation move one past the scalar guard's (the two forms disagree)",
+        "agents/progress.py",
+        "(options.cumsum(axis=1) == (k + 1)[:, None])",
+        "(options.cumsum(axis=1) == k[:, None])",
+        gate("progress"),
+    ),
+)
+"""Round 55, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the newest gated module (the observed partner, never planted in), the three changed today (the belief
+robot, the member models, the oracle) and twelve last planted in round 46, each bug run against its
+module's gate tests from modules.toml: the planner's tables, the recurrent PPO, the SB3 model files, the
+array partner's protocols, the decision cost, entropy and learning-state criteria, the oracle's content
+cache, the limits, the numpy memory policy, the atomic writes and the progress guard."""
+ROUND55_TESTS = "tests/training/test_pinned_round55.py"
+"""The values round 55's missed bugs changed, pinned after the round: every round-55 bug runs them too."""
+FRESH55 = pinned_after(FRESH55, ROUND55_TESTS)
+
+FRESH56: tuple[Bug, ...] = (
+    Bug(
+        "fresh56 scenario loader: the bare name 'generated' refused as an unknown scenario (only 'generated:...' read)",
+        "hg_marl/core/scenario.py",
+        'if text == "generated" or text.startswith("generated:"):',
+        'if text.startswith("generated:"):',
+        gate("scenario_loader"),
+    ),
+    Bug(
+        "fresh56 durations: a Durations built in code accepts a duration below MIN_DURATION (0.001 s, endless runs)",
+        "hg_marl/core/durations.py",
+        'f"durations.{f.name}", minimum=MIN_DURATION, maximum=MAX_DURATION)',
+        'f"durations.{f.name}", positive=True, maximum=MAX_DURATION)',
+        gate("durations"),
+    ),
+    Bug(
+        "fresh56 planner robot: the expected human action recorded is the robot's own planned action",
+        "agents/robots/planner.py",
+        "expected_human_action=prop.human_action,",
+        "expected_human_action=prop.action,",
+        gate("planner_robot"),
+    ),
+    Bug(
+        "fresh56 rule table: a failed take leaves the partner's offer standing (the offer does not lapse)",
+        "hg_marl/core/table.py",
+        "return State(where, at) if state.offer_by == 1 - agent else state, False, self.durations.failed",
+        "return state, False, self.durations.failed",
+        gate("rule_table"),
+    ),
+    Bug(
+        "fresh56 spec parser: a spec's value wins over the keyword override given in Python",
+        "hg_marl/core/spec.py",
+        "given.update({k: (v, False) for k, v in (overrides or {}).items()})",
+        "given.update({k: (v, False) for k, v in (overrides or {}).items() if k not in given})",
+        gate("spec_parser"),
+    ),
+    Bug(
+        "fresh56 aec env: max_cycles=0 accepted (an environment whose episodes can never end by truncation)",
+        "hg_marl/envs/table_cleaning.py",
+        'max_cycles = check_int(max_cycles, "max_cycles", minimum=1)',
+        'max_cycles = check_int(max_cycles, "max_cycles", minimum=0)',
+        gate("aec_env"),
+    ),
+    Bug(
+        "fresh56 hybrid robot: a consulted plan that failed recorded as a planner success",
+        "agents/robots/hybrid.py",
+        "planner_success=bool(prop is not None and prop.success),",
+        "planner_success=prop is not None,",
+        gate("hybrid_robot"),
+    ),
+    Bug(
+        "fresh56 robot base: a truncated episode's last TD step does not bootstrap (treated as terminated)",
+        "agents/robots/base.py",
+        "self._learn_from(turn.reward, self._habit_facts(turn), done=terminated)",
+        "self._learn_from(turn.reward, self._habit_facts(turn), done=True)",
+        gate("robot_base"),
+    ),
+    Bug(
+        "fresh56 regret: the time to recover reported as the clock time, not the seconds after the switch",
+        "training/regret.py",
+        "return float(candidates[hits[0]] - switch_at) if len(hits) else None",
+        "return float(candidates[hits[0]]) if len(hits) else None",
+        gate("regret"),
+    ),
+    Bug(
+        "fresh56 preference: a human with no colour ('') gives colour_bonus to every colourless object",
+        "agents/humans/preference.py",
+        "colour_match=tuple(bool(self.colour) and c == self.colour for c in sc.object_colours),",
+        "colour_match=tuple(c == self.colour for c in sc.object_colours),",
+        gate("preference"),
+    ),
+    Bug(
+        "fresh56 trace: a turn that solves two tasks (both agents throw) refused as impossible",
+        "agents/humans/trace.py",
+        "if not prev_tasks <= tasks <= prev_tasks + 2:",
+        "if not prev_tasks <= tasks <= prev_tasks + 1:",
+        gate("trace"),
+    ),
+    Bug(
+        "fresh56 population: a member name with junk after a valid start ('m07!') accepted",
+        "agents/humans/population.py",
+        '_NAME = re.compile(r"^[A-Za-z0-9_-]{1,32}$")',
+        '_NAME = re.compile(r"^[A-Za-z0-9_-]{1,32}")',
+        gate("population"),
+    ),
+    Bug(
+        "fresh56 human switching: every phase's human reset with the switching human's own generator (no child)",
+        "agents/humans/switching.py",
+        "human.reset(world, agent, child)",
+        "human.reset(world, agent, rng)",
+        gate("human_switching"),
+    ),
+    Bug(
+        "fresh56 noisy: a noisy human moved to another world answers from the first world's memo",
+        "agents/humans/noisy.py",
+        "if self._world is not world:",
+        "if self._world is None:",
+        gate("noisy"),
+    ),
+    Bug(
+        "fresh56 planner plan: a wait is not linked to the partner's step in the wait's own cycle",
+        "agents/planner/plan.py",
+        "and t.cycle >= s.cycle",
+        "and t.cycle > s.cycle",
+        gate("planner_plan"),
+    ),
+    Bug(
+        "fresh56 planner: an intent from the human's turn leaves out the robot action under way from its duration",
+        "agents/planner/planner.py",
+        "self._duration(cycles, part[0]), found.cost)",
+        "self._duration(cycles, 0.0), found.cost)",
+        gate("planner_main"),
+    ),
+)
+"""Round 56, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in round 47, each bug run against its module's gate tests
+from modules.toml: the scenario loader, the durations, the planner robot, the rule table, the spec
+parser, the AEC environment, the hybrid robot, the robot base, the regret, the preference, trace,
+population, switching and noisy humans, the planner's plan and the planner."""
+ROUND56_TESTS = "tests/training/test_pinned_round56.py"
+"""The values round 56's missed bugs changed, pinned after the round: every round-56 bug runs them too."""
+FRESH56 = pinned_after(FRESH56, ROUND56_TESTS)
+
+
+FRESH57: tuple[Bug, ...] = ()
+"""Round 57 (being written)."""
+
+FRESH58: tuple[Bug, ...] = ()
+"""Round 58 (being written)."""
+
+
 ALL = (
     BUGS
     + FRESH
@@ -7279,6 +7534,10 @@ ALL = (
     + FRESH52
     + FRESH53
     + FRESH54
+    + FRESH55
+    + FRESH56
+    + FRESH57
+    + FRESH58
 )
 
 
