@@ -7471,11 +7471,253 @@ ROUND56_TESTS = "tests/training/test_pinned_round56.py"
 FRESH56 = pinned_after(FRESH56, ROUND56_TESTS)
 
 
-FRESH57: tuple[Bug, ...] = ()
-"""Round 57 (being written)."""
+FRESH57: tuple[Bug, ...] = (
+    Bug(
+        "fresh57 cooperative human: the shared plan asked as if the robot moved next (the human's step not its own)",
+        "agents/humans/cooperative.py",
+        "state, to_move=Agent.HUMAN, robot_action=robot_action if robot_action >= 0 else None",
+        "state, to_move=Agent.ROBOT, robot_action=robot_action if robot_action >= 0 else None",
+        gate("human_cooperative"),
+    ),
+    Bug(
+        "fresh57 replay human: on_mismatch='warn' never warns (a diverged replay goes on silently)",
+        "agents/humans/replay.py",
+        'if self.on_mismatch != "ignore":',
+        'if self.on_mismatch == "error":',
+        gate("human_replay"),
+    ),
+    Bug(
+        "fresh57 human base: the tidy rule thinks bin 0 out of reach (objects for the first bin left alone)",
+        "agents/humans/base.py",
+        "bin_ok = world.table.throw_to[Agent.HUMAN][state.robot_at][o] >= 0",
+        "bin_ok = world.table.throw_to[Agent.HUMAN][state.robot_at][o] > 0",
+        gate("human_base"),
+    ),
+    Bug(
+        "fresh57 adversarial human: looks at the robot's hand for what it holds (never hides what it took)",
+        "agents/humans/adversarial.py",
+        "held = world.holding(state, Agent.HUMAN)",
+        "held = world.holding(state, Agent.ROBOT)",
+        gate("human_adversarial"),
+    ),
+    Bug(
+        "fresh57 batched env: time_budget=0 accepted (episodes truncated at once instead of a refusal)",
+        "hg_marl/envs/batched.py",
+        "if time_budget is not None and not (np.isfinite(time_budget) and time_budget > 0):",
+        "if time_budget is not None and not (np.isfinite(time_budget) and time_budget >= 0):",
+        gate("batched"),
+    ),
+    Bug(
+        "fresh57 population gen: selecting as many members as there are candidates refused",
+        "training/population_gen.py",
+        "if k > len(pool):",
+        "if k >= len(pool):",
+        gate("population_gen"),
+    ),
+    Bug(
+        "fresh57 aggregate: one seed per task gets the few-seeds warning, not 'no confidence interval'",
+        "training/aggregate.py",
+        "if seeds <= 1:",
+        "if seeds < 1:",
+        gate("aggregate"),
+    ),
+    Bug(
+        "fresh57 report: every 95% CI in the tables printed as [low, low]",
+        "training/report.py",
+        'f"[{values[0]:.2f}, {values[1]:.2f}]"',
+        'f"[{values[0]:.2f}, {values[0]:.2f}]"',
+        gate("report"),
+    ),
+    Bug(
+        "fresh57 switching: the per-phase reference tasks count member A's rate in B's phases and B's in A's",
+        "training/switching.py",
+        '(rates[0] if name == "a" else rates[1]) * (end - start) / 3600.0',
+        '(rates[0] if name == "b" else rates[1]) * (end - start) / 3600.0',
+        gate("switching"),
+    ),
+    Bug(
+        "fresh57 adaptation: a switch's run count reported as the recovered runs (recovered always n/n)",
+        "training/adaptation.py",
+        '"runs": len(logs),',
+        '"runs": len(reached),',
+        gate("adaptation"),
+    ),
+    Bug(
+        "fresh57 stalls: the longest stretch column shows the shortest run's stretch",
+        "training/stalls.py",
+        'worst = max(rs, key=lambda r: r["gap"])',
+        'worst = min(rs, key=lambda r: r["gap"])',
+        gate("stalls"),
+    ),
+    Bug(
+        "fresh57 family out: fo_forgetful with hold=0 (never forgets) refused",
+        "agents/humans/family_out.py",
+        "if not (np.isfinite(hold) and hold >= 0):",
+        "if not (np.isfinite(hold) and hold > 0):",
+        gate("family_out"),
+    ),
+    Bug(
+        "fresh57 headroom: --humans gives an empty held-out split (no headroom number over the listed humans)",
+        "training/headroom.py",
+        "return [(h, h) for h in humans], list(humans)",
+        "return [(h, h) for h in humans], []",
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh57 compiled robot: a freshly compiled robot ignores stall_after (the default K, unless read from cache)",
+        "agents/compiled_robot.py",
+        "return CompiledRobot(world, arrays, robot, stall_after=stall_after)",
+        "return CompiledRobot(world, arrays, robot, stall_after=STALL_AFTER)",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh57 partner model: a learned partner with alpha=0 accepted (0/0 predictions in unseen contexts)",
+        "agents/partner_model.py",
+        "if not (math.isfinite(alpha) and alpha > 0):",
+        "if not (math.isfinite(alpha) and alpha >= 0):",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh57 no handover: a tidy action of index 0 taken as nothing to do (the human waits instead)",
+        "agents/humans/no_handover.py",
+        "if index < 0:",
+        "if index <= 0:",
+        gate("human_no_handover"),
+    ),
+)
+"""Round 57, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in round 48, each bug run against its module's gate tests
+from modules.toml: the cooperative, replay, adversarial, no-handover and family-out humans, the humans'
+shared base, the batched environment, the population generator, the aggregates, the report, the
+switching and adaptation sweeps, the stalls, the headroom outputs, the compiled robot and the learned
+partner model. The human base's bug (bin place 0 read as out of reach) is equivalent: a bin's place code
+follows the spots, and every scenario has at least one spot, so no test can catch it."""
+ROUND57_TESTS = "tests/training/test_pinned_round57.py"
+"""The values round 57's missed bugs changed, pinned after the round: every round-57 bug runs them too."""
+FRESH57 = pinned_after(FRESH57, ROUND57_TESTS)
 
-FRESH58: tuple[Bug, ...] = ()
-"""Round 58 (being written)."""
+FRESH58: tuple[Bug, ...] = (
+    Bug(
+        "fresh58 random human: feasible_only=False ignored (the uniform-noise human still draws only feasible actions)",
+        "agents/humans/random_human.py",
+        "self.feasible_only = bool(feasible_only)",
+        "self.feasible_only = True",
+        gate("human_random"),
+    ),
+    Bug(
+        "fresh58 random criterion: p outside [0, 1] accepted (random:p=1.5 builds a criterion instead of a refusal)",
+        "agents/meta/coin.py",
+        'self.p = check_probability("random.p", p)',
+        "self.p = float(p)",
+        gate("meta_coin"),
+    ),
+    Bug(
+        "fresh58 planner domain: the robot's own offer read as the human's (the robot plans to take what it gave)",
+        "agents/planner/domain.py",
+        "return self.human_offer if state.offer_by == Agent.HUMAN else self.robot_offer",
+        "return self.human_offer if state.offer_by == Agent.ROBOT else self.robot_offer",
+        gate("planner_domain"),
+    ),
+    Bug(
+        "fresh58 expectimax: holding read before the human's reply (an idle-prone plan's expected cost wrong)",
+        "agents/planner/expectimax.py",
+        "hand_h in o.state.where)",
+        "hand_h in s1.where)",
+        gate("planner_expectimax"),
+    ),
+    Bug(
+        "fresh58 human models: a blocked ground action still allowed (the monitor's blocking facts ignored)",
+        "agents/planner/models.py",
+        "return action.kind in self.allowed_kinds and action not in self.blocked",
+        "return action.kind in self.allowed_kinds",
+        gate("planner_models"),
+    ),
+    Bug(
+        "fresh58 lazy human: p_idle ignored (the lazy human never idles when it has something to tidy)",
+        "agents/humans/lazy.py",
+        "return with_idle(deterministic(index), world, self.p_idle)",
+        "return deterministic(index)",
+        gate("human_lazy"),
+    ),
+    Bug(
+        "fresh58 criteria: a probability of 0 refused (random:p=0, the habit-only coin, is rejected)",
+        "agents/meta/base.py",
+        "if not 0.0 <= float(value) <= 1.0:",
+        "if not 0.0 < float(value) <= 1.0:",
+        gate("meta_base"),
+    ),
+    Bug(
+        "fresh58 planner A*: the node budget off by one (a search expands budget + 1 cycle boundaries)",
+        "agents/planner/halfstep.py",
+        "if expanded >= budget:",
+        "if expanded > budget:",
+        gate("planner_halfstep"),
+    ),
+    Bug(
+        "fresh58 paper experiment: 'planner > random mix >> habit' holds when the mix merely beats the habit",
+        "training/paper.py",
+        'bool(t["planner"] > t["random"] > 2 * t["habit"])',
+        'bool(t["planner"] > t["random"] > t["habit"])',
+        gate("paper_experiment"),
+    ),
+    Bug(
+        "fresh58 study files: --seeds 0 accepted (a narrowed study with no seeds runs nothing)",
+        "training/study.py",
+        "if seeds is not None and seeds < 1:",
+        "if seeds is not None and seeds < 0:",
+        gate("study_files"),
+    ),
+    Bug(
+        "fresh58 evaluate: an oracle rate of 0 used as the reference (scores divide by zero instead of 'no score')",
+        "training/evaluate.py",
+        "if rate is not None and rate > 0:",
+        "if rate is not None:",
+        gate("evaluate_study"),
+    ),
+    Bug(
+        "fresh58 homogenize: the observation space leaves out the agent-id one-hot (its shape is the facts' only)",
+        "hg_marl/wrappers/homogenize.py",
+        '"observation": spaces.Box(0, 1, (n_facts + len(agents),), self.dtype),',
+        '"observation": spaces.Box(0, 1, (n_facts,), self.dtype),',
+        gate("wrapper_homogenize"),
+    ),
+    Bug(
+        "fresh58 views: a population's last partner never drawn for an episode",
+        "agents/views.py",
+        "index = int(self.np_random.integers(len(self._partners))) if",
+        "index = int(self.np_random.integers(len(self._partners) - 1)) if",
+        gate("views"),
+    ),
+    Bug(
+        "fresh58 array partners: a compiled switching human by tasks switches on the clock instead",
+        "agents/array_partners.py",
+        'value = clock if self.by == "time" else tasks_solved.astype(float)',
+        "value = clock",
+        gate("array_partners"),
+    ),
+    Bug(
+        "fresh58 partnering: a failed robot action shown to the posterior as done (the partner type inferred wrong)",
+        "agents/robots/partnering.py",
+        "robot_action if step.ok else -1, human_action)",
+        "robot_action, human_action)",
+        gate("partnering"),
+    ),
+    Bug(
+        "fresh58 reproduce: summary.json's duration is the default, not the duration run",
+        "training/reproduce.py",
+        '"duration": config.duration,',
+        '"duration": paper.DEFAULT_DURATION,',
+        gate("reproduce_driver"),
+    ),
+)
+"""Round 58, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in round 49, each bug run against its module's gate tests
+from modules.toml: the random, lazy humans, the random criterion, the criteria's base, the planner's
+domain, expectimax, human models and A*, the paper experiment, the study files, the evaluation, the
+homogenize wrapper, the views, the array partners, the partnering and the reproduce driver."""
+ROUND58_TESTS = "tests/training/test_pinned_round58.py"
+"""The values round 58's missed bugs changed, pinned after the round: every round-58 bug runs them too."""
+FRESH58 = pinned_after(FRESH58, ROUND58_TESTS)
 
 
 ALL = (
