@@ -183,8 +183,9 @@ REPEATS_KEPT = 0.98
 CONTRADICTED = 0.1
 """Share of contradicted repeats from which the partner is not taken for stationary."""
 MIN_REPEATS = 5.0
-"""Repeats below which a contradiction counts as if there were this many (one early
-contradiction does not condemn the model; three do)."""
+"""The share of contradicted repeats is taken over at least this many: a contradiction among
+the first repeats stops the model from being planned with until about ten repeats have
+agreed after it (``0.98 ** k < 0.1 * (k + 1)`` from k = 8)."""
 
 MAX_TABLES = 256
 """Solutions kept by the table they were solved from (all dropped when more are wanted)."""
