@@ -7720,6 +7720,254 @@ ROUND58_TESTS = "tests/training/test_pinned_round58.py"
 FRESH58 = pinned_after(FRESH58, ROUND58_TESTS)
 
 
+FRESH59: tuple[Bug, ...] = (
+    Bug(
+        "fresh59 habit robot: the reward never reaches the TD step (the habit learns nothing from solved tasks)",
+        "agents/robots/habit.py",
+        "self._learn_from(turn.reward, facts)",
+        "self._learn_from(0.0, facts)",
+        gate("habit_robot"),
+    ),
+    Bug(
+        "fresh59 canonical view: the action maps sized by the human's actions (relabelled robot actions wrong)",
+        "agents/robots/canonical.py",
+        "n = self.world.n_actions(self.agent)",
+        "n = self.world.n_actions(Agent.HUMAN)",
+        gate("canonical_view"),
+    ),
+    Bug(
+        "fresh59 partner specs: a single Actor partner read as a population (iterating it fails)",
+        "agents/partner_specs.py",
+        "if isinstance(partner, str) or not isinstance(partner, Sequence):",
+        "if isinstance(partner, str):",
+        gate("partner_specs"),
+    ),
+    Bug(
+        "fresh59 mask audit: audit_totals gives the last audit's sent count instead of the sum",
+        "hg_marl/wrappers/audit.py",
+        "sent[agent] = sent.get(agent, 0) + n",
+        "sent[agent] = n",
+        gate("wrapper_audit"),
+    ),
+    Bug(
+        "fresh59 hyperparams: n_timesteps=0 accepted (a run with no default step budget)",
+        "training/baselines/hyperparams.py",
+        "        minimum=1,\n        maximum=MAX_TIMESTEPS,",
+        "        minimum=0,\n        maximum=MAX_TIMESTEPS,",
+        gate("baselines_hyperparams"),
+    ),
+    Bug(
+        "fresh59 baselines evaluation: actor_rate gives tasks per second instead of per hour",
+        "training/baselines/evaluation.py",
+        'rates.append(result.summary["tasks_solved"] * HOUR / duration)',
+        'rates.append(result.summary["tasks_solved"] / duration)',
+        gate("baselines_evaluation"),
+    ),
+    Bug(
+        "fresh59 batched learned: a linear learned human accepted as a batched SB3 partner (no refusal)",
+        "agents/batched_learned.py",
+        'return isinstance(human, LearnedHuman) and human.kind == "sb3"',
+        "return isinstance(human, LearnedHuman)",
+        gate("batched_learned"),
+    ),
+    Bug(
+        "fresh59 training io: write_json's file lacks its final newline",
+        "training/io.py",
+        'allow_nan=False) + "\\n"',
+        "allow_nan=False)",
+        gate("training_io"),
+    ),
+    Bug(
+        "fresh59 parallel view: parallel_env's options ignored (parallel_env(scenario=...) plays the default)",
+        "hg_marl/envs/parallel.py",
+        "return TurnBasedParallelEnv(aec_env(**kwargs))",
+        "return TurnBasedParallelEnv(aec_env())",
+        gate("parallel_view"),
+    ),
+    Bug(
+        "fresh59 flat wrapper: dtype=np.int8 still declares a float32 observation space",
+        "hg_marl/wrappers/flat.py",
+        "box = spaces.Box(0, 1, facts.shape, self.dtype)",
+        "box = spaces.Box(0, 1, facts.shape, np.float32)",
+        gate("wrapper_flat"),
+    ),
+    Bug(
+        "fresh59 adapters: a scripted seat decides once per episode (its mask repeats its first decision)",
+        "agents/adapters.py",
+        "if turn != self._turns:",
+        "if turn == -1:",
+        gate("adapters"),
+    ),
+    Bug(
+        "fresh59 play stats: the scripted humans replayed on seed 0 rather than the recorded game's seed",
+        "training/play/stats.py",
+        'seed=int(h.get("seed") or 0))',
+        "seed=0)",
+        gate("play_stats"),
+    ),
+    Bug(
+        "fresh59 partner: the robot stalls one miss after stall_after",
+        "agents/partner.py",
+        "return self.misses >= self.stall_after",
+        "return self.misses > self.stall_after",
+        gate("partner"),
+    ),
+    Bug(
+        "fresh59 learned human: the softmax human gives infeasible actions probability (their logits 0, not -inf)",
+        "agents/humans/learned.py",
+        "logits = np.where(feasible, logits, -np.inf)",
+        "logits = np.where(feasible, logits, 0.0)",
+        gate("learned_human"),
+    ),
+    Bug(
+        "fresh59 ppo batched: --minibatches must divide num_envs (one that divides num_envs x n_steps refused)",
+        "training/baselines/ppo_batched.py",
+        "if (self.num_envs * self.n_steps) % self.minibatches:",
+        "if self.num_envs % self.minibatches:",
+        gate("ppo_batched"),
+    ),
+    Bug(
+        "fresh59 convert: the old header's training record dropped from the converted file",
+        "training/baselines/convert.py",
+        'if "train" in old:',
+        'if "train" in fields:',
+        gate("baselines_convert"),
+    ),
+)
+"""Round 59, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 50-51, each bug run against its module's gate tests
+from modules.toml: the habit robot, the canonical view, the partner specs, the mask audit, the baselines'
+hyperparameters and evaluation, the batched learned human, the result writers, the parallel view, the
+flat wrapper, the adapters, the play statistics, the partner monitor and posterior, the learned human,
+the batched PPO and the zip conversion."""
+ROUND59_TESTS = "tests/training/test_pinned_round59.py"
+"""The values round 59's missed bugs changed, pinned after the round: every round-59 bug runs them too."""
+FRESH59 = pinned_after(FRESH59, ROUND59_TESTS)
+
+FRESH60: tuple[Bug, ...] = (
+    Bug(
+        "fresh60 play replay: the replay's move count one short (a 10-move game reported as 9 moves)",
+        "training/play/replay.py",
+        "moves=len(ep.steps),",
+        "moves=len(ep.steps) - 1,",
+        gate("play_replay"),
+    ),
+    Bug(
+        "fresh60 baselines envs: effort_weight ignored for the human seat (the human view's reward never charges work)",
+        "training/baselines/envs.py",
+        "effort_weight=self.effort_weight,",
+        "effort_weight=0.0,",
+        gate("baselines_envs"),
+    ),
+    Bug(
+        "fresh60 behaviour cloning: the recorded seat swapped (a human trace cloned for the robot's seat)",
+        "training/baselines/bc.py",
+        'Agent.HUMAN if first["seat"] == "human" else Agent.ROBOT,',
+        'Agent.ROBOT if first["seat"] == "human" else Agent.HUMAN,',
+        gate("baselines_bc"),
+    ),
+    Bug(
+        "fresh60 sb3 limits: learning_starts=0 refused (DQN cannot start learning at once)",
+        "agents/sb3_limits.py",
+        '"learning_starts": (_INT, 0, 100_000_000),',
+        '"learning_starts": (_INT, 1, 100_000_000),',
+        gate("sb3_limits"),
+    ),
+    Bug(
+        "fresh60 comparison config: --seeds 0 accepted (a comparison with no training seed runs nothing)",
+        "training/baselines/comparison.py",
+        'check_int(self.seeds, "seeds (--seeds)", minimum=1)',
+        'check_int(self.seeds, "seeds (--seeds)", minimum=0)',
+        gate("baselines_comparison"),
+    ),
+    Bug(
+        "fresh60 sb3 wrapper: outside_mask counts the actions inside the mask (a masked learner reported wrong)",
+        "hg_marl/wrappers/sb3.py",
+        "self.outside_mask += int((~self._masks[np.arange(self.num_envs), actions]).sum())",
+        "self.outside_mask += int((self._masks[np.arange(self.num_envs), actions]).sum())",
+        gate("sb3_wrapper"),
+    ),
+    Bug(
+        "fresh60 sb3 robot: deterministic read backwards (the default greedy robot samples instead)",
+        "agents/robots/sb3.py",
+        'elif not self.deterministic and hasattr(self.model.policy, "get_distribution"):',
+        'elif self.deterministic and hasattr(self.model.policy, "get_distribution"):',
+        gate("sb3_robot"),
+    ),
+    Bug(
+        "fresh60 play session: response time measured backwards (every move's response time is 0)",
+        "training/play/session.py",
+        "response = max(0.0, self.timer() - self._shown_at)",
+        "response = max(0.0, self._shown_at - self.timer())",
+        gate("play_session"),
+    ),
+    Bug(
+        "fresh60 backends: --address auto refused (joining a running Ray cluster is a malformed-address error)",
+        "training/backends.py",
+        'if address is None or address == "auto":',
+        "if address is None:",
+        gate("backends"),
+    ),
+    Bug(
+        "fresh60 sb3 callbacks: a stop winds back the wrong algorithms' steps (a stopped PPO keeps untrained steps)",
+        "training/baselines/callbacks.py",
+        'if getattr(self.model, "replay_buffer", None) is None:',
+        'if getattr(self.model, "replay_buffer", None) is not None:',
+        gate("baselines_callbacks"),
+    ),
+    Bug(
+        "fresh60 compare: training seed 0 skipped (each cell runs seeds 1..seeds-1, one seed short)",
+        "training/baselines/compare.py",
+        "for seed in range(config.seeds):",
+        "for seed in range(1, config.seeds):",
+        gate("baselines_compare"),
+    ),
+    Bug(
+        "fresh60 batched rules: a failed action lasts no time (the batched clock runs faster than the scalar one)",
+        "hg_marl/core/batch.py",
+        "duration = np.where(ok, self.duration[agent][actions], self.failed)",
+        "duration = np.where(ok, self.duration[agent][actions], 0.0)",
+        gate("batch_rules"),
+    ),
+    Bug(
+        "fresh60 compiled human: fallbacks counted per call, not per table (three missing tables count one)",
+        "agents/compiled.py",
+        "self.fallbacks += len(missing)",
+        "self.fallbacks += 1",
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh60 headroom: a label's partner not kept (get for setdefault: the true partners' columns never built)",
+        "agents/headroom.py",
+        "if rows.setdefault(label, spec) != spec:",
+        "if rows.get(label, spec) != spec:",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh60 random robot: its moves recorded as the 'uniform' expert (the play summary names no real expert)",
+        "agents/robots/uniform.py",
+        'self._record("random", action)',
+        'self._record("uniform", action)',
+        gate("random_robot"),
+    ),
+    Bug(
+        "fresh60 recurrent ppo sb3: a population trained against its first partner only",
+        "training/baselines/recurrent_ppo_sb3.py",
+        "human: Any = config.humans[0] if len(config.humans) == 1 else list(config.humans)",
+        "human: Any = config.humans[0] if len(config.humans) >= 1 else list(config.humans)",
+        gate("recurrent_ppo_sb3"),
+    ),
+)
+"""Round 60, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 51-52, each bug run against its module's gate tests
+from modules.toml: the replay, the play session, the SB3 envs, behaviour cloning, the SB3 limits, the
+comparison's config and driver, the SB3 wrapper, robot and callbacks, the backends, the batched rules,
+the compiled human, the headroom matrix, the random robot and sb3-contrib's RecurrentPPO trainer."""
+ROUND60_TESTS = "tests/training/test_pinned_round60.py"
+"""The values round 60's missed bugs changed, pinned after the round: every round-60 bug runs them too."""
+FRESH60 = pinned_after(FRESH60, ROUND60_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -7780,6 +8028,8 @@ ALL = (
     + FRESH56
     + FRESH57
     + FRESH58
+    + FRESH59
+    + FRESH60
 )
 
 
