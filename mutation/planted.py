@@ -7968,6 +7968,257 @@ ROUND60_TESTS = "tests/training/test_pinned_round60.py"
 FRESH60 = pinned_after(FRESH60, ROUND60_TESTS)
 
 
+FRESH61: tuple[Bug, ...] = (
+    Bug(
+        "fresh61 habit: uncertainty_rate=1 refused (keeping only the latest TD error is out of range)",
+        "agents/habit.py",
+        '"uncertainty_rate": 0 < self.uncertainty_rate <= 1,',
+        '"uncertainty_rate": 0 < self.uncertainty_rate < 1,',
+        gate("habit"),
+    ),
+    Bug(
+        "fresh61 meta controller: an untrained habit's plan logged with reason 'criterion', not 'habit_untrained'",
+        "agents/meta/controller.py",
+        'return Decision(Expert.PLANNER, proposal.action, proposal, "habit_untrained", dict(crit.stats))',
+        'return Decision(Expert.PLANNER, proposal.action, proposal, "criterion", dict(crit.stats))',
+        gate("meta_controller"),
+    ),
+    Bug(
+        "fresh61 model solve: the sweeps stop while the values still move (the first sweep taken as converged)",
+        "agents/models/solve.py",
+        "if delta < tolerance:",
+        "if delta > tolerance:",
+        gate("model_solve"),
+    ),
+    Bug(
+        "fresh61 model packing: the offered object's radix one short (an offer of the last object packs wrong)",
+        "agents/models/packing.py",
+        "[t.n_locations, 3, n + 1, world.n_actions(Agent.ROBOT) + 1]",
+        "[t.n_locations, 3, n, world.n_actions(Agent.ROBOT) + 1]",
+        gate("model_packing"),
+    ),
+    Bug(
+        "fresh61 model partners: an idle-prone preference partner's moves weighted by p_idle, not 1 - p_idle",
+        "agents/models/partners.py",
+        "prob[:, :2] = (1.0 - h.p_idle) * prob[:, :2]",
+        "prob[:, :2] = h.p_idle * prob[:, :2]",
+        gate("model_partners"),
+    ),
+    Bug(
+        "fresh61 model layouts: each bin class counted one object too many (the layout count is wrong)",
+        "agents/models/layouts.py",
+        "sizes[bins] = sizes.get(bins, 0) + 1",
+        "sizes[bins] = sizes.get(bins, 1) + 1",
+        gate("model_layouts"),
+    ),
+    Bug(
+        "fresh61 model lazy: canonical read backwards (a canonical model's transitions lead to plain states)",
+        "agents/models/lazy.py",
+        'table.entries["canonical" if self.canonical else "next"]',
+        'table.entries["next" if self.canonical else "canonical"]',
+        gate("model_lazy"),
+    ),
+    Bug(
+        "fresh61 model keyed: a key above every stored key looked up past the end (known() fails)",
+        "agents/models/keyed.py",
+        "at = np.minimum(positions(sorted_keys, queries), len(sorted_keys) - 1)",
+        "at = np.minimum(positions(sorted_keys, queries), len(sorted_keys))",
+        gate("model_keyed"),
+    ),
+    Bug(
+        "fresh61 model equivariant: a go-to the first non-object target read as an object",
+        "agents/models/equivariant.py",
+        "(target if kind is Kind.GOTO and target < n else -1)",
+        "(target if kind is Kind.GOTO and target <= n else -1)",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh61 model chains: a pair with one edge into a dead state still counted safe",
+        "agents/models/chains.py",
+        "minlength=n_pairs) > 0)",
+        "minlength=n_pairs) > 1)",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh61 model builder: the failed-action column takes the first feasible action, not infeasible",
+        "agents/models/builder.py",
+        "pa[failing] = np.argmin(mask[ps[failing]], axis=1)",
+        "pa[failing] = np.argmax(mask[ps[failing]], axis=1)",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh61 model live: offer_by and offer_obj swapped in the live partner's state",
+        "agents/models/live.py",
+        "State(where, at, by, obj), seen)",
+        "State(where, at, obj, by), seen)",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh61 model answers: the canonical next states stored as the plain ones (relabelling dropped)",
+        "agents/models/answers.py",
+        '"canonical": nxt if self.relabelled is False else self.packer.pack(b),',
+        '"canonical": nxt,',
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh61 planner bound: an offer of object 0 not given its offer status in the bound",
+        "agents/planner/space.py",
+        "if state.offer_obj >= 0:",
+        "if state.offer_obj > 0:",
+        gate("planner_bound"),
+    ),
+    Bug(
+        "fresh61 entropy cost: the decision costs scaled by the smaller cost (min for max)",
+        "agents/meta/entropy_cost.py",
+        "scale = max(c_habit, c_planner)",
+        "scale = min(c_habit, c_planner)",
+        gate("entropy_cost"),
+    ),
+    Bug(
+        "fresh61 vpi: the habit's worst action taken for its best (VPI against the wrong reference)",
+        "agents/meta/vpi.py",
+        'order = np.argsort(-q, kind="stable")',
+        'order = np.argsort(q, kind="stable")',
+        gate("vpi"),
+    ),
+)
+"""Round 61, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 52-53, each bug run against its module's gate tests
+from modules.toml: the habit, the meta-controller, the exact model's solver, packing, partners, layouts,
+table-kept transitions, keyed tables, equivariant answers, chains, builder, live and stored answers, the
+planner's bound space, and the entropy-and-cost and VPI criteria."""
+ROUND61_TESTS = "tests/training/test_pinned_round61.py"
+"""The values round 61's missed bugs changed, pinned after the round: every round-61 bug runs them too."""
+FRESH61 = pinned_after(FRESH61, ROUND61_TESTS)
+
+FRESH62: tuple[Bug, ...] = (
+    Bug(
+        "fresh62 model budget: a wall-time budget refused when exactly spent (--max-seconds 5 stops at 5 s, not after)",
+        "agents/models/budget.py",
+        "if spent > self.seconds:",
+        "if spent >= self.seconds:",
+        gate("model_budget"),
+    ),
+    Bug(
+        "fresh62 outputs: an existing output folder refused as a file (evaluate --out into a folder that exists fails)",
+        "training/outputs.py",
+        "if path.exists() and not path.is_dir():",
+        "if path.exists() and not path.is_file():",
+        gate("outputs"),
+    ),
+    Bug(
+        "fresh62 recipes: the noisy partner's levels not grown for a new table (a one-table fcp run fails at reset)",
+        "training/baselines/recipes.py",
+        "if len(self.eps) <= int(rows.max(initial=-1)):",
+        "if len(self.eps) < int(rows.max(initial=-1)):",
+        gate("recipes"),
+    ),
+    Bug(
+        "fresh62 memory policy: a memoryless model file saved as recurrent (loading it fails its shape check)",
+        "agents/memory_policy.py",
+        '"recurrent": net.recurrent,',
+        '"recurrent": True,',
+        gate("memory_policy"),
+    ),
+    Bug(
+        "fresh62 model format: a model file's seat not checked (a human-seat model loads as --model for the robot)",
+        "agents/model_format.py",
+        'if seat is not None and header["seat"] != seat:',
+        'if seat is None and header["seat"] != seat:',
+        gate("model_format"),
+    ),
+    Bug(
+        "fresh62 model limits: a refusal's expected shape misprinted ((4,) shown as (4), (4, 5) as (4, 5,))",
+        "agents/model_limits.py",
+        '("," if len(want) == 1 else "")',
+        '("," if len(want) > 1 else "")',
+        gate("model_limits"),
+    ),
+    Bug(
+        "fresh62 relabel: the canonical state sorts each class by place code descending (not ascending, as documented)",
+        "hg_marl/core/relabel.py",
+        "sorted(members, key=where.__getitem__)",
+        "sorted(members, key=where.__getitem__, reverse=True)",
+        gate("relabel"),
+    ),
+    Bug(
+        "fresh62 vector envs: history=k ignored in the robot view (the observations carry no interaction history)",
+        "agents/vector_envs.py",
+        "return HistoryVectorEnv(env, k) if k else env",
+        "return env",
+        gate("vector_envs"),
+    ),
+    Bug(
+        "fresh62 world: goto(human) named as a bin past the last one (naming the action fails)",
+        "hg_marl/core/world.py",
+        "if target < n + b:",
+        "if target <= n + b:",
+        gate("world"),
+    ),
+    Bug(
+        "fresh62 sweep: runs made counted as reused (the store's log says 0 made, N reused)",
+        "training/sweep.py",
+        "stats.ran += 1",
+        "stats.reused += 1",
+        gate("sweep"),
+    ),
+    Bug(
+        "fresh62 store: an entry written for another key accepted (a run's result reused for a different job)",
+        "training/store.py",
+        'if not isinstance(data, dict) or data.get("key") != key:',
+        'if not isinstance(data, dict) or data.get("key") is None:',
+        gate("store"),
+    ),
+    Bug(
+        "fresh62 runner: the planner share counts the habit's decisions (a planner-only run reports 0 %)",
+        "training/runner.py",
+        '"planner_share": float((log["expert"] == "planner").mean())',
+        '"planner_share": float((log["expert"] == "habit").mean())',
+        gate("runner"),
+    ),
+    Bug(
+        "fresh62 forked: the in-process map reports one result fewer to its budget check (progress one short)",
+        "agents/models/forked.py",
+        "out.append(self.owner.function(item))\n"
+        "                if check is not None:\n"
+        "                    check(len(out))",
+        "out.append(self.owner.function(item))\n"
+        "                if check is not None:\n"
+        "                    check(len(out) - 1)",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh62 meta fixed: the planner-only criterion named 'habit' (its runs are logged as the habit condition)",
+        "agents/meta/fixed.py",
+        'name = "planner"',
+        'name = "habit"',
+        gate("meta_fixed"),
+    ),
+    Bug(
+        "fresh62 baselines train: --eval-episodes 0 accepted (an evaluation of no episode)",
+        "training/baselines/train.py",
+        'check_int(self.eval_episodes, "--eval-episodes", minimum=1)',
+        'check_int(self.eval_episodes, "--eval-episodes", minimum=0)',
+        gate("baselines_train"),
+    ),
+    Bug(
+        "fresh62 core errors: an integer at its maximum refused (--jobs 256 refused, 'expected an integer <= 256')",
+        "hg_marl/core/errors.py",
+        "if maximum is not None and value > maximum:",
+        "if maximum is not None and value >= maximum:",
+        gate("core_errors"),
+    ),
+)
+"""Round 62, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 53-54, each bug run against its module's gate tests
+from modules.toml: the model budget, the output paths, the training recipes, the memory policy, the model
+format and limits, the relabelling, the vector envs, the world, the sweep, the store, the runner, the
+forked workers, the fixed criteria, the SB3 trainer and the core errors."""
+ROUND62_TESTS = "tests/training/test_pinned_round62.py"
+"""The values round 62's missed bugs changed, pinned after the round: every round-62 bug runs them too."""
+FRESH62 = pinned_after(FRESH62, ROUND62_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -8030,6 +8281,8 @@ ALL = (
     + FRESH58
     + FRESH59
     + FRESH60
+    + FRESH61
+    + FRESH62
 )
 
 
