@@ -161,7 +161,9 @@ class ObservedPartner:
 
 
 class ObservedSnapshot(StationaryHuman):
-    """An :class:`ObservedPartner` frozen at one moment (its counts copied): stationary."""
+    """An :class:`ObservedPartner`'s answers as a stationary human: its counts alone where the
+    partner was seen, the base's answer elsewhere (:meth:`ObservedPartner.snapshot` copies the
+    counts; the solver's one-step backups read the partner's own, as they are now)."""
 
     name = "observed"
     uses_robot_action = True
@@ -225,9 +227,9 @@ class ObservedSolver:
         self.key = -1
         """The partner's :attr:`~ObservedPartner.version` the solution was solved at (-1: none yet)."""
         self.result: OracleResult | None = None
-        self.tables: dict[State, tuple[int, OracleResult]] = {}
+        self.tables: dict[State, tuple[int, OracleResult | None]] = {}
         """Solutions by the table they were solved from, with the version each was solved at
-        (reused at that version only)."""
+        (reused at that version only; None: over the limit)."""
         self.solves = 0
         """Models solved in this run."""
 
@@ -242,17 +244,15 @@ class ObservedSolver:
         if base_states > self.max_states or not partner.stationary():
             return {}, 0
         if self.result is None or state not in self.result.values:
-            kept = self.tables.get(state)  # solved from this table before, under the same model?
-            if kept is not None and kept[0] == partner.version:
-                self.key, self.result = kept
-            else:
+            kept = self.tables.get(state)  # solved from this table (its root) before, under the same model?
+            if kept is None or kept[0] != partner.version:
                 self.result = None
+            elif kept[1] is None:
+                return {}, 0  # this table's model was over the limit under this very model
+            else:
+                self.key, self.result = kept
         solved = 0
-        if (
-            self.result is None
-            or state not in self.result.values
-            or (partner.version != self.key and self._stale(world, state, partner))
-        ):
+        if self.result is None or (partner.version != self.key and self._stale(world, state, partner)):
             self.key = partner.version
             try:
                 self.result = oracle_rate(
@@ -265,6 +265,7 @@ class ObservedSolver:
                 )
             except OverBudget:
                 self.result = None
+                self.tables[state] = (self.key, None)  # not tried again until the model changes
                 return {}, 0
             if len(self.tables) >= MAX_TABLES:
                 self.tables.clear()

@@ -448,9 +448,9 @@ class BeliefRobot(Robot):
         """The exact best response to the observed partner at ``state`` (-1: none here), and the
         seconds its solve is charged (with the planner's decision when it gave no move).
 
-        Its model is solved again only when the observed answers surprised it or the most
-        probable member (its answer where the partner was never seen) changed; a solve is
-        charged to the clock as a planner call expanding one node per state.
+        Its model is solved from the table in front of the robot, and again only after the
+        partner surprised it at this state (:class:`~hg_marl.agents.observed_partner.ObservedSolver`);
+        a solve is charged to the clock as a planner call expanding one node per state.
         """
         partner = self.posterior.learned
         assert isinstance(partner, ObservedPartner)

@@ -296,3 +296,33 @@ def test_a_table_dealt_again_under_the_same_model_is_not_solved_again() -> None:
     assert partner.version == 1
     _, solved = solver.q_values(world, second, partner, 0, relabel)
     assert solver.solves == 3 and solved > 0
+
+
+def test_a_table_over_the_limit_is_not_tried_again_under_the_same_model(monkeypatch: pytest.MonkeyPatch) -> None:
+    """An over-the-limit model is remembered by table and version: the next decision there asks
+    no solve, and a surprise (a new model) tries again."""
+    import hg_marl.agents.observed_partner as module
+
+    calls: list[int] = []
+    real = module.oracle_rate
+
+    def counted(*args: object, **kwargs: object) -> object:
+        calls.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(module, "oracle_rate", counted)
+    world = World("forced_coordination")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    relabel = Relabel(world)
+    state = world.initial_state(np.random.default_rng(0))
+    small = ObservedSolver(max_states=5)
+    assert small.q_values(world, state, partner, 0, relabel) == ({}, 0)
+    assert small.q_values(world, state, partner, 0, relabel) == ({}, 0)
+    assert len(calls) == 1
+    wait = world.n_actions(Agent.ROBOT) - 1
+    mid = world.step(state, Agent.ROBOT, wait).state
+    partner.update(world, mid, wait, world.n_actions(Agent.HUMAN) - 1)  # the base picks there: a surprise
+    assert partner.version == 1
+    assert small.q_values(world, state, partner, 0, relabel) == ({}, 0)
+    assert len(calls) == 2
