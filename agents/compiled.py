@@ -1,6 +1,8 @@
 """Compiled partners: a stationary scripted human as an action distribution per reachable state.
 
-A stationary human (every registry human but ``switching`` and ``replay``; ``learned``
+A stationary human (every registry human the registry marks stationary: not ``switching``,
+``replay`` or the family-out partners that follow a clock or their own history,
+``fo_after_waits``, ``fo_bursts``, ``fo_forgetful`` and ``fo_slow_start``; ``learned``
 in its numpy kinds, not SB3's, which the batched env runs as one forward pass per step
 instead: ``agents/batched_learned.py``)
 answers as a function of the mid-cycle state and the robot's action seen

@@ -8219,6 +8219,255 @@ ROUND62_TESTS = "tests/training/test_pinned_round62.py"
 FRESH62 = pinned_after(FRESH62, ROUND62_TESTS)
 
 
+FRESH63: tuple[Bug, ...] = (
+    Bug(
+        "fresh63 content: a file named in a spec's parameters not keyed (a retrained learned:path=m reuses results)",
+        "agents/content.py",
+        "for item in raw.values():",
+        "for item in raw.keys():",
+        gate("content"),
+    ),
+    Bug(
+        "fresh63 cycle: the batched human sees a failed robot action as action 0, not -1",
+        "hg_marl/core/cycle.py",
+        "return np.where(ok, actions, -1)",
+        "return np.where(ok, actions, 0)",
+        gate("cycle"),
+    ),
+    Bug(
+        "fresh63 heldout curve: a split's tasks per hour averaged over both splits' partners (the curves coincide)",
+        "training/baselines/heldout_curve.py",
+        '[float(r["tasks_per_hour"]) for r in mine',
+        '[float(r["tasks_per_hour"]) for r in rows',
+        gate("heldout_curve"),
+    ),
+    Bug(
+        "fresh63 history: the batched robot's history reads the partner's failures from the robot's own",
+        "hg_marl/envs/history.py",
+        '~np.asarray(info["human_failed"])',
+        '~np.asarray(info["failed"])',
+        gate("history"),
+    ),
+    Bug(
+        "fresh63 memory robot: unstall=0 (play the policy as trained) refused",
+        "agents/robots/memory.py",
+        'check_int(unstall, "unstall", minimum=0, error=RobotError)',
+        'check_int(unstall, "unstall", minimum=1, error=RobotError)',
+        gate("memory_robot"),
+    ),
+    Bug(
+        "fresh63 planner costs: value_tolerance=0 (iterate until no value moves) refused",
+        "agents/planner/costs.py",
+        "if not (0 <= self.value_tolerance < math.inf):",
+        "if not (0 < self.value_tolerance < math.inf):",
+        gate("planner_costs"),
+    ),
+    Bug(
+        "fresh63 exact sums: sums outside the five-64-bit-field layout scaled by 2**-exp, not 2**exp",
+        "agents/planner/exactsum.py",
+        "ldexp(float((total >> s) & mask), exp)",
+        "ldexp(float((total >> s) & mask), -exp)",
+        gate("planner_exactsum"),
+    ),
+    Bug(
+        "fresh63 planner steps: a give's offer recorded with the object as the giver and the giver as the object",
+        "agents/planner/steps.py",
+        "b, ob = x, o",
+        "b, ob = o, x",
+        gate("planner_steps"),
+    ),
+    Bug(
+        "fresh63 registry: an entry registered without saying is taken for non-stationary (the oracle refuses it)",
+        "hg_marl/core/registry.py",
+        "stationary: bool = True",
+        "stationary: bool = False",
+        gate("registry"),
+    ),
+    Bug(
+        "fresh63 scenario file: an error in an inline table array's first entry crashes (IndexError), no message",
+        "hg_marl/core/scenario_file.py",
+        "if int(index) >= len(headers):",
+        "if int(index) > len(headers):",
+        gate("scenario_file"),
+    ),
+    Bug(
+        "fresh63 generated scenario: objects dealt to the first N spots only (the extra spots never hold one)",
+        "hg_marl/core/scenario_generated.py",
+        "layout=(LayoutGroup(objects, tuple(range(n_spots))),)",
+        "layout=(LayoutGroup(objects, tuple(range(objects))),)",
+        gate("scenario_generated"),
+    ),
+    Bug(
+        "fresh63 scenario model: an unreachable spot no layout uses warned about (solvable scenario refused if strict)",
+        "hg_marl/core/scenario_model.py",
+        "for s in sorted(layout_spots):",
+        "for s in range(len(scenario.spots)):",
+        gate("scenario_model"),
+    ),
+    Bug(
+        "fresh63 server limits: a timeout of 0 (or below) accepted (every connection closed at once)",
+        "training/play/server_limits.py",
+        "check_finite(getattr(self, name), name, positive=True,",
+        "check_finite(getattr(self, name), name, positive=False,",
+        gate("server_limits"),
+    ),
+    Bug(
+        "fresh63 array partner: the reset capability not runtime-checkable (building a batched table raises TypeError)",
+        "hg_marl/envs/array_partner.py",
+        "@runtime_checkable\nclass ResetsRows(Protocol):",
+        "class ResetsRows(Protocol):",
+        gate("array_partner"),
+    ),
+    Bug(
+        "fresh63 atomic: a write that fails on a full disk raises the raw OSError, not an OutputError",
+        "hg_marl/core/atomic.py",
+        "        if error is None:\n            raise\n",
+        "        if error is not None:\n            raise\n",
+        gate("atomic"),
+    ),
+    Bug(
+        "fresh63 belief: hedge='map' (the default) plays the QMDP mixture and hedge='qmdp' the most probable member",
+        "agents/robots/belief.py",
+        'if self.hedge == "map" else list(range(len(weights)))',
+        'if self.hedge == "qmdp" else list(range(len(weights)))',
+        gate("belief"),
+    ),
+)
+"""Round 63, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 54-55, each bug run against its module's gate tests
+from modules.toml: the content keys, the cycle, the held-out curve, the history features, the memory
+robot, the planner's costs, exact sums and steps, the registry, the scenario file, generator and model,
+the server limits, the array partner's protocols, the atomic writes and the belief robot."""
+ROUND63_TESTS = "tests/training/test_pinned_round63.py"
+"""The values round 63's missed bugs changed, pinned after the round: every round-63 bug runs them too."""
+FRESH63 = pinned_after(FRESH63, ROUND63_TESTS)
+FRESH64: tuple[Bug, ...] = (
+    Bug(
+        "fresh64 entropy: the filter rate defaults to 0.4, not the lineage's 0.6 (a new distribution weighs less)",
+        "agents/meta/entropy.py",
+        "def __init__(self, rate: float = 0.6,",
+        "def __init__(self, rate: float = 0.4,",
+        gate("entropy"),
+    ),
+    Bug(
+        "fresh64 learning state: min_visits defaults to 0 (the habit acts in states it has never learnt from)",
+        "agents/meta/learning_state.py",
+        "min_visits: int = DEFAULT_MIN_VISITS",
+        "min_visits: int = 0",
+        gate("learning_state"),
+    ),
+    Bug(
+        "fresh64 limits: a study over MAX_RUNS refused naming the seeds limit (10,000), not the runs limit (200,000)",
+        "training/limits.py",
+        "over the limit of {MAX_RUNS:,} runs",
+        "over the limit of {MAX_SEEDS:,} runs",
+        gate("limits"),
+    ),
+    Bug(
+        "fresh64 member models: the completing move scored its own seconds, not 0 (the finishing move looks slower)",
+        "agents/member_models.py",
+        "out[a] = 0.0  # the completing wait",
+        "out[a] = duration  # the completing wait",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh64 memory numpy: a memory file without history (history = 0, facts only) refused",
+        "agents/memory_numpy.py",
+        '_int_field(mf, "history", 0, MAX_HISTORY)',
+        '_int_field(mf, "history", 1, MAX_HISTORY)',
+        gate("memory_numpy"),
+    ),
+    Bug(
+        "fresh64 meta cost: CostModel(mode='wall') refused (only the model mode accepted)",
+        "agents/meta/cost.py",
+        'if self.mode not in ("model", "wall"):',
+        'if self.mode not in ("model",):',
+        gate("meta_cost"),
+    ),
+    Bug(
+        "fresh64 model cache: an entry checked against its file name's key prefix (never read back, solved again)",
+        "agents/models/cache.py",
+        'if str(data["key"]) != key:',
+        'if str(data["key"]) != key[:24]:',
+        gate("model_cache"),
+    ),
+    Bug(
+        "fresh64 model sb3: a header's bool Box space refused as not numeric",
+        "agents/model_sb3.py",
+        'if dtype.kind not in "biuf":',
+        'if dtype.kind not in "iuf":',
+        gate("model_sb3"),
+    ),
+    Bug(
+        "fresh64 observed partner: forget=1 (no forgetting, in the documented (0, 1]) refused",
+        "agents/observed_partner.py",
+        "0 < forget <= 1):",
+        "0 < forget < 1):",
+        gate("observed_partner"),
+    ),
+    Bug(
+        "fresh64 oracle: the robot never warns when it leaves its model (the warning checks the count before it grows)",
+        "agents/oracle.py",
+        "if self.off_model == 1:",
+        "if self.off_model == 0:",
+        gate("oracle"),
+    ),
+    Bug(
+        "fresh64 planner tables: a placement's spot not recorded (the planner places on an occupied spot)",
+        "agents/planner/tables.py",
+        "entries.append((kind, i, (kind, space.spot_class[spot]), spot))",
+        "entries.append((kind, i, (kind, space.spot_class[spot]), -1))",
+        gate("planner_tables"),
+    ),
+    Bug(
+        "fresh64 ppo recurrent: learner steps/s counts the env's seconds too (reported equal to overall steps/s)",
+        "training/baselines/ppo_recurrent.py",
+        "rest = self.seconds - self.env_seconds",
+        "rest = self.seconds",
+        gate("ppo_recurrent"),
+    ),
+    Bug(
+        "fresh64 progress: K = 0 accepted (a guard that takes over at every turn)",
+        "agents/progress.py",
+        "    def __init__(self, after: int = PROGRESS_AFTER) -> None:\n"
+        "        if isinstance(after, bool) or not isinstance(after, int) or after < 1:",
+        "    def __init__(self, after: int = PROGRESS_AFTER) -> None:\n"
+        "        if isinstance(after, bool) or not isinstance(after, int) or after < 0:",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh64 aec env: reset(seed=0) ignores the seed (seed 0 not reproducible)",
+        "hg_marl/envs/table_cleaning.py",
+        "if seed is not None:\n            self._rng",
+        "if seed:\n            self._rng",
+        gate("aec_env"),
+    ),
+    Bug(
+        "fresh64 durations: a failed action lasts a wait (1 s), not its 0.2 s",
+        "hg_marl/core/durations.py",
+        "            return self.failed\n",
+        "            return self.wait\n",
+        gate("durations"),
+    ),
+    Bug(
+        "fresh64 human switching: the decision log names the switching human, not the phase's human",
+        "agents/humans/switching.py",
+        '"human": getattr(human, "name",',
+        '"human": getattr(self, "name",',
+        gate("human_switching"),
+    ),
+)
+"""Round 64, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 55-56, each bug run against its module's gate tests
+from modules.toml: the entropy, learning-state and cost criteria, the limits, the members' models, the
+numpy memory policy, the model cache, the SB3 model files, the observed partner, the oracle, the
+planner's tables, the recurrent PPO trainer, the progress guard, the AEC environment, the durations and
+the switching human."""
+ROUND64_TESTS = "tests/training/test_pinned_round64.py"
+"""The values round 64's missed bugs changed, pinned after the round: every round-64 bug runs them too."""
+FRESH64 = pinned_after(FRESH64, ROUND64_TESTS)
+
+
 ALL = (
     BUGS
     + FRESH
@@ -8283,6 +8532,8 @@ ALL = (
     + FRESH60
     + FRESH61
     + FRESH62
+    + FRESH63
+    + FRESH64
 )
 
 
