@@ -367,15 +367,15 @@ class ObservedSolver:
                 t_start.append(len(t_next))
             pair_start.append(len(pair_action))
         n = len(order)
-        one = np.zeros(1, dtype=np.int64)
         chain = Dynamics(
             np.array(t_start, dtype=np.int64),
             np.array(t_next, dtype=np.int64),
             np.array(t_prob),
             np.array(t_tau),
-            one,
-            np.ones(1),
-            np.zeros(1),
+            # the re-draw after a success makes only the solver's rate, not read here
+            regen_next=np.zeros(1, dtype=np.int64),
+            regen_prob=np.ones(1),
+            regen_tau=np.zeros(1),
         )
         model = Model(
             StatePacker(world),
@@ -384,7 +384,7 @@ class ObservedSolver:
             np.array(pair_action, dtype=np.int64),
             np.array(terminal, dtype=bool),
             [chain],
-            1,
+            n_layouts=1,
         )
         return Solved(dict(zip(order, solve(model).values.tolist(), strict=True)))
 

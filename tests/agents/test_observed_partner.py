@@ -394,6 +394,24 @@ def test_a_solve_expands_only_the_states_new_to_it_and_those_that_read_a_counted
     assert state in readers
     assert expanded == len(readers) + len(second - first)
     assert expanded < len(second)
+    # A surprise at the answer to another move of the root: its readers and the new states
+    # are expanded, not those of the earlier key again (counted before the last solve).
+    other = next(a for a in world.feasible_indices(state, Agent.ROBOT) if a != wait)
+    mid_other = world.step(state, Agent.ROBOT, other).state
+    expected = LastFirst().distribution(world, mid_other, other)[0][0]
+    surprise = next(h for h in world.feasible_indices(mid_other, Agent.HUMAN) if h != expected)
+    partner.update(world, mid_other, other, surprise)
+    _, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
+    assert solved and solver.result is not None
+    third = set(solver.result.values)
+    readers = {
+        s
+        for s in second & third
+        if other in world.feasible_indices(s, Agent.ROBOT)
+        and world.table.successor(s, Agent.ROBOT, other)[0] == mid_other
+    }
+    assert state in readers
+    assert expanded == len(readers) + len(third - second)
 
 
 def test_a_new_base_member_expands_every_state_again() -> None:
@@ -413,3 +431,87 @@ def test_a_new_base_member_expands_every_state_again() -> None:
     assert helpful_partner is not solver.base
     _, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
     assert solved and solver.result is not None and expanded == solver.result.n_states
+
+
+def test_a_refused_solve_reports_the_states_it_expanded(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A model that grows past the limit is charged the expansions made before it was refused,
+    counted here by wrapping the one-step rule (each call is one state expanded), on a first
+    solve and on a second one after a surprise (the count is per solve, not per run)."""
+    import hg_marl.agents.observed_partner as module
+
+    calls: list[int] = []
+    real = module.expand
+
+    def counted(*args: Any) -> Any:
+        calls.append(1)
+        return real(*args)
+
+    monkeypatch.setattr(module, "expand", counted)
+    world = World("forced_coordination")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    relabel = Relabel(world)
+    state = world.initial_state(np.random.default_rng(0))
+    small = ObservedSolver(max_states=5)
+    q, expanded, solved = small.q_values(world, state, partner, 0, relabel)
+    assert (q, solved) == ({}, True) and expanded == len(calls) > 1
+    wait = world.n_actions(Agent.ROBOT) - 1
+    mid = world.step(state, Agent.ROBOT, wait).state
+    partner.update(world, mid, wait, world.n_actions(Agent.HUMAN) - 1)  # a surprise: tried again
+    before = len(calls)
+    q, expanded, solved = small.q_values(world, state, partner, 0, relabel)
+    assert (q, solved) == ({}, True) and expanded == len(calls) - before > 0
+
+
+def test_the_kept_expansions_are_dropped_once_they_reach_the_states_limit() -> None:
+    """``max_states`` kept expansions (here 1,000 of states no table reaches) are dropped before
+    the next solve, which then expands every state of its model; 999 are kept."""
+    world = World("forced_coordination")
+    relabel = Relabel(world)
+    state = world.initial_state(np.random.default_rng(0))
+    for kept, dropped in ((1000, True), (999, False)):
+        partner = ObservedPartner()
+        partner.base = LastFirst()
+        solver = ObservedSolver(max_states=1000)
+        solver.base = partner.base
+        dummy = State(where=(-1,) * 3, robot_at=0, offer_by=-1, offer_obj=-1)
+        filler = {dummy._replace(robot_at=k): [] for k in range(kept)}
+        solver.graph = dict(filler)
+        _, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
+        assert solved and solver.result is not None
+        assert expanded == solver.result.n_states
+        assert (not set(filler) & set(solver.graph)) is dropped
+
+
+def test_a_model_over_a_large_limit_is_refused_while_it_is_built() -> None:
+    """Against a partner answering uniformly (no base), a table of ``asymmetric_advantages``
+    reaches thousands of states: with a limit of 300 the solve is refused once its model holds
+    300 states (at most 300 expanded, no move)."""
+    world = World("asymmetric_advantages")
+    partner = ObservedPartner()
+    state = world.initial_state(np.random.default_rng(0))
+    solver = ObservedSolver(max_states=300)
+    q, expanded, solved = solver.q_values(world, state, partner, 0, Relabel(world))
+    assert (q, solved, solver.solves) == ({}, True, 0) and 0 < expanded <= 300
+
+
+def test_expansions_are_kept_when_nothing_was_counted_since_the_last_solve() -> None:
+    """An answer counted before a solve is used by that solve; a solve from another table with
+    nothing counted since expands that table's states only and keeps the first table's."""
+    world = World("paper2015")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    relabel = Relabel(world)
+    first, second = (world.initial_state(np.random.default_rng(seed)) for seed in (0, 1))
+    wait = world.n_actions(Agent.ROBOT) - 1
+    mid = world.step(first, Agent.ROBOT, wait).state
+    partner.update(world, mid, wait, world.n_actions(Agent.HUMAN) - 1)
+    solver = ObservedSolver()
+    solver.q_values(world, first, partner, 0, relabel)
+    assert solver.result is not None
+    kept = set(solver.result.values)
+    assert second not in kept
+    _, expanded, solved = solver.q_values(world, second, partner, 0, relabel)
+    assert solved and solver.result is not None
+    assert expanded == len(set(solver.result.values) - kept)
+    assert kept <= set(solver.graph)
