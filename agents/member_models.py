@@ -29,7 +29,7 @@ from __future__ import annotations
 
 from collections import OrderedDict
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.models.cache import cache_folder, result_key
@@ -116,18 +116,33 @@ class MemberModels:
         return model
 
 
-def backup(world: World, state: State, result: OracleResult, model: PythonModel, relabel: Relabel) -> dict[int, float]:
-    """Per feasible robot action, the expected seconds to the next success: the one-step backup
-    of ``result``'s values through ``model``'s replies (the oracle's own transition rule)."""
+Replies = list[tuple[State, float, float]]
+"""(next robot-turn state, probability, cycle seconds) per answer of the partner."""
+
+
+class Values(Protocol):
+    """What a one-step backup reads: the expected seconds to the next success of a state."""
+
+    def value_at(self, world: World, state: State, relabel: Relabel | None = None) -> float: ...
+
+
+def expand(world: World, state: State, model: PythonModel) -> list[tuple[int, Replies | None]]:
+    """Per feasible robot action at ``state``: the partner's replies through ``model``, or None
+    for the completing wait (the oracle's terminal pair). The oracle's own transition rule,
+    one step: :func:`backup` reads it, and the observed solver keeps it per state."""
     table = world.table
-    out: dict[int, float] = {}
+    out: list[tuple[int, Replies | None]] = []
     for a in world.feasible_indices(state, Agent.ROBOT):  # feasible: each succeeds, and the partner sees it
         mid, _, duration = table.successor(state, Agent.ROBOT, a)
-        if table.solves(state, Agent.ROBOT, a):
-            out[a] = 0.0  # the completing wait: the oracle's terminal pair
-            continue
-        q = 0.0
-        for nxt, p, tau in model.replies(mid, duration, a):
-            q += p * (tau + result.value_at(world, nxt, relabel))
-        out[a] = q
+        out.append((a, None if table.solves(state, Agent.ROBOT, a) else model.replies(mid, duration, a)))
+    return out
+
+
+def backup(world: World, state: State, result: Values, model: PythonModel, relabel: Relabel) -> dict[int, float]:
+    """Per feasible robot action, the expected seconds to the next success: the one-step backup
+    of ``result``'s values through ``model``'s replies (:func:`expand`)."""
+    out: dict[int, float] = {}
+    for a, replies in expand(world, state, model):
+        values = (p * (tau + result.value_at(world, nxt, relabel)) for nxt, p, tau in replies or ())
+        out[a] = 0.0 if replies is None else sum(values)
     return out

@@ -41,13 +41,18 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
+
 from hg_marl.agents.humans.base import Distribution, StationaryHuman
-from hg_marl.agents.member_models import backup
+from hg_marl.agents.member_models import Replies, backup, expand
 from hg_marl.agents.models.budget import OverBudget
+from hg_marl.agents.models.builder import Dynamics, Model
+from hg_marl.agents.models.packing import StatePacker
 from hg_marl.agents.models.python_model import PythonModel
-from hg_marl.agents.oracle import OracleResult, oracle_rate
+from hg_marl.agents.models.solve import solve
 from hg_marl.agents.planner.space import Relabel
 from hg_marl.core import Agent, State, World
 
@@ -111,6 +116,10 @@ class ObservedPartner:
         """Surprises so far: the model changed where it mattered (see the module docstring)."""
         self.surprised: dict[Key, int] = {}
         """Per key, the :attr:`version` its last surprise made."""
+        self.observations = 0
+        self.touched: dict[Key, int] = {}
+        """Per key, the number of :attr:`observations` when it was last counted (its answers
+        may have changed then: the solver expands again the states that read it)."""
         self.repeats = 0.0
         self.contradictions = 0.0
         """Answers at keys answered before, and those of them most earlier answers there
@@ -149,6 +158,8 @@ class ObservedPartner:
         for a in counts:
             counts[a] *= self.forget
         counts[human_action] = counts.get(human_action, 0.0) + 1.0
+        self.observations += 1
+        self.touched[(state, robot_action)] = self.observations
 
     def snapshot(self) -> ObservedSnapshot:
         """The model as it stands, frozen: a stationary human the oracle can solve.
@@ -198,13 +209,38 @@ member's own model before building: the small bundled tables' members have hundr
 states, ``roboergosum``'s hundreds of thousands (there the robot plans as the planner does)."""
 
 
+@dataclass(frozen=True)
+class Solved:
+    """The observed model's optimal expected seconds to the next success, by state (one solve)."""
+
+    values: dict[State, float]
+
+    @property
+    def n_states(self) -> int:
+        return len(self.values)
+
+    def value_at(self, world: World, state: State, relabel: Relabel | None = None) -> float:
+        """Optimal expected seconds to the next success from ``state`` (inf outside the solve)."""
+        return self.values.get(state, math.inf)
+
+
 class ObservedSolver:
     """The exact best response to an :class:`ObservedPartner`, solved again only when it must be.
 
     - **From the table in front of the robot.** A solve holds the states reachable from the
-      current state until the task is solved (``oracle_rate(..., roots=(state,))``): the
-      value of a state, the expected seconds to the next success, does not depend on the
-      tables drawn after it, and one table's states are fewer than every layout's.
+      current state until the task is solved: the value of a state, the expected seconds to
+      the next success, does not depend on the tables drawn after it, and one table's
+      states are fewer than every layout's. It is the oracle's model and solver
+      (:func:`~hg_marl.agents.models.solve.solve`, the same values as
+      ``oracle_rate(snapshot, failed_actions=False, roots=(state,))``).
+    - **Expanded once, kept across solves.** A state's expansion (per feasible robot move,
+      the partner's answers and where they lead: :func:`~hg_marl.agents.member_models.expand`)
+      is kept until the partner's answers at one of the keys it read are counted again
+      (:attr:`ObservedPartner.touched`) or the base member changes; a solve expands only the
+      states new to it and those, and sweeps the values over the kept expansions. A solve is
+      charged as a planner call of one node per state it expands: the values are swept over
+      expansions already made, as the planner's arithmetic over its expanded nodes is not
+      charged apart from them.
     - **Kept by table.** Each solution is kept under the table it was solved from and the
       :attr:`~ObservedPartner.version` it was solved at, so a table dealt again under the
       same model (no surprise since) is not solved again.
@@ -223,57 +259,134 @@ class ObservedSolver:
         self.reset()
 
     def reset(self) -> None:
-        """Forget the solution (a new run)."""
+        """Forget the solution and the expansions (a new run)."""
         self.key = -1
         """The partner's :attr:`~ObservedPartner.version` the solution was solved at (-1: none yet)."""
-        self.result: OracleResult | None = None
-        self.tables: dict[State, tuple[int, OracleResult | None]] = {}
+        self.result: Solved | None = None
+        self.tables: dict[State, tuple[int, Solved | None]] = {}
         """Solutions by the table they were solved from, with the version each was solved at
         (reused at that version only; None: over the limit)."""
         self.solves = 0
         """Models solved in this run."""
+        self.expanded = 0
+        """States expanded in this run (what the solves are charged)."""
+        self.graph: dict[State, list[tuple[int, Replies | None]]] = {}
+        """The kept expansions, by robot-turn state."""
+        self.readers: dict[Key, set[State]] = {}
+        """Per partner key (mid-cycle state, robot move), the kept states whose expansion read it."""
+        self.synced = 0
+        """The partner's :attr:`~ObservedPartner.observations` the expansions are up to date with."""
+        self.base: Any = None
+        """The base member the expansions were made with."""
 
     def q_values(
         self, world: World, state: State, partner: ObservedPartner, base_states: int, relabel: Relabel
-    ) -> tuple[dict[int, float], int]:
-        """Expected seconds to the next success per feasible robot action, and the states solved for it.
+    ) -> tuple[dict[int, float], int, bool]:
+        """Expected seconds to the next success per feasible robot action, the states expanded
+        for it, and whether the model was solved for it.
 
-        Empty (and 0) when the base's own model has more than :attr:`max_states` states or the
-        observed model grows past them: the caller plans otherwise.
+        Empty (and 0, False) when the base's own model has more than :attr:`max_states`
+        states or the observed model grows past them: the caller plans otherwise.
         """
         if base_states > self.max_states or not partner.stationary():
-            return {}, 0
+            return {}, 0, False
         if self.result is None or state not in self.result.values:
             kept = self.tables.get(state)  # solved from this table (its root) before, under the same model?
             if kept is None or kept[0] != partner.version:
                 self.result = None
             elif kept[1] is None:
-                return {}, 0  # this table's model was over the limit under this very model
+                return {}, 0, False  # this table's model was over the limit under this very model
             else:
                 self.key, self.result = kept
-        solved = 0
+        expanded, solved = 0, False
         if self.result is None or (partner.version != self.key and self._stale(world, state, partner)):
-            self.key = partner.version
+            self.key, solved = partner.version, True
+            before = self.expanded
             try:
-                self.result = oracle_rate(
-                    world,
-                    partner.snapshot(),
-                    failed_actions=False,
-                    max_states=self.max_states,
-                    max_seconds=None,
-                    roots=(state,),
-                )
+                self.result = self._solve(world, state, partner)
             except OverBudget:
                 self.result = None
                 self.tables[state] = (self.key, None)  # not tried again until the model changes
-                return {}, 0
+                return {}, self.expanded - before, True
             if len(self.tables) >= MAX_TABLES:
                 self.tables.clear()
             self.tables[state] = (self.key, self.result)
             self.solves += 1
-            solved = self.result.n_states
+            expanded = self.expanded - before
         live = PythonModel(world, ObservedSnapshot(partner.counts, partner.base), True, max_states=0)  # replies only
-        return backup(world, state, self.result, live, relabel), solved
+        return backup(world, state, self.result, live, relabel), expanded, solved
+
+    def _sync(self, partner: ObservedPartner) -> None:
+        """Drop the expansions that read answers counted since the last solve (all, when the base changed)."""
+        if partner.base is not self.base or len(self.graph) >= self.max_states:
+            self.graph.clear()
+            self.readers.clear()
+            self.base = partner.base
+        else:
+            for key, seen in partner.touched.items():
+                if seen > self.synced:
+                    for s in self.readers.pop(key, ()):
+                        self.graph.pop(s, None)
+        self.synced = partner.observations
+
+    def _solve(self, world: World, root: State, partner: ObservedPartner) -> Solved:
+        """The observed model's values from ``root`` until a success (states expanded counted in :attr:`expanded`)."""
+        self._sync(partner)
+        live = PythonModel(world, ObservedSnapshot(partner.counts, partner.base), True, max_states=0)
+        ids, order = {root: 0}, [root]
+        pair_start, pair_action, terminal = [0], [], []
+        t_start: list[int] = [0]
+        t_next: list[int] = []
+        t_prob: list[float] = []
+        t_tau: list[float] = []
+        k = 0
+        while k < len(order):
+            state = order[k]
+            k += 1
+            options = self.graph.get(state)
+            if options is None:
+                options = self.graph[state] = expand(world, state, live)
+                self.expanded += 1
+                for a, replies in options:
+                    if replies is not None:
+                        mid = world.table.successor(state, Agent.ROBOT, a)[0]
+                        self.readers.setdefault((mid, a), set()).add(state)
+            for a, replies in options:
+                pair_action.append(a)
+                terminal.append(replies is None)
+                for nxt, p, tau in replies or ():
+                    j = ids.get(nxt)
+                    if j is None:
+                        if len(order) >= self.max_states:
+                            raise OverBudget(f"the observed model exceeds {self.max_states} states")
+                        j = ids[nxt] = len(order)
+                        order.append(nxt)
+                    t_next.append(j)
+                    t_prob.append(p)
+                    t_tau.append(tau)
+                t_start.append(len(t_next))
+            pair_start.append(len(pair_action))
+        n = len(order)
+        chain = Dynamics(
+            np.array(t_start, dtype=np.int64),
+            np.array(t_next, dtype=np.int64),
+            np.array(t_prob),
+            np.array(t_tau),
+            # the re-draw after a success makes only the solver's rate, not read here
+            regen_next=np.zeros(1, dtype=np.int64),
+            regen_prob=np.ones(1),
+            regen_tau=np.zeros(1),
+        )
+        model = Model(
+            StatePacker(world),
+            np.arange(n, dtype=np.int64),
+            np.array(pair_start, dtype=np.int64),
+            np.array(pair_action, dtype=np.int64),
+            np.array(terminal, dtype=bool),
+            [chain],
+            n_layouts=1,
+        )
+        return Solved(dict(zip(order, solve(model).values.tolist(), strict=True)))
 
     def _stale(self, world: World, state: State, partner: ObservedPartner) -> bool:
         """Whether the partner surprised the model, since the last solve, at an answer to a move of this state."""

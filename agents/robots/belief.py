@@ -455,9 +455,11 @@ class BeliefRobot(Robot):
         partner = self.posterior.learned
         assert isinstance(partner, ObservedPartner)
         best = int(np.argmax(weights))
-        q, solved = self._observed.q_values(world, state, partner, self.members.result(best).n_states, self._relabel)
+        q, expanded, solved = self._observed.q_values(
+            world, state, partner, self.members.result(best).n_states, self._relabel
+        )
         finite = {a: v for a, v in q.items() if not math.isinf(v)}
-        charge = self.cost.planner_cost(solved) if solved else 0.0
+        charge = self.cost.planner_cost(expanded) if solved else 0.0
         if not finite:
             return -1, charge  # too large to solve, or no move leads to a success: the planner drives
         action = min(finite, key=lambda a: (finite[a], a))

@@ -6,6 +6,8 @@ The robot-level expectations come from the oracle solved against the test's own 
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 import pytest
 
@@ -149,11 +151,11 @@ def test_the_solver_solves_again_only_after_a_surprise_at_the_state() -> None:
     solver = ObservedSolver()
     relabel = Relabel(world)
     state = world.initial_state(np.random.default_rng(0))
-    q, solved = solver.q_values(world, state, partner, 0, relabel)
-    assert solver.solves == 1 and solved > 0 and q
+    q, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
+    assert solver.solves == 1 and solved and expanded > 0 and q
     # No new answer: the same solution, nothing solved, the same values.
-    again, solved = solver.q_values(world, state, partner, 0, relabel)
-    assert (again, solved, solver.solves) == (q, 0, 1)
+    again, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
+    assert (again, expanded, solved, solver.solves) == (q, 0, False, 1)
     # An expected answer (the base's) to the robot's other move is no surprise: still no solve.
     wait = world.n_actions(Agent.ROBOT) - 1
     other = next(a for a in world.feasible_indices(state, Agent.ROBOT) if a != wait)
@@ -171,29 +173,30 @@ def test_the_solver_solves_again_only_after_a_surprise_at_the_state() -> None:
         world, far_mid, wait, next(h for h in world.feasible_indices(far_mid, Agent.HUMAN) if h != expected_far)
     )
     assert partner.version == 1
-    _, solved = solver.q_values(world, state, partner, 0, relabel)
-    assert (solver.solves, solved) == (1, 0)
+    _, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
+    assert (solver.solves, expanded, solved) == (1, 0, False)
     # A surprise at the robot's wait (the partner waits where the base acts) is solved for at once.
     mid = world.step(state, Agent.ROBOT, wait).state
     human_wait = world.n_actions(Agent.HUMAN) - 1
     assert mid != far_mid and LastFirst().distribution(world, mid, wait)[0][0] != human_wait
     partner.update(world, mid, wait, human_wait)
     assert partner.version == 2
-    _, solved = solver.q_values(world, state, partner, 0, relabel)
-    assert solver.solves == 2 and solved > 0
+    _, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
+    assert solver.solves == 2 and solved and expanded > 0
     # Solved without failed actions: where the partner waits after the robot's wait but the base
     # acts after a failed move (never seen), a failed move would "work" in the model; the
-    # solution plans only feasible moves, at every state of its model.
-    result = solver.result
-    assert result is not None
-    assert all(a in world.feasible_indices(s, Agent.ROBOT) for s, a in result.policy.items())
+    # model holds only feasible moves, at every state of it.
+    assert solver.result is not None and solver.graph
+    assert all([a for a, _ in options] == world.feasible_indices(s, Agent.ROBOT) for s, options in solver.graph.items())
     # The size limit: a base whose own model has 20,000 states is solved for, one more is not.
     assert ObservedSolver().max_states == 20_000
     assert solver.q_values(world, state, partner, 20_000, relabel)[0]
-    assert solver.q_values(world, state, partner, 20_001, relabel) == ({}, 0)
-    # A model that grows past the limit while it is built is refused the same way.
+    assert solver.q_values(world, state, partner, 20_001, relabel) == ({}, 0, False)
+    # A model that grows past the limit while it is built is refused the same way (the states
+    # expanded before it was refused are charged).
     small = ObservedSolver(max_states=5)
-    assert small.q_values(world, state, partner, 0, relabel) == ({}, 0) and small.solves == 0
+    q, expanded, solved = small.q_values(world, state, partner, 0, relabel)
+    assert (q, solved, small.solves) == ({}, True, 0) and 0 < expanded <= 5
 
 
 def test_the_exact_best_response_to_a_partner_no_member_explains() -> None:
@@ -211,20 +214,21 @@ def test_the_exact_best_response_to_a_partner_no_member_explains() -> None:
     assert reasons.str.startswith("no member explains the partner: the exact best response").any()
 
 
-def test_each_solve_is_charged_as_a_planner_call_of_one_node_per_state(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The clock pays for every solve (``planner_base + planner_per_node * states``, the cost
-    model's own constants), and the decisions that read a kept solution pay nothing."""
-    import hg_marl.agents.observed_partner as module
-
+def test_each_solve_is_charged_as_a_planner_call_of_one_node_per_state_expanded(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The clock pays for every solve (``planner_base + planner_per_node * states expanded``,
+    the cost model's own constants), and the decisions that read a kept solution pay nothing."""
     sizes: list[int] = []
-    real = module.oracle_rate
+    real = ObservedSolver._solve
 
-    def counted(*args: object, **kwargs: object) -> object:
-        result = real(*args, **kwargs)
-        sizes.append(result.n_states)
+    def counted(self: ObservedSolver, *args: Any) -> Any:
+        before = self.expanded
+        result = real(self, *args)
+        sizes.append(self.expanded - before)
         return result
 
-    monkeypatch.setattr(module, "oracle_rate", counted)
+    monkeypatch.setattr(ObservedSolver, "_solve", counted)
     robot = make_robot("belief", population=HARD, open_world="observed")
     log = run(robot, LastFirst(), RunConfig(scenario="forced_coordination", duration=300.0, seed=0)).log
     exact = log[log["reason"].astype(str).str.startswith("no member explains the partner: the exact")]
@@ -287,42 +291,227 @@ def test_a_table_dealt_again_under_the_same_model_is_not_solved_again() -> None:
     assert solver.result is not None and second not in solver.result.values
     solver.q_values(world, second, partner, 0, relabel)
     assert solver.solves == 2
-    q_first, solved = solver.q_values(world, first, partner, 0, relabel)
-    assert (solver.solves, solved) == (2, 0) and q_first
+    q_first, expanded, solved = solver.q_values(world, first, partner, 0, relabel)
+    assert (solver.solves, expanded, solved) == (2, 0, False) and q_first
     wait = world.n_actions(Agent.ROBOT) - 1
     mid = world.step(first, Agent.ROBOT, wait).state
     expected = LastFirst().distribution(world, mid, wait)[0][0]
     partner.update(world, mid, wait, next(h for h in world.feasible_indices(mid, Agent.HUMAN) if h != expected))
     assert partner.version == 1
-    _, solved = solver.q_values(world, second, partner, 0, relabel)
-    assert solver.solves == 3 and solved > 0
+    _, _, solved = solver.q_values(world, second, partner, 0, relabel)
+    assert solver.solves == 3 and solved
 
 
 def test_a_table_over_the_limit_is_not_tried_again_under_the_same_model(monkeypatch: pytest.MonkeyPatch) -> None:
     """An over-the-limit model is remembered by table and version: the next decision there asks
     no solve, and a surprise (a new model) tries again."""
-    import hg_marl.agents.observed_partner as module
-
     calls: list[int] = []
-    real = module.oracle_rate
+    real = ObservedSolver._solve
 
-    def counted(*args: object, **kwargs: object) -> object:
+    def counted(self: ObservedSolver, *args: Any) -> Any:
         calls.append(1)
-        return real(*args, **kwargs)
+        return real(self, *args)
 
-    monkeypatch.setattr(module, "oracle_rate", counted)
+    monkeypatch.setattr(ObservedSolver, "_solve", counted)
     world = World("forced_coordination")
     partner = ObservedPartner()
     partner.base = LastFirst()
     relabel = Relabel(world)
     state = world.initial_state(np.random.default_rng(0))
     small = ObservedSolver(max_states=5)
-    assert small.q_values(world, state, partner, 0, relabel) == ({}, 0)
-    assert small.q_values(world, state, partner, 0, relabel) == ({}, 0)
+    q, expanded, solved = small.q_values(world, state, partner, 0, relabel)
+    assert (q, solved) == ({}, True) and 0 < expanded <= 5
+    assert small.q_values(world, state, partner, 0, relabel) == ({}, 0, False)
     assert len(calls) == 1
     wait = world.n_actions(Agent.ROBOT) - 1
     mid = world.step(state, Agent.ROBOT, wait).state
     partner.update(world, mid, wait, world.n_actions(Agent.HUMAN) - 1)  # the base picks there: a surprise
     assert partner.version == 1
-    assert small.q_values(world, state, partner, 0, relabel) == ({}, 0)
+    assert small.q_values(world, state, partner, 0, relabel)[0] == {}
     assert len(calls) == 2
+
+
+@pytest.mark.parametrize("scenario", ["forced_coordination", "asymmetric_advantages"])
+def test_solves_over_kept_expansions_equal_the_oracle_solved_afresh(scenario: str) -> None:
+    """After a history of answers (random moves, random answers: surprises everywhere), every
+    solve over the kept expansions gives each of its states the value the oracle gives it,
+    solved afresh from the same root against a snapshot of the partner (an independent path:
+    the array builder and its own answer table)."""
+    world = World(scenario)
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    solver = ObservedSolver()
+    rng = np.random.default_rng(3)
+    relabel = Relabel(world)
+    state = world.initial_state(rng)
+    checked = 0
+    for _ in range(120):
+        _, _, solved = solver.q_values(world, state, partner, 0, relabel)
+        if solved:
+            assert solver.result is not None
+            ref = oracle_rate(
+                world, partner.snapshot(), failed_actions=False, max_seconds=None, roots=(state,), cache=False
+            )
+            for s, v in solver.result.values.items():
+                assert v == pytest.approx(ref.value_at(world, s), rel=1e-9, abs=1e-9)
+            checked += 1
+        a = int(rng.choice(world.feasible_indices(state, Agent.ROBOT)))
+        mid = world.step(state, Agent.ROBOT, a).state
+        h = int(rng.choice(world.feasible_indices(mid, Agent.HUMAN)))
+        partner.update(world, mid, a, h)
+        state = world.step(mid, Agent.HUMAN, h).state
+    assert checked >= 2 and solver.solves == checked
+
+
+def test_a_solve_expands_only_the_states_new_to_it_and_those_that_read_a_counted_answer() -> None:
+    """A surprise at the root's wait: the second solve expands the kept states that read that
+    key (worked out here from the rules: those whose wait leads to the same mid-cycle state)
+    and the states the first solve did not hold, nothing else."""
+    world = World("forced_coordination")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    relabel = Relabel(world)
+    state = world.initial_state(np.random.default_rng(0))
+    solver = ObservedSolver()
+    _, first_expanded, _ = solver.q_values(world, state, partner, 0, relabel)
+    assert solver.result is not None
+    first = set(solver.result.values)
+    assert first_expanded == len(first)  # nothing kept yet: every state expanded
+    wait = world.n_actions(Agent.ROBOT) - 1
+    mid = world.step(state, Agent.ROBOT, wait).state
+    partner.update(world, mid, wait, world.n_actions(Agent.HUMAN) - 1)  # the base picks there: a surprise
+    _, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
+    assert solved and solver.result is not None
+    second = set(solver.result.values)
+    readers = {
+        s
+        for s in first & second
+        if any(
+            world.table.successor(s, Agent.ROBOT, a)[0] == mid and a == wait
+            for a in world.feasible_indices(s, Agent.ROBOT)
+        )
+    }
+    assert state in readers
+    assert expanded == len(readers) + len(second - first)
+    assert expanded < len(second)
+    # A surprise at the answer to another move of the root: its readers and the new states
+    # are expanded, not those of the earlier key again (counted before the last solve).
+    other = next(a for a in world.feasible_indices(state, Agent.ROBOT) if a != wait)
+    mid_other = world.step(state, Agent.ROBOT, other).state
+    expected = LastFirst().distribution(world, mid_other, other)[0][0]
+    surprise = next(h for h in world.feasible_indices(mid_other, Agent.HUMAN) if h != expected)
+    partner.update(world, mid_other, other, surprise)
+    _, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
+    assert solved and solver.result is not None
+    third = set(solver.result.values)
+    readers = {
+        s
+        for s in second & third
+        if other in world.feasible_indices(s, Agent.ROBOT)
+        and world.table.successor(s, Agent.ROBOT, other)[0] == mid_other
+    }
+    assert state in readers
+    assert expanded == len(readers) + len(third - second)
+
+
+def test_a_new_base_member_expands_every_state_again() -> None:
+    """The base answers wherever the partner was never seen: a new base changes every such
+    answer, so the kept expansions are dropped and the next solve expands all its states."""
+    world = World("forced_coordination")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    relabel = Relabel(world)
+    state = world.initial_state(np.random.default_rng(0))
+    solver = ObservedSolver()
+    solver.q_values(world, state, partner, 0, relabel)
+    wait = world.n_actions(Agent.ROBOT) - 1
+    mid = world.step(state, Agent.ROBOT, wait).state
+    partner.update(world, mid, wait, world.n_actions(Agent.HUMAN) - 1)
+    partner.base = helpful_partner = LastFirst()  # another object: another member
+    assert helpful_partner is not solver.base
+    _, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
+    assert solved and solver.result is not None and expanded == solver.result.n_states
+
+
+def test_a_refused_solve_reports_the_states_it_expanded(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A model that grows past the limit is charged the expansions made before it was refused,
+    counted here by wrapping the one-step rule (each call is one state expanded), on a first
+    solve and on a second one after a surprise (the count is per solve, not per run)."""
+    import hg_marl.agents.observed_partner as module
+
+    calls: list[int] = []
+    real = module.expand
+
+    def counted(*args: Any) -> Any:
+        calls.append(1)
+        return real(*args)
+
+    monkeypatch.setattr(module, "expand", counted)
+    world = World("forced_coordination")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    relabel = Relabel(world)
+    state = world.initial_state(np.random.default_rng(0))
+    small = ObservedSolver(max_states=5)
+    q, expanded, solved = small.q_values(world, state, partner, 0, relabel)
+    assert (q, solved) == ({}, True) and expanded == len(calls) > 1
+    wait = world.n_actions(Agent.ROBOT) - 1
+    mid = world.step(state, Agent.ROBOT, wait).state
+    partner.update(world, mid, wait, world.n_actions(Agent.HUMAN) - 1)  # a surprise: tried again
+    before = len(calls)
+    q, expanded, solved = small.q_values(world, state, partner, 0, relabel)
+    assert (q, solved) == ({}, True) and expanded == len(calls) - before > 0
+
+
+def test_the_kept_expansions_are_dropped_once_they_reach_the_states_limit() -> None:
+    """``max_states`` kept expansions (here 1,000 of states no table reaches) are dropped before
+    the next solve, which then expands every state of its model; 999 are kept."""
+    world = World("forced_coordination")
+    relabel = Relabel(world)
+    state = world.initial_state(np.random.default_rng(0))
+    for kept, dropped in ((1000, True), (999, False)):
+        partner = ObservedPartner()
+        partner.base = LastFirst()
+        solver = ObservedSolver(max_states=1000)
+        solver.base = partner.base
+        dummy = State(where=(-1,) * 3, robot_at=0, offer_by=-1, offer_obj=-1)
+        filler = {dummy._replace(robot_at=k): [] for k in range(kept)}
+        solver.graph = dict(filler)
+        _, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
+        assert solved and solver.result is not None
+        assert expanded == solver.result.n_states
+        assert (not set(filler) & set(solver.graph)) is dropped
+
+
+def test_a_model_over_a_large_limit_is_refused_while_it_is_built() -> None:
+    """Against a partner answering uniformly (no base), a table of ``asymmetric_advantages``
+    reaches thousands of states: with a limit of 300 the solve is refused once its model holds
+    300 states (at most 300 expanded, no move)."""
+    world = World("asymmetric_advantages")
+    partner = ObservedPartner()
+    state = world.initial_state(np.random.default_rng(0))
+    solver = ObservedSolver(max_states=300)
+    q, expanded, solved = solver.q_values(world, state, partner, 0, Relabel(world))
+    assert (q, solved, solver.solves) == ({}, True, 0) and 0 < expanded <= 300
+
+
+def test_expansions_are_kept_when_nothing_was_counted_since_the_last_solve() -> None:
+    """An answer counted before a solve is used by that solve; a solve from another table with
+    nothing counted since expands that table's states only and keeps the first table's."""
+    world = World("paper2015")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    relabel = Relabel(world)
+    first, second = (world.initial_state(np.random.default_rng(seed)) for seed in (0, 1))
+    wait = world.n_actions(Agent.ROBOT) - 1
+    mid = world.step(first, Agent.ROBOT, wait).state
+    partner.update(world, mid, wait, world.n_actions(Agent.HUMAN) - 1)
+    solver = ObservedSolver()
+    solver.q_values(world, first, partner, 0, relabel)
+    assert solver.result is not None
+    kept = set(solver.result.values)
+    assert second not in kept
+    _, expanded, solved = solver.q_values(world, second, partner, 0, relabel)
+    assert solved and solver.result is not None
+    assert expanded == len(set(solver.result.values) - kept)
+    assert kept <= set(solver.graph)
