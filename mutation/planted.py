@@ -7241,8 +7241,8 @@ FRESH55: tuple[Bug, ...] = (
     Bug(
         "fresh55 member models: the partner's reply seconds left out of each move's expected seconds",
         "agents/member_models.py",
-        "q += p * (tau + result.value_at(world, nxt, relabel))",
-        "q += p * result.value_at(world, nxt, relabel)",
+        "values = (p * (tau + result.value_at(world, nxt, relabel)) for nxt, p, tau in replies or ())",
+        "values = (p * result.value_at(world, nxt, relabel) for nxt, p, tau in replies or ())",
         gate("member_models"),
     ),
     Bug(
@@ -8364,10 +8364,10 @@ FRESH64: tuple[Bug, ...] = (
         gate("limits"),
     ),
     Bug(
-        "fresh64 member models: the completing move scored its own seconds, not 0 (the finishing move looks slower)",
+        "fresh64 member models: the completing move scored through the partner's replies, not 0 (the finishing move looks slower)",
         "agents/member_models.py",
-        "out[a] = 0.0  # the completing wait",
-        "out[a] = duration  # the completing wait",
+        "out.append((a, None if table.solves(state, Agent.ROBOT, a) else model.replies(mid, duration, a)))",
+        "out.append((a, model.replies(mid, duration, a)))",
         gate("member_models"),
     ),
     Bug(
