@@ -8468,6 +8468,12 @@ ROUND64_TESTS = "tests/training/test_pinned_round64.py"
 FRESH64 = pinned_after(FRESH64, ROUND64_TESTS)
 
 
+FRESH65: tuple[Bug, ...] = ()
+"""Round 65 (placeholder)."""
+FRESH66: tuple[Bug, ...] = ()
+"""Round 66 (placeholder)."""
+
+
 ALL = (
     BUGS
     + FRESH
@@ -8534,6 +8540,8 @@ ALL = (
     + FRESH62
     + FRESH63
     + FRESH64
+    + FRESH65
+    + FRESH66
 )
 
 
