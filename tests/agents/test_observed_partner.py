@@ -45,6 +45,14 @@ class LastFirst(StationaryHuman):
         return deterministic(pick if pick >= 0 else wait)
 
 
+def _last_first_at_the_start() -> tuple[World, ObservedPartner, Relabel, State]:
+    """``forced_coordination``'s table of seed 0, and an observed partner over LastFirst that has seen nothing."""
+    world = World("forced_coordination")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    return world, partner, Relabel(world), world.initial_state(np.random.default_rng(0))
+
+
 def first_state(world: World) -> tuple[State, int, list[int]]:
     """The first table of seed 0, the robot's wait, and the human's feasible answers to it."""
     state = world.initial_state(np.random.default_rng(0))
@@ -264,11 +272,7 @@ def test_a_failed_robot_move_is_counted_as_the_partner_saw_it_failed() -> None:
 def test_the_kept_solutions_are_dropped_once_they_reach_256() -> None:
     """``MAX_TABLES`` = 256: a solve with 255 kept adds the 256th; with 256 kept, they are
     dropped first and the new one is the only one left."""
-    world = World("forced_coordination")
-    partner = ObservedPartner()
-    partner.base = LastFirst()
-    relabel = Relabel(world)
-    state = world.initial_state(np.random.default_rng(0))
+    world, partner, relabel, state = _last_first_at_the_start()
     for kept, after in ((255, 256), (256, 1)):
         solver = ObservedSolver()
         dummy = State(where=(-1,) * 3, robot_at=0, offer_by=-1, offer_obj=-1)
@@ -313,11 +317,7 @@ def test_a_table_over_the_limit_is_not_tried_again_under_the_same_model(monkeypa
         return real(self, *args)
 
     monkeypatch.setattr(ObservedSolver, "_solve", counted)
-    world = World("forced_coordination")
-    partner = ObservedPartner()
-    partner.base = LastFirst()
-    relabel = Relabel(world)
-    state = world.initial_state(np.random.default_rng(0))
+    world, partner, relabel, state = _last_first_at_the_start()
     small = ObservedSolver(max_states=5)
     q, expanded, solved = small.q_values(world, state, partner, 0, relabel)
     assert (q, solved) == ({}, True) and 0 < expanded <= 5
@@ -367,11 +367,7 @@ def test_a_solve_expands_only_the_states_new_to_it_and_those_that_read_a_counted
     """A surprise at the root's wait: the second solve expands the kept states that read that
     key (worked out here from the rules: those whose wait leads to the same mid-cycle state)
     and the states the first solve did not hold, nothing else."""
-    world = World("forced_coordination")
-    partner = ObservedPartner()
-    partner.base = LastFirst()
-    relabel = Relabel(world)
-    state = world.initial_state(np.random.default_rng(0))
+    world, partner, relabel, state = _last_first_at_the_start()
     solver = ObservedSolver()
     _, first_expanded, _ = solver.q_values(world, state, partner, 0, relabel)
     assert solver.result is not None
@@ -417,11 +413,7 @@ def test_a_solve_expands_only_the_states_new_to_it_and_those_that_read_a_counted
 def test_a_new_base_member_expands_every_state_again() -> None:
     """The base answers wherever the partner was never seen: a new base changes every such
     answer, so the kept expansions are dropped and the next solve expands all its states."""
-    world = World("forced_coordination")
-    partner = ObservedPartner()
-    partner.base = LastFirst()
-    relabel = Relabel(world)
-    state = world.initial_state(np.random.default_rng(0))
+    world, partner, relabel, state = _last_first_at_the_start()
     solver = ObservedSolver()
     solver.q_values(world, state, partner, 0, relabel)
     wait = world.n_actions(Agent.ROBOT) - 1
@@ -447,11 +439,7 @@ def test_a_refused_solve_reports_the_states_it_expanded(monkeypatch: pytest.Monk
         return real(*args)
 
     monkeypatch.setattr(module, "expand", counted)
-    world = World("forced_coordination")
-    partner = ObservedPartner()
-    partner.base = LastFirst()
-    relabel = Relabel(world)
-    state = world.initial_state(np.random.default_rng(0))
+    world, partner, relabel, state = _last_first_at_the_start()
     small = ObservedSolver(max_states=5)
     q, expanded, solved = small.q_values(world, state, partner, 0, relabel)
     assert (q, solved) == ({}, True) and expanded == len(calls) > 1
