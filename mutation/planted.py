@@ -132,8 +132,8 @@ FRESH = (
     Bug(
         "fresh guard: fires one turn late (> K)",
         "agents/progress.py",
-        "return self.unchanged >= self.after",
-        "return self.unchanged > self.after",
+        "return self.waiting or self.unchanged >= self.after",
+        "return self.waiting or self.unchanged > self.after",
         PROGRESS_TESTS,
     ),
     Bug(
@@ -275,8 +275,8 @@ FRESH2 = (
     Bug(
         "fresh2 equivariant: an action on object 0 not mapped back",
         "agents/models/equivariant.py",
-        "np.where(slot >= 0,",
-        "np.where(slot > 0,",
+        "np.where(named >= 0,",
+        "np.where(named > 0,",
         gate("model_equivariant"),
     ),
     Bug(
@@ -310,8 +310,8 @@ FRESH2 = (
     Bug(
         "fresh2 answers: budget read after the first CHECK_EVERY live answers, not before",
         "agents/models/answers.py",
-        "if budget is not None and i % CHECK_EVERY == 0:",
-        "if budget is not None and (i + 1) % CHECK_EVERY == 0:",
+        "if self.budget is not None and i % CHECK_EVERY == 0:",
+        "if self.budget is not None and (i + 1) % CHECK_EVERY == 0:",
         gate("model_answers"),
     ),
     Bug(
@@ -345,8 +345,8 @@ FRESH2 = (
     Bug(
         "fresh2 compiled robot: cache key without the stall rule's K",
         "agents/compiled_robot.py",
-        '"spec": spec, "K": stall_after}',
-        '"spec": spec}',
+        '"spec": spec,\n        "K": stall_after,\n',
+        '"spec": spec,\n',
         gate("compiled_robot"),
     ),
 )
@@ -364,10 +364,10 @@ FRESH3 = (
     ),
     Bug(
         "fresh3 answers: entries merged into a grown table read from the old entries' offsets",
-        "agents/models/answers.py",
-        "n_old + np.concatenate([[0], np.cumsum(sizes)[:-1]])",
-        "np.concatenate([[0], np.cumsum(sizes)[:-1]])",
-        gate("model_answers"),
+        "agents/models/keyed.py",
+        "first = self.n_entries + starts_of(sizes)[:-1]",
+        "first = starts_of(sizes)[:-1]",
+        gate("model_keyed", *gate("model_answers")),
     ),
     Bug(
         "fresh3 partners: an idle wait merged with the offer's probability, not the choice's",
@@ -471,8 +471,8 @@ FRESH4 = (
     Bug(
         "fresh4 equivariant: probabilities left in canonical order while the actions are re-sorted",
         "agents/models/equivariant.py",
-        "return size, back[order], self.probs[entry][order]",
-        "return size, back[order], self.probs[entry]",
+        'return size, back[order], entries["probs"][entry][order]',
+        'return size, back[order], entries["probs"][entry]',
         gate("model_equivariant"),
     ),
     Bug(
@@ -506,8 +506,8 @@ FRESH4 = (
     Bug(
         "fresh4 batch: a failed take keeps the partner's offer",
         "hg_marl/core/batch.py",
-        "lapse = (b.offer_by == 1 - agent) & ~(take_reply & ok)",
-        "lapse = (b.offer_by == 1 - agent) & ~take_reply",
+        "ended = b.offer_by == 1 - agent",
+        "ended = (b.offer_by == 1 - agent) & ((kind != Kind.TAKE) | ok)",
         gate("batch_rules"),
     ),
     Bug(
@@ -644,9 +644,9 @@ FRESH5 = (
         gate("store"),
     ),
     Bug(
-        "fresh5 oracle: the robot keeps its policy when reset on another scenario",
+        "fresh5 oracle: the robot keeps its policy when reset on another scenario (or other durations)",
         "agents/oracle.py",
-        "if self.result is None or self.result.scenario != world.scenario.name:",
+        "if self.result is None or self.result.scenario != world.scenario.name or self._solved[1] != table:",
         "if self.result is None:",
         gate("oracle"),
     ),
@@ -791,8 +791,8 @@ FRESH7 = (
     Bug(
         "fresh7 planner bound: a place on an occupied spot kept among the candidates",
         "agents/planner/space.py",
-        "if where[o] != hand or sig in seen or spot in where:",
-        "if where[o] != hand or sig in seen:",
+        "if sig in seen or spot in where:",
+        "if sig in seen:",
         gate("planner_bound"),
     ),
     Bug(
@@ -840,8 +840,8 @@ FRESH7 = (
     Bug(
         "fresh7 solve: a self-looping pair's cost not divided by its leaving probability",
         "agents/models/solve.py",
-        "return matrix, cost * scale, looping",
-        "return matrix, cost, looping",
+        "        cost = cost * scale\n",
+        "",
         gate("model_solve"),
     ),
     Bug(
@@ -854,15 +854,15 @@ FRESH7 = (
     Bug(
         "fresh7 equivariant: new canonical keys asked at the state of their rank, not their first row",
         "agents/models/equivariant.py",
-        "rows = first[new].tolist()",
-        "rows = new.tolist()",
+        "self._questions(first[new], canon, rep), check)",
+        "self._questions(new, canon, rep), check)",
         gate("model_equivariant"),
     ),
     Bug(
         "fresh7 partners: the robot-side bonus given to the objects the robot cannot reach",
         "agents/models/partners.py",
-        "bonus = np.where(side, h.robot_side, 0.0) + bonus_colour[o]",
-        "bonus = np.where(side, 0.0, h.robot_side) + bonus_colour[o]",
+        "bonus = np.where(side_of[rows, o], h.robot_side, 0.0) + bonus_colour[o]",
+        "bonus = np.where(side_of[rows, o], 0.0, h.robot_side) + bonus_colour[o]",
         gate("model_partners"),
     ),
     Bug(
@@ -1147,8 +1147,8 @@ FRESH10 = (
     Bug(
         "fresh10 budget: resident memory read from statm's total-size column, not its resident one",
         "agents/models/budget.py",
-        'return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")',
-        'return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")',
+        'own = int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")',
+        'own = int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")',
         gate("model_budget"),
     ),
     Bug(
@@ -1472,14 +1472,14 @@ FRESH13 = (
     Bug(
         "fresh13 forked: the workers left running after an error or refusal in a parallel map",
         "agents/models/forked.py",
-        "        except BaseException:\n            self.close()\n            raise\n",
+        "        except BaseException:\n            self.owner.close()\n            raise\n",
         "        except BaseException:\n            raise\n",
         gate("model_forked"),
     ),
     Bug(
         "fresh13 live: the parallel progress reports whole chunks, past the number of questions asked",
         "agents/models/live.py",
-        "lambda done: check(min(done * CHUNK, len(rows)), len(rows))",
+        "lambda done: check(ends[done], len(rows))",
         "lambda done: check(done * CHUNK, len(rows))",
         gate("model_live"),
     ),
@@ -1568,19 +1568,21 @@ FRESH13 = (
 # threshold, the fixed model kept by the partnering, and user-facing modules outside the mutation gate.
 FRESH14 = (
     Bug(
-        "fresh14 belief: clearability checkers keyed by the model's name (a learned model with other kinds: stale)",
-        "agents/robots/belief.py",
-        "        planner = self._checkers.get(model)\n"
-        "        if planner is None:\n"
-        "            if len(self._checkers) >= MAX_PLANNERS:\n"
-        "                self._checkers.pop(next(iter(self._checkers)))\n"
-        "            planner = self._checkers[model] = make_planner(",
-        "        planner = self._checkers.get(model.name)\n"
-        "        if planner is None:\n"
-        "            if len(self._checkers) >= MAX_PLANNERS:\n"
-        "                self._checkers.pop(next(iter(self._checkers)))\n"
-        "            planner = self._checkers[model.name] = make_planner(",
-        gate("belief"),
+        "fresh14 belief: clearability checkers (and the partner monitor's planners) keyed by the model's name "
+        "(a learned model with other kinds: stale)",
+        "agents/robots/partnering.py",
+        "    planner = planners.get(model)\n"
+        "    if planner is None:\n"
+        "        if len(planners) >= MAX_PLANNERS:\n"
+        "            planners.pop(next(iter(planners)))\n"
+        "        planner = planners[model] = make(model)\n",
+        '    key = getattr(model, "name", model)\n'
+        "    planner = planners.get(key)\n"
+        "    if planner is None:\n"
+        "        if len(planners) >= MAX_PLANNERS:\n"
+        "            planners.pop(next(iter(planners)))\n"
+        "        planner = planners[key] = make(model)\n",
+        gate("partnering", *gate("belief")),
     ),
     Bug(
         "fresh14 belief: the fallback model read from partnering.base (learned after a first spell), not .fixed",
@@ -1756,7 +1758,17 @@ FRESH15 = (
         "fresh15 belief: a refusal scored under the belief after it has moved on that refusal, not before",
         "agents/robots/belief.py",
         "            self._count_refusal(turn.world, step.state, seen, human_action)\n"
+        "            if isinstance(self.posterior.learned, ObservedPartner):\n"
+        "                # where the partner was never seen, it answers as the most probable member would\n"
+        "                post = self.posterior.posterior()\n"
+        "                best = max(range(len(self.member_specs)), key=lambda m: post[self.member_specs[m]])\n"
+        "                self.posterior.learned.base = self.posterior.humans[best]\n"
         "            self.posterior.observe(turn.world, step.state, seen, human_action)\n",
+        "            if isinstance(self.posterior.learned, ObservedPartner):\n"
+        "                # where the partner was never seen, it answers as the most probable member would\n"
+        "                post = self.posterior.posterior()\n"
+        "                best = max(range(len(self.member_specs)), key=lambda m: post[self.member_specs[m]])\n"
+        "                self.posterior.learned.base = self.posterior.humans[best]\n"
         "            self.posterior.observe(turn.world, step.state, seen, human_action)\n"
         "            self._count_refusal(turn.world, step.state, seen, human_action)\n",
         gate("belief"),
@@ -1907,8 +1919,8 @@ FRESH16 = (
     Bug(
         "fresh16 oracle command: --max-memory read as MiB, not GB (the default 4 refuses every model)",
         "training/commands/oracle.py",
-        "max_memory=int(max_memory * 2**30),",
-        "max_memory=int(max_memory * 2**20),",
+        "int(max_memory * 2**30)",
+        "int(max_memory * 2**20)",
         (
             "tests/agents/test_oracle.py",
             "tests/agents/test_oracle_symmetry.py",
@@ -2651,8 +2663,8 @@ FRESH20 = (
         "fresh20 live: in parallel, each chunk of questions leaves out its last question "
         "(answers fewer than asked with jobs > 1)",
         "agents/models/live.py",
-        "chunks = [list(rows[i : i + CHUNK]) for i in range(0, len(rows), CHUNK)]",
-        "chunks = [list(rows[i : i + CHUNK - 1]) for i in range(0, len(rows), CHUNK)]",
+        "[list(rows[a:b]) for a, b in spans]",
+        "[list(rows[a : b - 1]) for a, b in spans]",
         gate("model_live"),
     ),
     Bug(
@@ -3156,8 +3168,8 @@ FRESH24 = (
         "fresh24 live: in parallel, check is told the chunks done as the answers done (the budget is "
         "read a 32nd as far along; a refusal reports '3 of 4,000' answers)",
         "agents/models/live.py",
-        "lambda done: check(min(done * CHUNK, len(rows)), len(rows))",
-        "lambda done: check(min(done, len(rows)), len(rows))",
+        "lambda done: check(ends[done], len(rows))",
+        "lambda done: check(done, len(rows))",
         gate("model_live"),
     ),
     Bug(
@@ -3213,8 +3225,8 @@ FRESH24 = (
         "fresh24 builder: a partner who looks at the robot's action is asked with the plain key (no "
         "action seen) and one who does not with the seen key (mids index swapped)",
         "agents/models/builder.py",
-        "u, inv = unique_inverse(mids[0 if t.uses_robot_action else 1])",
-        "u, inv = unique_inverse(mids[1 if t.uses_robot_action else 0])",
+        "unique_inverse(mids[0 if uses else 1])",
+        "unique_inverse(mids[1 if uses else 0])",
         gate("model_builder"),
     ),
     Bug(
@@ -3275,8 +3287,8 @@ FRESH25 = (
         "fresh25 live: in parallel, a batch one question past a multiple of CHUNK loses its last question "
         "(the chunking range stops one row early)",
         "agents/models/live.py",
-        "for i in range(0, len(rows), CHUNK)]",
-        "for i in range(0, len(rows) - 1, CHUNK)]",
+        "for i in range(0, n, size)]",
+        "for i in range(0, n - 1, size)]",
         gate("model_live"),
     ),
     Bug(
@@ -3338,8 +3350,8 @@ FRESH25 = (
         "fresh25 chains: a pair with exactly one transition leaving the alive set is not counted as leaking, so "
         "certain_states keeps states that may reach a dead end (finite values where they are infinite)",
         "agents/models/chains.py",
-        "leaks = np.bincount(t_pair, weights=~alive[chain.t_next], minlength=n_pairs) > 0",
-        "leaks = np.bincount(t_pair, weights=~alive[chain.t_next], minlength=n_pairs) > 1",
+        "weights=~alive[chain.t_next], minlength=n_pairs) > 0)",
+        "weights=~alive[chain.t_next], minlength=n_pairs) > 1)",
         gate("model_chains"),
     ),
     Bug(
@@ -3730,22 +3742,22 @@ FRESH29 = (
     Bug(
         "fresh29 exact sums: fields wider than 64 bits decoded without their mask (the higher fields added in)",
         "agents/planner/exactsum.py",
-        "return tuple([float((total >> s) & mask) * scale for s in self.shifts])",
-        "return tuple([float(total >> s) * scale for s in self.shifts])",
+        "ldexp(float((total >> s) & mask), exp)",
+        "ldexp(float(total >> s), exp)",
         gate("planner_exactsum"),
     ),
     Bug(
         "fresh29 planner steps: a goto's key keeps the robot's old location (two gotos of one duration share a node)",
         "agents/planner/steps.py",
-        "key = (parent, a2, b) if codes is not None else key_of(s)",
-        "key = (parent, at, b) if codes is not None else key_of(s)",
+        "key = parent + 4 * a2 + b + 1 if codes is not None else key_of(s)",
+        "key = parent + 4 * at + b + 1 if codes is not None else key_of(s)",
         gate("planner_steps"),
     ),
     Bug(
         "fresh29 planner steps: a moved object's old key term read at its index, not at its place",
         "agents/planner/steps.py",
-        "key = (parent - row[where[o]] + row[x], at, b)",
-        "key = (parent - row[o] + row[x], at, b)",
+        "key = parent - row[where[o]] + row[x] + 4 * at + b + 1",
+        "key = parent - row[o] + row[x] + 4 * at + b + 1",
         gate("planner_steps"),
     ),
     Bug(
@@ -5031,8 +5043,10 @@ FRESH37 = (
     Bug(
         "fresh37 batch rules: the robot's wait rewarded once any object is in its bin, not every one",
         "hg_marl/core/batch.py",
-        "return self.done[np.arange(self.n_objects), b.where].all(axis=1)",
-        "return self.done[np.arange(self.n_objects), b.where].any(axis=1)",
+        "        for o in range(self.n_objects):\n"
+        "            rows = rows[self.done[o][where[rows, o]]]\n"
+        "        return rows\n",
+        "        return rows[self.done[np.arange(self.n_objects), where[rows]].any(axis=1)]\n",
         gate("batch_rules"),
     ),
     Bug(
@@ -8364,7 +8378,7 @@ FRESH64: tuple[Bug, ...] = (
         gate("limits"),
     ),
     Bug(
-        "fresh64 member models: the completing move scored through the partner's replies, not 0 (the finishing move looks slower)",
+        "fresh64 member models: the completing move scored through the partner's replies, not 0 (it looks slower)",
         "agents/member_models.py",
         "out.append((a, None if table.solves(state, Agent.ROBOT, a) else model.replies(mid, duration, a)))",
         "out.append((a, model.replies(mid, duration, a)))",
@@ -8468,10 +8482,261 @@ ROUND64_TESTS = "tests/training/test_pinned_round64.py"
 FRESH64 = pinned_after(FRESH64, ROUND64_TESTS)
 
 
-FRESH65: tuple[Bug, ...] = ()
-"""Round 65 (placeholder)."""
-FRESH66: tuple[Bug, ...] = ()
-"""Round 66 (placeholder)."""
+FRESH65: tuple[Bug, ...] = (
+    Bug(
+        "fresh65 hybrid robot: a consult whose planner failed is logged as the planner not consulted",
+        "agents/robots/hybrid.py",
+        "planner_consulted=prop is not None,",
+        "planner_consulted=prop is not None and prop.success,",
+        gate("hybrid_robot"),
+    ),
+    Bug(
+        "fresh65 noisy: the softmax multiplies by the temperature (a hotter human is less random, a cooler one more)",
+        "agents/humans/noisy.py",
+        "math.exp(-(c - best) / self.temperature)",
+        "math.exp(-(c - best) * self.temperature)",
+        gate("noisy"),
+    ),
+    Bug(
+        "fresh65 planner main: a two-cycle plan from the human's turn says the robot waits next (intent's off-by-one)",
+        "agents/planner/planner.py",
+        "(cycles[1][0] if len(cycles) > 1 else self._wait[0])",
+        "(cycles[1][0] if len(cycles) > 2 else self._wait[0])",
+        gate("planner_main"),
+    ),
+    Bug(
+        "fresh65 planner plan: a human's give is linked to a take in its own cycle (no human-to-robot handover link)",
+        "agents/planner/plan.py",
+        "cycle = s.cycle if giver is Agent.ROBOT else s.cycle + 1",
+        "cycle = s.cycle if giver is Agent.ROBOT else s.cycle",
+        gate("planner_plan"),
+    ),
+    Bug(
+        "fresh65 planner robot: a failed plan not told to the partner monitor (the model never revised on failures)",
+        "agents/robots/planner.py",
+        "self.partnering.planned(prop.success)",
+        "self.partnering.planned(True)",
+        gate("planner_robot"),
+    ),
+    Bug(
+        "fresh65 population: a spread value that is text or nan accepted (not refused as a finite number)",
+        "agents/humans/population.py",
+        'k in ("selected", "random") and _finite(v) for k, v in values.items()',
+        'k in ("selected", "random") for k, v in values.items()',
+        gate("population"),
+    ),
+    Bug(
+        "fresh65 preference: a pick to place the object on the same side is progress (objects shuffled)",
+        "agents/humans/preference.py",
+        "(t2 == origin or robot_reaches[t2] == from_robot_side)",
+        "(t2 == origin)",
+        gate("preference"),
+    ),
+    Bug(
+        "fresh65 regret: bootstrap_ci accepts a nan value (a nan interval, not a refusal)",
+        "training/regret.py",
+        "if x.size == 0 or not np.isfinite(x).all():",
+        "if x.size == 0:",
+        gate("regret"),
+    ),
+    Bug(
+        "fresh65 robot base: the stall move never draws the last feasible move (and fails with one move)",
+        "agents/robots/base.py",
+        "moves[int(rng.integers(len(moves)))]",
+        "moves[int(rng.integers(len(moves) - 1))]",
+        gate("robot_base"),
+    ),
+    Bug(
+        "fresh65 rule table: the human's wait on a clean table counts as completing the task",
+        "hg_marl/core/table.py",
+        "return agent == Agent.ROBOT and index == self.wait[agent] and self.is_clean(state.where)",
+        "return index == self.wait[agent] and self.is_clean(state.where)",
+        gate("rule_table"),
+    ),
+    Bug(
+        "fresh65 scenario loader: a missing .toml path not refused as an unknown scenario (an OS error instead)",
+        "hg_marl/core/scenario.py",
+        'if Path(text).suffix != ".toml" or not Path(text).is_file():',
+        'if Path(text).suffix != ".toml" and not Path(text).is_file():',
+        gate("scenario_loader"),
+    ),
+    Bug(
+        "fresh65 spec parser: a NaN number parameter accepted (only infinities refused)",
+        "hg_marl/core/spec.py",
+        "if isinstance(value, float) and not math.isfinite(value):\n"
+        '            raise SpecError(f"{what}: expected a finite number, got',
+        "if isinstance(value, float) and math.isinf(value):\n"
+        '            raise SpecError(f"{what}: expected a finite number, got',
+        gate("spec_parser"),
+    ),
+    Bug(
+        "fresh65 trace: a trace header with seed 0 refused",
+        "agents/humans/trace.py",
+        "not 0 <= seed < 2**63",
+        "not 0 < seed < 2**63",
+        gate("trace"),
+    ),
+    Bug(
+        "fresh65 adaptation: a run that keeps pace from the switch (recovers in 0 s) counted as never recovered",
+        "training/adaptation.py",
+        "reached = [r for r in recover if r is not None]",
+        "reached = [r for r in recover if r]",
+        gate("adaptation"),
+    ),
+    Bug(
+        "fresh65 aggregate: the intervals are 90% ones, not the 95% the report states",
+        "training/aggregate.py",
+        "np.percentile(values, [2.5, 97.5], axis=0)",
+        "np.percentile(values, [5.0, 95.0], axis=0)",
+        gate("aggregate"),
+    ),
+    Bug(
+        "fresh65 batched: reset() leaves a table that ended marked for autoreset (its next step ignored)",
+        "hg_marl/envs/batched.py",
+        "        self._autoreset[:] = False\n",
+        "",
+        gate("batched"),
+    ),
+)
+"""Round 65, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 56-57, each bug run against its module's gate tests
+from modules.toml: the hybrid, planner and base robots, the noisy and preference humans, the planner and
+its plans, the populations, the regret metrics, the rule table, the scenario loader, the spec parser,
+the traces, the adaptation summary, the aggregates and the batched environment. The planner's bug (a
+two-cycle plan from the human's turn read as the robot waiting next) is equivalent: a plan's last cycle
+is always the robot's completing wait, so the second of two cycles' robot action is that wait anyway."""
+ROUND65_TESTS = "tests/training/test_pinned_round65.py"
+"""The values round 65's missed bugs changed, pinned after the round: every round-65 bug runs them too."""
+FRESH65 = pinned_after(FRESH65, ROUND65_TESTS)
+FRESH66: tuple[Bug, ...] = (
+    Bug(
+        "fresh66 compiled robot: a state keyed after every compiled key crashes (IndexError), not planned live",
+        "agents/compiled_robot.py",
+        "idx = np.minimum(np.searchsorted(self.keys, keys), max(len(self.keys) - 1, 0))",
+        "idx = np.minimum(np.searchsorted(self.keys, keys), max(len(self.keys), 0))",
+        gate("compiled_robot"),
+    ),
+    Bug(
+        "fresh66 family out: a historied partner's p_idle and work chance swapped (p_idle=0.1 idles 90% of its turns)",
+        "agents/humans/family_out.py",
+        "index = sample([(index, 1.0 - self.p_idle), (wait, self.p_idle)], self.rng)",
+        "index = sample([(index, self.p_idle), (wait, 1.0 - self.p_idle)], self.rng)",
+        gate("family_out"),
+    ),
+    Bug(
+        "fresh66 headroom report: headroom.json's assumed rows list the true partners (the cooperative row missing)",
+        "training/headroom.py",
+        '"assumed": list(result.assumed),',
+        '"assumed": list(result.true),',
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh66 adversarial human: steals the first shared object, not one the robot reaches from where it stands",
+        "agents/humans/adversarial.py",
+        "stealable.sort(key=lambda o: not world.spot_reachable(state, Agent.ROBOT, state.where[o]))",
+        "stealable.sort(key=lambda o: not world.spot_reachable(state, Agent.HUMAN, state.where[o]))",
+        gate("human_adversarial"),
+    ),
+    Bug(
+        "fresh66 human base: p_idle=0 adds a zero-probability wait to the distribution (a random draw each turn)",
+        "agents/humans/base.py",
+        "    if p_idle <= 0.0:\n        return dist\n",
+        "    if p_idle < 0.0:\n        return dist\n",
+        gate("human_base"),
+    ),
+    Bug(
+        "fresh66 cooperative human: moved to another world it keeps planning with the first world's planner",
+        "agents/humans/cooperative.py",
+        "if self._planner is None or self._planner_world is not world:",
+        "if self._planner is None:",
+        gate("human_cooperative"),
+    ),
+    Bug(
+        "fresh66 no handover human: a p_idle outside [0, 1] accepted (no refusal)",
+        "agents/humans/no_handover.py",
+        "self.p_idle = check_p_idle(p_idle)",
+        "self.p_idle = float(p_idle)",
+        gate("human_no_handover"),
+    ),
+    Bug(
+        "fresh66 replay human: a trace recorded in the robot seat refused as not matching the scenario's actions",
+        "agents/humans/replay.py",
+        'if list(header["action_names"]) != list(world.action_names[agent]):',
+        'if list(header["action_names"]) != list(world.action_names[Agent.HUMAN]):',
+        gate("human_replay"),
+    ),
+    Bug(
+        "fresh66 partner model: the learned partner's planner model keeps its refused kinds (handovers still planned)",
+        "agents/partner_model.py",
+        'return RestrictedHuman("learned", HUMAN_KINDS - self.refused_kinds())',
+        'return RestrictedHuman("learned", HUMAN_KINDS)',
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh66 population gen: places onto shared spots counted as place_keep and kept ones as place_shared",
+        "training/population_gen.py",
+        'return "place_shared" if shared[spot] else "place_keep"',
+        'return "place_keep" if shared[spot] else "place_shared"',
+        gate("population_gen"),
+    ),
+    Bug(
+        "fresh66 report: the robots x humans 'mean score' table (report.md, crossplay.png) holds medians",
+        "training/report.py",
+        'aggfunc="mean"',
+        'aggfunc="median"',
+        gate("report"),
+    ),
+    Bug(
+        "fresh66 stalls: the stretch from a run's last task to its end not counted (a robot that stops: no stall)",
+        "training/stalls.py",
+        "marks = [*sorted(marks), float(duration)]",
+        "marks = sorted(marks)",
+        gate("stalls"),
+    ),
+    Bug(
+        "fresh66 switching: the schedule starts with member B (B, A, B, ...), not A",
+        "training/switching.py",
+        "return [names[k % 2] for k in range(changes + 1)], at",
+        "return [names[(k + 1) % 2] for k in range(changes + 1)], at",
+        gate("switching"),
+    ),
+    Bug(
+        "fresh66 array partners: planner plus other robots in the human's seat all compiled as the planner",
+        "agents/array_partners.py",
+        "if all(isinstance(s, str) for s in specs) and len(set(specs)) == 1 and specs[0] in COMPILABLE:",
+        "if all(isinstance(s, str) for s in specs) and specs[0] in COMPILABLE:",
+        gate("array_partners"),
+    ),
+    Bug(
+        "fresh66 evaluate: a cell where no robot solved a task gets a best-robot reference of 0 (not 'none')",
+        "training/evaluate.py",
+        "if len(means) and means.max() > 0:",
+        "if len(means) and means.max() >= 0:",
+        gate("evaluate_study"),
+    ),
+    Bug(
+        "fresh66 lazy human: declared equivariant (the oracle merges relabelled states of a by-index rule)",
+        "agents/humans/lazy.py",
+        '    name = "lazy"\n',
+        '    name = "lazy"\n    equivariant = True\n',
+        gate("human_lazy"),
+    ),
+)
+"""Round 66, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 57-58, each bug run against its module's gate tests
+from modules.toml: the compiled robot, the family-out partners, the headroom report, the adversarial,
+base, cooperative, no-handover, replay and lazy humans, the learned partner model, the population
+generator, the study report, the stalls, the switching sweep, the array partners and the study's
+evaluation."""
+ROUND66_TESTS = "tests/training/test_pinned_round66.py"
+"""The values round 66's missed bugs changed, pinned after the round: every round-66 bug runs them too."""
+FRESH66 = pinned_after(FRESH66, ROUND66_TESTS)
+
+
+FRESH67: tuple[Bug, ...] = ()
+"""Round 67 (placeholder)."""
+FRESH68: tuple[Bug, ...] = ()
+"""Round 68 (placeholder)."""
 
 
 ALL = (
@@ -8542,6 +8807,8 @@ ALL = (
     + FRESH64
     + FRESH65
     + FRESH66
+    + FRESH67
+    + FRESH68
 )
 
 

@@ -78,6 +78,26 @@ def test_every_planted_bug_still_applies() -> None:
         assert all((ROOT / t).exists() for t in bug.tests), bug.name
 
 
+def test_every_fresh_bug_still_applies() -> None:
+    """Every bug of every round (``planted.ALL``) finds its code once and names tests that exist.
+
+    Only ``BUGS`` was checked before, and 27 bugs of the fresh rounds rotted unnoticed as the
+    code moved on (``python mutation/planted.py`` stops at the first such bug).
+    """
+    planted = load_planted()
+    names = [bug.name for bug in planted.ALL]
+    assert len(names) == len(set(names)), "mutation/planted.py: two bugs share a name"
+    retired = {name for name, _ in getattr(planted, "RETIRED", ())}
+    assert all(why for _, why in getattr(planted, "RETIRED", ()))
+    assert not retired & set(names), "mutation/planted.py: a retired bug is still planted"
+    for bug in planted.ALL:
+        text = (ROOT / bug.path).read_text()
+        assert text.count(bug.old) == 1, f"mutation/planted.py: {bug.name}: not found once in {bug.path}"
+        assert bug.old != bug.new, bug.name
+        for test in bug.tests:
+            assert (ROOT / test.split("::")[0]).exists(), f"mutation/planted.py: {bug.name}: {test}"
+
+
 def test_annotation_mutants_are_left_out_of_the_sample_but_code_mutants_are_not(mutation) -> None:  # type: ignore[no-untyped-def]
     equivalents = mutation.load_equivalents()
     op = "core/ReplaceBinaryOperator_BitOr_Sub"
