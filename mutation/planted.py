@@ -8733,10 +8733,252 @@ ROUND66_TESTS = "tests/training/test_pinned_round66.py"
 FRESH66 = pinned_after(FRESH66, ROUND66_TESTS)
 
 
-FRESH67: tuple[Bug, ...] = ()
-"""Round 67 (placeholder)."""
-FRESH68: tuple[Bug, ...] = ()
-"""Round 68 (placeholder)."""
+FRESH67: tuple[Bug, ...] = (
+    Bug(
+        "fresh67 random human: its model distribution (the oracle's, the exact models') is over the robot's actions",
+        "agents/humans/random_human.py",
+        "return self.distribution_for(world, state, Agent.HUMAN)",
+        "return self.distribution_for(world, state, Agent.ROBOT)",
+        gate("human_random"),
+    ),
+    Bug(
+        "fresh67 meta base: a fractional count accepted (min_visits=2.5 runs as 2 instead of a refusal)",
+        "agents/meta/base.py",
+        "or value < 0 or int(value) != value:",
+        "or value < 0:",
+        gate("meta_base"),
+    ),
+    Bug(
+        "fresh67 coin: the coin criterion registered as 'coin' (the paper's 'random' criterion unknown)",
+        "agents/meta/coin.py",
+        '    name = "random"\n',
+        '    name = "coin"\n',
+        gate("meta_coin"),
+    ),
+    Bug(
+        "fresh67 paper experiment: 'amplitude rises earlier with the mix' fails when the habit's never rises",
+        "training/paper.py",
+        "(rise_habit is None or rise_mix < rise_habit)",
+        "(rise_habit is not None and rise_mix < rise_habit)",
+        gate("paper_experiment"),
+    ),
+    Bug(
+        "fresh67 partnering: the robot's own last action read as the human's (monitor and posterior misled)",
+        "agents/robots/partnering.py",
+        "human_action = turn.last_actions[1]",
+        "human_action = turn.last_actions[0]",
+        gate("partnering"),
+    ),
+    Bug(
+        "fresh67 planner domain: human alone needs the pick too (an object a non-picking human holds: no plan)",
+        "agents/planner/domain.py",
+        "if not d.bin_human[o] or not d.human_can({Kind.THROW}):",
+        "if not d.bin_human[o] or not d.human_can({Kind.PICK, Kind.THROW}):",
+        gate("planner_domain"),
+    ),
+    Bug(
+        "fresh67 expectimax: the human's waits priced as its activity and its actions as idle (expected terms wrong)",
+        "agents/planner/expectimax.py",
+        "o.duration, ah != wait_h, hand_h",
+        "o.duration, ah == wait_h, hand_h",
+        gate("planner_expectimax"),
+    ),
+    Bug(
+        "fresh67 half-step search: a plan from the robot's turn reports its first robot action as -1",
+        "agents/planner/halfstep.py",
+        "ar = nodes[h][2] if nodes[h][1] >= 0 else -1",
+        "ar = nodes[h][2] if nodes[h][1] > 0 else -1",
+        gate("planner_halfstep"),
+    ),
+    Bug(
+        "fresh67 human models: an idle-prone model idles with 1 - p_idle and acts with p_idle",
+        "agents/planner/models.py",
+        "return ((self.p_idle, (wait,)), (1.0 - self.p_idle, allowed))",
+        "return ((1.0 - self.p_idle, (wait,)), (self.p_idle, allowed))",
+        gate("planner_models"),
+    ),
+    Bug(
+        "fresh67 reproduce: the paper's runs ignore the scenario (run on paper2015 whatever is asked)",
+        "training/reproduce.py",
+        "duration=config.duration, scenario=config.scenario, further",
+        "duration=config.duration, further",
+        gate("reproduce_driver"),
+    ),
+    Bug(
+        "fresh67 study files: a repeated seed in a seeds list accepted (seeds = [0, 0] runs seed 0 twice)",
+        "training/study.py",
+        "if len(set(seeds)) != len(seeds) or not seeds:",
+        "if not seeds:",
+        gate("study_files"),
+    ),
+    Bug(
+        "fresh67 views: the 'flat' observation puts the action mask before the facts",
+        "agents/views.py",
+        'np.concatenate([raw["observation"], raw["action_mask"]])',
+        'np.concatenate([raw["action_mask"], raw["observation"]])',
+        gate("views"),
+    ),
+    Bug(
+        "fresh67 homogenize: every agent gets the first agent's one-hot id (the seats cannot be told apart)",
+        "hg_marl/wrappers/homogenize.py",
+        "np.eye(len(agents), dtype=self.dtype)[i]",
+        "np.eye(len(agents), dtype=self.dtype)[0]",
+        gate("wrapper_homogenize"),
+    ),
+    Bug(
+        "fresh67 adapters: a scripted seat's mask allows every action (the actor's decision not shown)",
+        "agents/adapters.py",
+        'mask = np.zeros_like(np.asarray(raw["action_mask"]))',
+        'mask = np.ones_like(np.asarray(raw["action_mask"]))',
+        gate("adapters"),
+    ),
+    Bug(
+        "fresh67 convert: a learned human's policy.json ignored (its zip converted for the robot seat)",
+        "training/baselines/convert.py",
+        'data.get("format") in ("hg_marl.sb3", "hg_marl.policy")',
+        'data.get("format") == "hg_marl.sb3"',
+        gate("baselines_convert"),
+    ),
+    Bug(
+        "fresh67 baselines evaluation: runner_rate samples the model's actions by default (not deterministic)",
+        "training/baselines/evaluation.py",
+        "deterministic: bool = True,",
+        "deterministic: bool = False,",
+        gate("baselines_evaluation"),
+    ),
+)
+"""Round 67, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 58-59, each bug run against its module's gate tests
+from modules.toml: the random human, the criteria's base and coin, the paper experiment, the partnering,
+the planner's domain, expectimax, half-step search and human models, the reproduce driver, the study
+files, the views, the homogenize wrapper, the scripted-seat adapters and the SB3 baselines' conversion
+and evaluation."""
+ROUND67_TESTS = "tests/training/test_pinned_round67.py"
+"""The values round 67's missed bugs changed, pinned after the round: every round-67 bug runs them too."""
+FRESH67 = pinned_after(FRESH67, ROUND67_TESTS)
+FRESH68: tuple[Bug, ...] = (
+    Bug(
+        "fresh68 hyperparams: an override's key keeps its spaces ('n_envs = 4' refused as an unknown hyperparameter)",
+        "training/baselines/hyperparams.py",
+        'return [k.strip() for k in key.split(".")], parsed',
+        'return key.split("."), parsed',
+        gate("baselines_hyperparams"),
+    ),
+    Bug(
+        "fresh68 batched learned: a policy saved for another scenario or seat accepted (no refusal on construction)",
+        "agents/batched_learned.py",
+        "        human.reset(world, Agent.HUMAN, np.random.default_rng(0))  # checks world and seat; draws nothing\n",
+        "",
+        gate("batched_learned"),
+    ),
+    Bug(
+        "fresh68 canonical view: a state whose first object is in place taken as canonical (its twins' swap unmapped)",
+        "agents/robots/canonical.py",
+        "if orig == tuple(range(len(orig))):",
+        "if orig[0] == 0:",
+        gate("canonical_view"),
+    ),
+    Bug(
+        "fresh68 habit robot: its decisions log habit_action -1 (no habit proposal) though the habit chose the action",
+        "agents/robots/habit.py",
+        "            habit_action=action,\n",
+        "",
+        gate("habit_robot"),
+    ),
+    Bug(
+        "fresh68 learned human: a table policy whose rows pick action 0 refused on load",
+        "agents/humans/learned.py",
+        "actions.min() >= 0 and actions.max() < n_a):\n        raise ModelFileError",
+        "actions.min() > 0 and actions.max() < n_a):\n        raise ModelFileError",
+        gate("learned_human"),
+    ),
+    Bug(
+        "fresh68 parallel view: the agent-mismatch error is no longer a KeyError (an except KeyError misses it)",
+        "hg_marl/envs/parallel.py",
+        "class AgentMismatchError(KeyError):",
+        "class AgentMismatchError(ValueError):",
+        gate("parallel_view"),
+    ),
+    Bug(
+        "fresh68 partner monitor: an expected wait the human skipped counted as a refusal (waits get blocked)",
+        "agents/partner.py",
+        "        if action.kind is Kind.WAIT:\n            return\n",
+        "",
+        gate("partner"),
+    ),
+    Bug(
+        "fresh68 partner specs: a robot that is neither a name nor an Actor refused with TypeError, not ValueError",
+        "agents/partner_specs.py",
+        'raise ValueError(f"expected a robot name or an Actor (reset + act), got {robot!r}")',
+        'raise TypeError(f"expected a robot name or an Actor (reset + act), got {robot!r}")',
+        gate("partner_specs"),
+    ),
+    Bug(
+        "fresh68 play stats: handover acceptance divided by all the human's moves, not by the offered turns",
+        "training/play/stats.py",
+        "handover_acceptance=accepted / offered if offered else None,",
+        "handover_acceptance=accepted / moves if offered else None,",
+        gate("play_stats"),
+    ),
+    Bug(
+        "fresh68 ppo batched: --ent-coef 0 (no entropy bonus) refused as not a finite non-negative number",
+        "training/baselines/ppo_batched.py",
+        "math.isfinite(value) and value >= 0):",
+        "math.isfinite(value) and value > 0):",
+        gate("ppo_batched"),
+    ),
+    Bug(
+        "fresh68 training io: a result dict's keys not made strings (tuple keys fail, number keys sorted as numbers)",
+        "training/io.py",
+        "return {str(k): _plain(v) for k, v in value.items()}",
+        "return {k: _plain(v) for k, v in value.items()}",
+        gate("training_io"),
+    ),
+    Bug(
+        "fresh68 mask audit: an action index one past the mask crashes the audit (IndexError, not the env's refusal)",
+        "hg_marl/wrappers/audit.py",
+        "if not (0 <= index < mask.shape[0] and mask[index]):",
+        "if not (0 <= index <= mask.shape[0] and mask[index]):",
+        gate("wrapper_audit"),
+    ),
+    Bug(
+        "fresh68 flat wrapper: with mask='info' the infos hold the mask only (failed, events and the rest dropped)",
+        "hg_marl/wrappers/flat.py",
+        'self._infos[agent] = {**info, "action_mask": mask}',
+        'self._infos[agent] = {"action_mask": mask}',
+        gate("wrapper_flat"),
+    ),
+    Bug(
+        "fresh68 backends: --address with a hyphen in the host name (my-head:6379) refused as malformed",
+        "training/backends.py",
+        '[A-Za-z0-9.-]+):(\\d{1,5})$")',
+        '[A-Za-z0-9.]+):(\\d{1,5})$")',
+        gate("backends"),
+    ),
+    Bug(
+        "fresh68 behaviour cloning: a linear fit's accuracy read from unmasked logits (infeasible actions predicted)",
+        "training/baselines/bc.py",
+        "predicted = np.argmax(np.where(data.masks, data.facts @ w.T + b, -np.inf), axis=1)",
+        "predicted = np.argmax(data.facts @ w.T + b, axis=1)",
+        gate("baselines_bc"),
+    ),
+    Bug(
+        "fresh68 sb3 callbacks: a fresh run's rate curve lacks its point at the start (step 0 not evaluated)",
+        "training/baselines/callbacks.py",
+        "if not self.curve or self.curve[-1][0] != self.num_timesteps:",
+        "if self.curve and self.curve[-1][0] != self.num_timesteps:",
+        gate("baselines_callbacks"),
+    ),
+)
+"""Round 68, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 59-60, each bug run against its module's gate tests
+from modules.toml: the hyperparameters, the batched learned partner, the canonical view, the habit robot,
+the learned human, the parallel view, the partner monitor, the partner specs, the play statistics, the
+batched PPO, the result writer, the mask audit, the flat wrapper, the backends, behaviour cloning and the
+SB3 callbacks."""
+ROUND68_TESTS = "tests/training/test_pinned_round68.py"
+"""The values round 68's missed bugs changed, pinned after the round: every round-68 bug runs them too."""
+FRESH68 = pinned_after(FRESH68, ROUND68_TESTS)
 
 
 ALL = (
