@@ -8981,6 +8981,12 @@ ROUND68_TESTS = "tests/training/test_pinned_round68.py"
 FRESH68 = pinned_after(FRESH68, ROUND68_TESTS)
 
 
+FRESH69: tuple[Bug, ...] = ()
+"""Round 69 (placeholder)."""
+FRESH70: tuple[Bug, ...] = ()
+"""Round 70 (placeholder)."""
+
+
 ALL = (
     BUGS
     + FRESH
@@ -9051,6 +9057,8 @@ ALL = (
     + FRESH66
     + FRESH67
     + FRESH68
+    + FRESH69
+    + FRESH70
 )
 
 
