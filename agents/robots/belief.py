@@ -37,10 +37,10 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   member's answer elsewhere (:mod:`~hg_marl.agents.observed_partner`). When it is the
   most probable hypothesis the robot plays that model's exact best response, solved from
   the table in front of it and again only after the partner surprised it at the current
-  state; a solve is charged to the clock as a planner call expanding one node per state.
-  A partner whose answers at a state contradict its earlier ones there (a clock, its own
-  history), or a table whose members' models are too large (``roboergosum``), is planned
-  for as the plain planner plans.
+  state, over the expansions kept from earlier solves; a solve is charged to the clock as a
+  planner call of one node per state it expands. A partner whose answers at a state
+  contradict its earlier ones there (a clock, its own history), or a table whose members'
+  models are too large (``roboergosum``), is planned for as the plain planner plans.
 - **Probing** (``probe=S``, default off). While no member holds 90% of the belief, the
   robot may take, instead of its best action, the action whose reply tells the members
   apart most (mutual information between member and reply, :meth:`information`) if it
@@ -450,7 +450,7 @@ class BeliefRobot(Robot):
 
         Its model is solved from the table in front of the robot, and again only after the
         partner surprised it at this state (:class:`~hg_marl.agents.observed_partner.ObservedSolver`);
-        a solve is charged to the clock as a planner call expanding one node per state.
+        a solve is charged to the clock as a planner call of one node per state it expands.
         """
         partner = self.posterior.learned
         assert isinstance(partner, ObservedPartner)
