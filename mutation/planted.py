@@ -8981,10 +8981,249 @@ ROUND68_TESTS = "tests/training/test_pinned_round68.py"
 FRESH68 = pinned_after(FRESH68, ROUND68_TESTS)
 
 
-FRESH69: tuple[Bug, ...] = ()
-"""Round 69 (placeholder)."""
-FRESH70: tuple[Bug, ...] = ()
-"""Round 70 (placeholder)."""
+FRESH69: tuple[Bug, ...] = (
+    Bug(
+        "fresh69 compare: a changed --eval-every reuses the old cells (the evaluation spacing is not in a cell's key)",
+        "training/baselines/compare.py",
+        '        "eval_every": config.eval_every,\n',
+        "",
+        gate("baselines_compare"),
+    ),
+    Bug(
+        "fresh69 comparison: a human whose oracle rate is 0 crashes the summary (ZeroDivisionError, not fraction None)",
+        "training/baselines/comparison.py",
+        "return None if rate is None or not oracle else rate / oracle",
+        "return None if rate is None or oracle is None else rate / oracle",
+        gate("baselines_comparison"),
+    ),
+    Bug(
+        "fresh69 baselines envs: a vector env asked for seed 0 is left unseeded (seed 0 runs not reproducible)",
+        "training/baselines/envs.py",
+        "    if seed is not None:\n        vec.seed(seed)",
+        "    if seed:\n        vec.seed(seed)",
+        gate("baselines_envs"),
+    ),
+    Bug(
+        "fresh69 batched rules: the robot's wait rewarded on every table, clean or not",
+        "hg_marl/core/batch.py",
+        "reward[self._clean(b.where, waits)] = 1.0",
+        "reward[waits] = 1.0",
+        gate("batch_rules"),
+    ),
+    Bug(
+        "fresh69 compiled human: a state whose key sorts past the table's last crashes (IndexError, no live fallback)",
+        "agents/compiled.py",
+        "        idx = np.minimum(idx, len(self.keys) - 1)\n",
+        "",
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh69 headroom: where nothing completes surely under the assumed partner, the policy picks no action",
+        "agents/headroom.py",
+        " | ~np.isfinite(best[self.pair_state])  # nothing certain: all tied",
+        "  # nothing certain: all tied",
+        gate("headroom"),
+    ),
+    Bug(
+        "fresh69 play replay: the replay runs the planner, not the robot the trace recorded",
+        "training/play/replay.py",
+        'actor = build_robot(robot or h.get("meta", {}).get("robot") or "planner")',
+        'actor = build_robot(robot or "planner")',
+        gate("play_replay"),
+    ),
+    Bug(
+        "fresh69 play session: the summary's mean response time is the median",
+        "training/play/session.py",
+        '"mean_response_time": float(np.mean(rt)) if rt else None,',
+        '"mean_response_time": float(np.median(rt)) if rt else None,',
+        gate("play_session"),
+    ),
+    Bug(
+        "fresh69 random robot: it returns the position among the feasible actions, not the action (infeasible picks)",
+        "agents/robots/uniform.py",
+        "action = int(feasible[self.rng.integers(len(feasible))])",
+        "action = int(self.rng.integers(len(feasible)))",
+        gate("random_robot"),
+    ),
+    Bug(
+        "fresh69 recurrent ppo sb3: --episode-seconds 0 (or a learning rate of 0) accepted",
+        "training/baselines/recurrent_ppo_sb3.py",
+        "math.isfinite(value) and value > 0):",
+        "math.isfinite(value) and value >= 0):",
+        gate("recurrent_ppo_sb3"),
+    ),
+    Bug(
+        "fresh69 sb3 limits: a fractional integer argument (n_steps=2.5) accepted",
+        "agents/sb3_limits.py",
+        "not isinstance(value, int | float) or (kind == _INT and not isinstance(value, int)):",
+        "not isinstance(value, int | float):",
+        gate("sb3_limits"),
+    ),
+    Bug(
+        "fresh69 sb3 robot: a model file and an in-memory model both given accepted (no refusal)",
+        "agents/robots/sb3.py",
+        "if (path is None) == (model is None):",
+        "if path is None and model is None:",
+        gate("sb3_robot"),
+    ),
+    Bug(
+        "fresh69 sb3 wrapper: env_method('action_masks', indices=[k]) returns the first tables' masks, not table k's",
+        "hg_marl/wrappers/sb3.py",
+        "return [masks[i] for i in rows]",
+        "return [masks[i] for i in range(len(rows))]",
+        gate("sb3_wrapper"),
+    ),
+    Bug(
+        "fresh69 entropy and cost: the planner's all-states cost is its last cost, not its filtered one",
+        "agents/meta/entropy_cost.py",
+        "self._planner_cost_all = (1.0 - self.rate) * self._planner_cost_all + self.rate * plan.cost",
+        "self._planner_cost_all = plan.cost",
+        gate("entropy_cost"),
+    ),
+    Bug(
+        "fresh69 habit: the 17th state seen overflows the uncertainty table (IndexError, tables not grown in time)",
+        "agents/habit.py",
+        "if code >= self._var.shape[0]:",
+        "if code > self._var.shape[0]:",
+        gate("habit"),
+    ),
+    Bug(
+        "fresh69 meta controller: a decision's log record lacks the criterion's numbers (entropies, VPI)",
+        "agents/meta/controller.py",
+        "        out.update(self.stats)\n",
+        "",
+        gate("meta_controller"),
+    ),
+)
+"""Round 69, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 60-61, each bug run against its module's gate tests
+from modules.toml: the SB3 comparison's cells and summary, the training envs, the batched rules, the
+compiled human, the headroom, the play replay and session, the random robot, the sb3-contrib recurrent
+run, the SB3 limits, robot and wrapper, the entropy-and-cost criterion, the habit and the meta controller."""
+ROUND69_TESTS = "tests/training/test_pinned_round69.py"
+"""The values round 69's missed bugs changed, pinned after the round: every round-69 bug runs them too."""
+FRESH69 = pinned_after(FRESH69, ROUND69_TESTS)
+FRESH70: tuple[Bug, ...] = (
+    Bug(
+        "fresh70 model answers: a partner given as spec text (stationary_human('random')) refused as not stationary",
+        "agents/models/answers.py",
+        "    elif isinstance(human, str):\n        human = make_human(human)\n",
+        "",
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh70 model builder: a model built without failed_actions leaves out the robot's failing action by default",
+        "agents/models/builder.py",
+        "    failed_actions: bool = True,\n",
+        "    failed_actions: bool = False,\n",
+        gate("model_builder"),
+    ),
+    Bug(
+        "fresh70 model chains: a fixed policy's rate solved on the transposed transitions (wrong tasks per hour)",
+        "agents/models/chains.py",
+        "(inner_pos[rows[inner]], inner_pos[cols[inner]])",
+        "(inner_pos[cols[inner]], inner_pos[rows[inner]])",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh70 model equivariant: canonical answers sort the caller's batch in place (its states relabelled)",
+        "agents/models/equivariant.py",
+        "canon = BatchState(states.where.copy(), ",
+        "canon = BatchState(states.where, ",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh70 model keyed: a segment table's first batch of over 1024 entries overflows its buffer (ValueError)",
+        "agents/models/keyed.py",
+        "grown = np.empty(max(end, 2 * len(buf), 1024), dtype=buf.dtype)",
+        "grown = np.empty(max(2 * len(buf), 1024), dtype=buf.dtype)",
+        gate("model_keyed"),
+    ),
+    Bug(
+        "fresh70 model layouts: canonical layouts deal groups short of objects (probabilities sum over 1)",
+        "agents/models/layouts.py",
+        "            if c == 0:\n                yield ()\n            return",
+        "            yield ()\n            return",
+        gate("model_layouts"),
+    ),
+    Bug(
+        "fresh70 model lazy: a joint model's partners that see the robot's action read the others' key order",
+        "agents/models/lazy.py",
+        "if table.uses_robot_action not in self._order:",
+        "if not self._order:",
+        gate("model_lazy"),
+    ),
+    Bug(
+        "fresh70 model live: parallel answers report their progress one chunk behind (budget readings undercount)",
+        "agents/models/live.py",
+        "[b for _, b in spans]",
+        "[a for a, _ in spans]",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh70 model packing: a batch's offered object packed into the offerer's digit (keys collide)",
+        "agents/models/packing.py",
+        "(b.offer_obj + 1) * w[n + 2]",
+        "(b.offer_obj + 1) * w[n + 1]",
+        gate("model_packing"),
+    ),
+    Bug(
+        "fresh70 model partners: an idle preference human that would wait lists wait twice (probabilities sum over 1)",
+        "agents/models/partners.py",
+        "            prob[merged, 1] = 0.0\n",
+        "",
+        gate("model_partners"),
+    ),
+    Bug(
+        "fresh70 model solve: a state that cannot complete gets best pair n_pairs (out of range), not its first pair",
+        "agents/models/solve.py",
+        "    first[inf_state] = starts[inf_state]  # argmin of all-inf picks the first pair\n",
+        "",
+        gate("model_solve"),
+    ),
+    Bug(
+        "fresh70 planner space: two objects at one location give the robot two gotos there (duplicate candidates)",
+        "agents/planner/space.py",
+        "if dest >= 0 and dest not in dests:",
+        "if dest >= 0:",
+        gate("planner_bound"),
+    ),
+    Bug(
+        "fresh70 vpi: a habit certain of its values (sd 0) gets a negative VPI for worse actions",
+        "agents/meta/vpi.py",
+        "        return max(gap, 0.0)\n",
+        "        return gap\n",
+        gate("vpi"),
+    ),
+    Bug(
+        "fresh70 baselines train: --checkpoint-freq 0 (no checkpoints) writes one every tenth of the budget",
+        "training/baselines/train.py",
+        "freq = config.checkpoint_freq if config.checkpoint_freq is not None else max(1, total // 10)",
+        "freq = config.checkpoint_freq if config.checkpoint_freq else max(1, total // 10)",
+        gate("baselines_train"),
+    ),
+    Bug(
+        "fresh70 core errors: an integer option equal to its minimum refused (--steps 1 says expected >= 1)",
+        "hg_marl/core/errors.py",
+        "if minimum is not None and value < minimum:",
+        "if minimum is not None and value <= minimum:",
+        gate("core_errors"),
+    ),
+    Bug(
+        "fresh70 memory policy: a saved memory model file records its observation size as the hidden width",
+        "agents/memory_policy.py",
+        '"hidden": net.hidden,',
+        '"hidden": net.obs_size,',
+        gate("memory_policy"),
+    ),
+)
+"""Round 70, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 61-62, each bug run against its module's gate tests
+from modules.toml: the model's answer tables, builder, chains, equivariant answers, keyed tables,
+layouts, lazy transitions, live answers, packing, array partners and solver, the planner's search
+space, the VPI criterion, the SB3 training script, the error helpers and the memory policy. The
+solver's bug (a state that cannot complete left without its first pair) is equivalent: such a state's
+pairs all have infinite seconds, and ``inf <= inf + TIE`` already makes its first pair the chosen one."""
 
 
 ALL = (
