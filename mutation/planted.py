@@ -9226,6 +9226,12 @@ solver's bug (a state that cannot complete left without its first pair) is equiv
 pairs all have infinite seconds, and ``inf <= inf + TIE`` already makes its first pair the chosen one."""
 
 
+FRESH71: tuple[Bug, ...] = ()
+"""Round 71 (placeholder)."""
+FRESH72: tuple[Bug, ...] = ()
+"""Round 72 (placeholder)."""
+
+
 ALL = (
     BUGS
     + FRESH
@@ -9298,6 +9304,8 @@ ALL = (
     + FRESH68
     + FRESH69
     + FRESH70
+    + FRESH71
+    + FRESH72
 )
 
 
