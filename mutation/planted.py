@@ -9226,10 +9226,257 @@ solver's bug (a state that cannot complete left without its first pair) is equiv
 pairs all have infinite seconds, and ``inf <= inf + TIE`` already makes its first pair the chosen one."""
 
 
-FRESH71: tuple[Bug, ...] = ()
-"""Round 71 (placeholder)."""
-FRESH72: tuple[Bug, ...] = ()
-"""Round 72 (placeholder)."""
+FRESH71: tuple[Bug, ...] = (
+    Bug(
+        "fresh71 meta fixed: the habit-alone criterion hands its decisions to the planner",
+        "agents/meta/fixed.py",
+        '        """The habit, always."""\n        return Expert.HABIT',
+        '        """The habit, always."""\n        return Expert.PLANNER',
+        gate("meta_fixed"),
+    ),
+    Bug(
+        "fresh71 model budget: a refusal before enumerating names the previous phase, not the one refused",
+        "agents/models/budget.py",
+        'self.phase, self.progress = phase, f"0 of {count:,} {unit}"',
+        'self.progress = f"0 of {count:,} {unit}"',
+        gate("model_budget"),
+    ),
+    Bug(
+        "fresh71 model forked: parallel results come back in the order they finish, not the items' order",
+        "agents/models/forked.py",
+        "self._start().imap(_call, ",
+        "self._start().imap_unordered(_call, ",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh71 model format: an sb3 header naming its algorithm but no observation kind accepted",
+        "agents/model_format.py",
+        'not isinstance(header.get("algo"), str) or header.get("observation") not in OBSERVATIONS',
+        'not isinstance(header.get("algo"), str) and header.get("observation") not in OBSERVATIONS',
+        gate("model_format"),
+    ),
+    Bug(
+        "fresh71 model limits: declared arrays counted in elements, not bytes (a file eight times its budget loads)",
+        "agents/model_limits.py",
+        "total += int(np.prod(shape, dtype=np.float64)) * dtype.itemsize",
+        "total += int(np.prod(shape, dtype=np.float64))",
+        gate("model_limits"),
+    ),
+    Bug(
+        "fresh71 outputs: an output file named as an existing folder refused as not a regular file, not as a folder",
+        "training/outputs.py",
+        "            if path.is_dir():\n"
+        '                raise ConfigError(f"{option} {path}: is a folder; name a file")\n',
+        "",
+        gate("outputs"),
+    ),
+    Bug(
+        "fresh71 recipes: the hsp recipe's pool drops the training members (only the drawn partners)",
+        "training/baselines/recipes.py",
+        "humans = (*humans, *hsp_partners(world))",
+        "humans = hsp_partners(world)",
+        gate("recipes"),
+    ),
+    Bug(
+        "fresh71 relabel: an action on canonical object 0 is not mapped back to the original object",
+        "hg_marl/core/relabel.py",
+        "        if obj >= 0:\n            obj = orig[obj]",
+        "        if obj > 0:\n            obj = orig[obj]",
+        gate("relabel"),
+    ),
+    Bug(
+        "fresh71 runner: the log's human_action_name is the robot's action of that index",
+        "training/runner.py",
+        'row["human_action_name"] = names[Agent.HUMAN][action]',
+        'row["human_action_name"] = names[Agent.ROBOT][action]',
+        gate("runner"),
+    ),
+    Bug(
+        "fresh71 store: a run's key holds the robot's parameters for the human's (a changed human parameter reuses it)",
+        "training/store.py",
+        '"human": {"name": self.human, "params": dict(self.human_params)},',
+        '"human": {"name": self.human, "params": dict(self.robot_params)},',
+        gate("store"),
+    ),
+    Bug(
+        "fresh71 sweep: run_sweep given a backend runs on its own local workers (the backend is never used)",
+        "training/sweep.py",
+        "backend or LocalBackend(workers), callback)",
+        "LocalBackend(workers), callback)",
+        gate("sweep"),
+    ),
+    Bug(
+        "fresh71 vector envs: a partner given to the robot's batched seat is replaced by the compiled human",
+        "agents/vector_envs.py",
+        "    if partner is None:\n        partner = compiled_humans(world, human, cache, progress)\n",
+        "    partner = compiled_humans(world, human, cache, progress)\n",
+        gate("vector_envs"),
+    ),
+    Bug(
+        "fresh71 world: batched resets deal a layout group the previous group's objects (some objects left unplaced)",
+        "hg_marl/core/world.py",
+        "            k += group.count\n        starts",
+        "            k += 1\n        starts",
+        gate("world"),
+    ),
+    Bug(
+        "fresh71 array partner: a compiled human is not recognised as tabled (isinstance raises TypeError)",
+        "hg_marl/envs/array_partner.py",
+        "@runtime_checkable\nclass TabledHuman(Protocol):",
+        "class TabledHuman(Protocol):",
+        gate("array_partner"),
+    ),
+    Bug(
+        "fresh71 atomic: the file mode set on the file being replaced, not the new one (a first write fails)",
+        "hg_marl/core/atomic.py",
+        "os.chmod(tmp, FILE_MODE)",
+        "os.chmod(path, FILE_MODE)",
+        gate("atomic"),
+    ),
+    Bug(
+        "fresh71 belief: the default probe=0 (no probing) refused as not seconds >= 0",
+        "agents/robots/belief.py",
+        "math.isfinite(probe) and probe >= 0.0",
+        "math.isfinite(probe) and probe > 0.0",
+        gate("belief"),
+    ),
+)
+"""Round 71, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 62-63, each bug run against its module's gate tests
+from modules.toml: the fixed criteria, the model's budget, forked workers, file format and limits, the
+output checks, the training recipes, the relabelling, the runner, the store, the sweep, the batched
+seats, the world, the array partner protocols, the atomic writes and the belief robot. The fixed
+criteria's bug (the habit-alone criterion choosing the planner) is reached only by a direct call: the
+controller never asks a criterion that wants no plan to choose."""
+ROUND71_TESTS = "tests/training/test_pinned_round71.py"
+"""The values round 71's missed bugs changed, pinned after the round: every round-71 bug runs them too."""
+FRESH71 = pinned_after(FRESH71, ROUND71_TESTS)
+FRESH72: tuple[Bug, ...] = (
+    Bug(
+        "fresh72 content: a file named in a '|' list (a.json|b.json) is not keyed (editing it reuses old results)",
+        "agents/content.py",
+        '        if "|" in text:\n            yield from _texts(text.split("|"), depth + 1)\n',
+        "",
+        gate("content"),
+    ),
+    Bug(
+        "fresh72 cycle: a robot that waits has its idle time counted less the wait's duration",
+        "hg_marl/core/cycle.py",
+        "idle[0] += length if robot.waited else length - d_robot",
+        "idle[0] += length - d_robot",
+        gate("cycle"),
+    ),
+    Bug(
+        "fresh72 heldout curve: a checkpoint scoring 0 tasks per hour writes an empty cell (the curve cannot be read)",
+        "training/baselines/heldout_curve.py",
+        'writer.writerows(["" if v is None else v for v in row] for row in self.rows)',
+        'writer.writerows(["" if not v else v for v in row] for row in self.rows)',
+        gate("heldout_curve"),
+    ),
+    Bug(
+        "fresh72 history: the observer's own actions come first in its features, the partner's second",
+        "hg_marl/envs/history.py",
+        "for a in (1 - me, me):",
+        "for a in (me, 1 - me):",
+        gate("history"),
+    ),
+    Bug(
+        "fresh72 memory robot: a model file trained on another scenario is played without refusal",
+        "agents/robots/memory.py",
+        "        if self.file is not None:\n            check_world(self.file, world, Agent.ROBOT)\n",
+        "",
+        gate("memory_robot"),
+    ),
+    Bug(
+        "fresh72 planner costs: a node budget of 0 accepted (every search fails at once with reason 'budget')",
+        "agents/planner/costs.py",
+        "if self.node_budget < 1:",
+        "if self.node_budget < 0:",
+        gate("planner_costs"),
+    ),
+    Bug(
+        "fresh72 planner exactsum: the dead-end flag sits in the fifth weight's field (a large fifth sum: a dead end)",
+        "agents/planner/exactsum.py",
+        "self.flag = 1 << (self.width * self.k)",
+        "self.flag = 1 << (self.width * (self.k - 1))",
+        gate("planner_exactsum"),
+    ),
+    Bug(
+        "fresh72 planner steps: a take leaves the partner's offer standing in the successor",
+        "agents/planner/steps.py",
+        "                elif code == TAKE:\n                    b = ob = -1\n",
+        "",
+        gate("planner_steps"),
+    ),
+    Bug(
+        "fresh72 registry: an unknown name's message lists parameters where it should list names only (or the reverse)",
+        "hg_marl/core/registry.py",
+        "        if not self.list_params:\n",
+        "        if self.list_params:\n",
+        gate("registry"),
+    ),
+    Bug(
+        "fresh72 scenario file: a name reserved in another case ('Wait', 'Robot') accepted",
+        "hg_marl/core/scenario_file.py",
+        "name.lower() in RESERVED_NAMES",
+        "name in RESERVED_NAMES",
+        gate("scenario_file"),
+    ),
+    Bug(
+        "fresh72 scenario generated: a negative seed crashes in numpy (ValueError), not a one-line refusal",
+        "hg_marl/core/scenario_generated.py",
+        'seed = check_int(seed, "generated scenario: seed", minimum=0, error=ScenarioError)',
+        'seed = check_int(seed, "generated scenario: seed", error=ScenarioError)',
+        gate("scenario_generated"),
+    ),
+    Bug(
+        "fresh72 scenario model: a bin only one agent reaches counted as reached by none (a solvable scenario warned)",
+        "hg_marl/core/scenario_model.py",
+        "if not any(b.reach.robot_from or b.reach.human for b in bins):",
+        "if not any(b.reach.robot_from and b.reach.human for b in bins):",
+        gate("scenario_model"),
+    ),
+    Bug(
+        "fresh72 server limits: a replayed body is handed over again at every receive (the client never goes away)",
+        "training/play/server_limits.py",
+        "        sent = True\n",
+        "",
+        gate("server_limits"),
+    ),
+    Bug(
+        "fresh72 aec env: decision time charged once is added to every later cycle's length",
+        "hg_marl/envs/table_cleaning.py",
+        "        self._charged = 0.0\n        if self._history.k:",
+        "        if self._history.k:",
+        gate("aec_env"),
+    ),
+    Bug(
+        "fresh72 durations: an unknown action type's message lists the fields given, not the known types",
+        "hg_marl/core/durations.py",
+        "(known: {', '.join(sorted(known))})",
+        "(known: {', '.join(sorted(values))})",
+        gate("durations"),
+    ),
+    Bug(
+        "fresh72 entropy: the planner's distribution filtered into the habit's filter (one state's two experts mixed)",
+        "agents/meta/entropy.py",
+        "h_planner = normalised_entropy(self._planner.update(habit.key, plan.distribution))",
+        "h_planner = normalised_entropy(self._habit.update(habit.key, plan.distribution))",
+        gate("entropy"),
+    ),
+)
+"""Round 72, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 63-64, each bug run against its module's gate tests
+from modules.toml: the content keys, the cycle, the held-out curve, the history features, the memory
+robot, the planner's costs, exact sums and steps, the registry, the scenario file, generator and model,
+the play server's limits, the AEC environment, the durations and the entropy criterion. The planner
+steps' bug (a take no longer clearing the offer) is equivalent: a take is feasible only on the
+partner's offer (``offer_by == 1 - agent``), and ``successors`` already lapses every offer by the
+partner (``by >= 0 and by != agent``) before it applies any action, so the dropped line reset what was
+already reset (the gate's walk of ``apply`` against ``successor_feasible`` passes with it)."""
+ROUND72_TESTS = "tests/training/test_pinned_round72.py"
+"""The values round 72's missed bugs changed, pinned after the round: every round-72 bug runs them too."""
+FRESH72 = pinned_after(FRESH72, ROUND72_TESTS)
 
 
 ALL = (
