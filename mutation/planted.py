@@ -9479,6 +9479,12 @@ ROUND72_TESTS = "tests/training/test_pinned_round72.py"
 FRESH72 = pinned_after(FRESH72, ROUND72_TESTS)
 
 
+FRESH73: tuple[Bug, ...] = ()
+"""Round 73 (placeholder)."""
+FRESH74: tuple[Bug, ...] = ()
+"""Round 74 (placeholder)."""
+
+
 ALL = (
     BUGS
     + FRESH
@@ -9553,6 +9559,8 @@ ALL = (
     + FRESH70
     + FRESH71
     + FRESH72
+    + FRESH73
+    + FRESH74
 )
 
 
