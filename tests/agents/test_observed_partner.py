@@ -503,3 +503,30 @@ def test_expansions_are_kept_when_nothing_was_counted_since_the_last_solve() -> 
     assert solved and solver.result is not None
     assert expanded == len(set(solver.result.values) - kept)
     assert kept <= set(solver.graph)
+
+
+def test_a_refused_solve_after_a_kept_one_is_charged_its_own_expansions_only(monkeypatch: pytest.MonkeyPatch) -> None:
+    """``paper2015`` with a limit of 70 states: the table of seed 0 (67 states) is solved, the
+    table of seed 1 (111) is refused. The refused solve reports the states it expanded itself,
+    counted by wrapping the one-step rule, not the run's total nor any other mix of the two."""
+    import hg_marl.agents.observed_partner as module
+
+    calls: list[int] = []
+    real = module.expand
+
+    def counted(*args: Any) -> Any:
+        calls.append(1)
+        return real(*args)
+
+    monkeypatch.setattr(module, "expand", counted)
+    world = World("paper2015")
+    partner = ObservedPartner()
+    partner.base = LastFirst()
+    relabel = Relabel(world)
+    first, second = (world.initial_state(np.random.default_rng(seed)) for seed in (0, 1))
+    solver = ObservedSolver(max_states=70)
+    q, expanded, solved = solver.q_values(world, first, partner, 0, relabel)
+    assert q and solved and expanded == len(calls) == 67
+    q, expanded, solved = solver.q_values(world, second, partner, 0, relabel)
+    assert (q, solved) == ({}, True)
+    assert expanded == len(calls) - 67 > 0
