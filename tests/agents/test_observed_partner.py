@@ -45,6 +45,21 @@ class LastFirst(StationaryHuman):
         return deterministic(pick if pick >= 0 else wait)
 
 
+def _count_expansions(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    """A list that gets one entry per state the observed solver expands (its one-step rule wrapped)."""
+    import hg_marl.agents.observed_partner as module
+
+    calls: list[int] = []
+    real = module.expand
+
+    def counted(*args: Any) -> Any:
+        calls.append(1)
+        return real(*args)
+
+    monkeypatch.setattr(module, "expand", counted)
+    return calls
+
+
 def _last_first_at_the_start() -> tuple[World, ObservedPartner, Relabel, State]:
     """``forced_coordination``'s table of seed 0, and an observed partner over LastFirst that has seen nothing."""
     world = World("forced_coordination")
@@ -429,16 +444,7 @@ def test_a_refused_solve_reports_the_states_it_expanded(monkeypatch: pytest.Monk
     """A model that grows past the limit is charged the expansions made before it was refused,
     counted here by wrapping the one-step rule (each call is one state expanded), on a first
     solve and on a second one after a surprise (the count is per solve, not per run)."""
-    import hg_marl.agents.observed_partner as module
-
-    calls: list[int] = []
-    real = module.expand
-
-    def counted(*args: Any) -> Any:
-        calls.append(1)
-        return real(*args)
-
-    monkeypatch.setattr(module, "expand", counted)
+    calls = _count_expansions(monkeypatch)
     world, partner, relabel, state = _last_first_at_the_start()
     small = ObservedSolver(max_states=5)
     q, expanded, solved = small.q_values(world, state, partner, 0, relabel)
@@ -463,7 +469,7 @@ def test_the_kept_expansions_are_dropped_once_they_reach_the_states_limit() -> N
         solver = ObservedSolver(max_states=1000)
         solver.base = partner.base
         dummy = State(where=(-1,) * 3, robot_at=0, offer_by=-1, offer_obj=-1)
-        filler = {dummy._replace(robot_at=k): [] for k in range(kept)}
+        filler: dict[State, list[Any]] = {dummy._replace(robot_at=k): [] for k in range(kept)}
         solver.graph = dict(filler)
         _, expanded, solved = solver.q_values(world, state, partner, 0, relabel)
         assert solved and solver.result is not None
@@ -509,16 +515,7 @@ def test_a_refused_solve_after_a_kept_one_is_charged_its_own_expansions_only(mon
     """``paper2015`` with a limit of 70 states: the table of seed 0 (67 states) is solved, the
     table of seed 1 (111) is refused. The refused solve reports the states it expanded itself,
     counted by wrapping the one-step rule, not the run's total nor any other mix of the two."""
-    import hg_marl.agents.observed_partner as module
-
-    calls: list[int] = []
-    real = module.expand
-
-    def counted(*args: Any) -> Any:
-        calls.append(1)
-        return real(*args)
-
-    monkeypatch.setattr(module, "expand", counted)
+    calls = _count_expansions(monkeypatch)
     world = World("paper2015")
     partner = ObservedPartner()
     partner.base = LastFirst()
