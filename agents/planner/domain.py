@@ -120,6 +120,8 @@ def handover_h2r(d: Domain, o: int, status: int, at: int) -> Work | None:
         return None
     after = t.take + t.throw + (t.goto if not d.handover & bins else 0.0)
     if status < d.n_spots and d.spot_human[status]:
+        if not d.human_can({Kind.PICK}):
+            return None  # on a spot, it must be picked first (as in :func:`human_alone`)
         return Work(after + d.handover_empty, t.pick + t.give, _NONE, frozenset({Kind.PICK}), t.pick + t.give)
     if status == d.human_hand:
         return Work(after + d.handover_empty, t.give, _NONE, frozenset({Kind.GIVE}), t.give)
@@ -135,6 +137,8 @@ def human_places(d: Domain, o: int, status: int, at: int) -> Work | None:
         return None
     robot = d.place_then_robot[o]
     if status < d.n_spots and d.spot_human[status]:
+        if not d.human_can({Kind.PICK}):
+            return None
         return Work(robot, t.pick + t.place, _NONE, frozenset({Kind.PICK}), t.pick)
     if status in (d.human_hand, d.human_offer):
         return Work(robot, t.place, _NONE, frozenset({Kind.PLACE}))

@@ -58,6 +58,22 @@ def test_an_object_no_method_reaches_is_named_with_its_place_and_the_human_model
     assert Domain(world, cooperative()).explain_unreachable(state) == ""
 
 
+def test_a_human_who_never_picks_cannot_give_or_place_an_object_lying_on_its_mat() -> None:
+    """The same tapes, a human who gives, places, takes and throws but never picks: an object
+    on a human mat must be picked before it is given or placed, so no method applies to tape3
+    (the module docstring's early proof), and the planner says so at once instead of searching
+    every state; the same human holding tape3 can give it (a handover to the robot applies)."""
+    world = World("paper2015")
+    no_pick = RestrictedHuman("no pick", frozenset({Kind.GIVE, Kind.PLACE, Kind.TAKE, Kind.THROW}))
+    domain = Domain(world, no_pick)
+    assert [name for name, _ in domain.works(2, 4, 1)] == []
+    state = State(where=(0, 2, 4), robot_at=1, offer_by=-1, offer_obj=-1)
+    assert domain.explain_unreachable(state).startswith("no decomposition of dispose(tape3): it is on human_mat_1")
+    result = Planner(world, human_model=no_pick).plan(state)
+    assert not result.success and result.reason.startswith("unreachable: no decomposition of dispose(tape3)")
+    assert "handover_h2r" in [name for name, _ in domain.works(2, domain.human_hand, 1)]
+
+
 def test_paper2015_on_the_shared_mat_robot_alone_handover_to_the_robot_and_the_human_placing() -> None:
     """The bin is reached from bin_side (0) only, mat_shared from human_side (3) only, the
     handover location is human_side; the human reaches no bin. Releases are at bin_side
