@@ -18,7 +18,9 @@ from __future__ import annotations
 
 import argparse
 import functools
+import os
 import re
+import signal
 import subprocess
 import sys
 import tempfile
@@ -11745,6 +11747,506 @@ ROUND90_TESTS = "tests/training/test_pinned_round90.py"
 """The values round 90's missed bugs changed, pinned after the round: every round-90 bug runs them too."""
 FRESH90 = pinned_after(FRESH90, ROUND90_TESTS)
 
+FRESH91: tuple[Bug, ...] = (
+    Bug(
+        "fresh91 human switching: too few thresholds accepted (three humans with at=[600] never reach the third)",
+        "agents/humans/switching.py",
+        "if len(humans) < 1 or len(at) != len(humans) - 1:",
+        "if len(humans) < 1 or len(at) > len(humans) - 1:",
+        gate("human_switching"),
+    ),
+    Bug(
+        "fresh91 learning state: where the habit has not settled, choose() hands the turn to the habit",
+        "agents/meta/learning_state.py",
+        "        return Expert.PLANNER\n",
+        "        return Expert.HABIT\n",
+        gate("learning_state"),
+    ),
+    Bug(
+        "fresh91 limits: a study file over 1 KiB refused (MAX_STUDY_BYTES 1 << 10, not 1 MiB)",
+        "training/limits.py",
+        "MAX_STUDY_BYTES = 1 << 20",
+        "MAX_STUDY_BYTES = 1 << 10",
+        gate("limits"),
+    ),
+    Bug(
+        "fresh91 member models: members solved without the robot's failed actions (a failed move looks free)",
+        "agents/member_models.py",
+        '"failed_actions": True,',
+        '"failed_actions": False,',
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh91 memory numpy: the encoder's second layer left linear (no tanh): actions differ from torch's",
+        "agents/memory_numpy.py",
+        'x = np.tanh(x @ w["encoder.2.weight"].T + w["encoder.2.bias"])',
+        'x = x @ w["encoder.2.weight"].T + w["encoder.2.bias"]',
+        gate("memory_numpy"),
+    ),
+    Bug(
+        "fresh91 meta cost: a planner call's default base charge a tenth of 0.05 s (5 ms)",
+        "agents/meta/cost.py",
+        "planner_base: float = 0.05",
+        "planner_base: float = 0.005",
+        gate("meta_cost"),
+    ),
+    Bug(
+        "fresh91 model cache: a corrupt entry (not an npz) raises ValueError instead of being rebuilt",
+        "agents/models/cache.py",
+        "except (OSError, ValueError, KeyError, EOFError):",
+        "except (OSError, KeyError, EOFError):",
+        gate("model_cache"),
+    ),
+    Bug(
+        "fresh91 model sb3: a saved optimizer state (integer keys) refused as a malformed state entry",
+        "agents/model_sb3.py",
+        "isinstance(pair[0], str | int)",
+        "isinstance(pair[0], str)",
+        gate("model_sb3"),
+    ),
+    Bug(
+        "fresh91 observed partner: a seen key's predictive not normalised by the base's pseudo-count (sums over 1)",
+        "agents/observed_partner.py",
+        "total = sum(seen.values()) + weight",
+        "total = sum(seen.values())",
+        gate("observed_partner"),
+    ),
+    Bug(
+        "fresh91 oracle: off its model the logged reason says waiting patiently for the guard's move, and back",
+        "agents/oracle.py",
+        "                if self.progress.waiting\n",
+        "                if not self.progress.waiting\n",
+        gate("oracle"),
+    ),
+    Bug(
+        "fresh91 planner tables: the human's picks judged by the robot's reach (unreachable picks planned)",
+        "agents/planner/tables.py",
+        "if st < n_spots and table.reach[agent][at][st]:",
+        "if st < n_spots and table.reach[Agent.ROBOT][at][st]:",
+        gate("planner_tables"),
+    ),
+    Bug(
+        "fresh91 ppo recurrent: without --checkpoint-freq a checkpoint every hundredth of the steps, not tenth",
+        "training/baselines/ppo_recurrent.py",
+        'values.get("steps", RecurrentConfig.steps) // 10',
+        'values.get("steps", RecurrentConfig.steps) // 100',
+        gate("ppo_recurrent"),
+    ),
+    Bug(
+        "fresh91 progress: a spell of patience ends W turns after it began though the partner keeps working",
+        "agents/progress.py",
+        "self._still = 0 if moved else self._still + 1",
+        "self._still = self._still + 1",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh91 adapters: a scripted seat's first mask shows the last action (wait), not its actor's decision",
+        "agents/adapters.py",
+        "self._decided.get(agent, (-1, -1))",
+        "self._decided.get(agent, (0, -1))",
+        gate("adapters"),
+    ),
+    Bug(
+        "fresh91 convert: a zip without metadata converted for the human seat, not the robot's",
+        "training/baselines/convert.py",
+        'old.get("seat", "robot")',
+        'old.get("seat", "human")',
+        gate("baselines_convert"),
+    ),
+    Bug(
+        "fresh91 baselines evaluation: runner_rate plays an hour by default, not 1200 s",
+        "training/baselines/evaluation.py",
+        "duration: float = 1200.0,",
+        "duration: float = 3600.0,",
+        gate("baselines_evaluation"),
+    ),
+)
+"""Round 91, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 82-83, each bug run against its module's gate tests
+from modules.toml: the switching human, the learning-state criterion, the count limits, the member
+models, the numpy memory policy, the decision cost model, the oracle's disk cache, the SB3 model format,
+the observed partner, the oracle, the planner's tables, the recurrent PPO baseline, the progress guard,
+the scripted-seat adapter, the SB3 zip conversion and the SB3 evaluation. 15 were caught blind; the miss
+(a recurrent run without --checkpoint-freq checkpointing every hundredth of its steps, not every tenth)
+is pinned in ROUND91_TESTS."""
+ROUND91_TESTS = "tests/training/test_pinned_round91.py"
+"""The values round 91's missed bugs changed, pinned after the round: every round-91 bug runs them too."""
+FRESH91 = pinned_after(FRESH91, ROUND91_TESTS)
+FRESH92: tuple[Bug, ...] = (
+    Bug(
+        "fresh92 hybrid robot: a progress-guard move logged as the habit's, a stalled-partner move as the guard's",
+        "agents/robots/hybrid.py",
+        '"guard" if guarded else "habit",',
+        '"habit" if guarded else "guard",',
+        gate("hybrid_robot"),
+    ),
+    Bug(
+        "fresh92 noisy: an answer memoised as the unknown robot action's (a later query without one gets it)",
+        "agents/humans/noisy.py",
+        "self._memo[(state, robot_action)] = dist",
+        "self._memo[(state, -1)] = dist",
+        gate("noisy"),
+    ),
+    Bug(
+        "fresh92 planner main: the plan cache holds one plan fewer than cache_size (cache_size=1 keeps none)",
+        "agents/planner/planner.py",
+        "if len(self._cache) > self.config.cache_size:",
+        "if len(self._cache) >= self.config.cache_size:",
+        gate("planner_main"),
+    ),
+    Bug(
+        "fresh92 planner plan: a planned action 0 gets the uniform action distribution (as if no plan)",
+        "agents/planner/plan.py",
+        "if not self.success or not 0 <= action < n_actions:",
+        "if not self.success or not 0 < action < n_actions:",
+        gate("planner_plan"),
+    ),
+    Bug(
+        "fresh92 planner robot: a progress-guard move logged as a random move (expert 'random', not 'guard')",
+        "agents/robots/planner.py",
+        'self._record("guard", action, reason=self.progress.reason',
+        'self._record("random", action, reason=self.progress.reason',
+        gate("planner_robot"),
+    ),
+    Bug(
+        "fresh92 population: a spread table with a key other than selected or random accepted",
+        "agents/humans/population.py",
+        'k in ("selected", "random") and _finite(v) for k, v in values.items()',
+        "_finite(v) for k, v in values.items()",
+        gate("population"),
+    ),
+    Bug(
+        "fresh92 preference: a softmax human (temperature > 0) prefers its worst-scoring actions",
+        "agents/humans/preference.py",
+        "math.exp((s - top) / self.temperature)",
+        "math.exp((top - s) / self.temperature)",
+        gate("preference"),
+    ),
+    Bug(
+        "fresh92 regret: tasks_lost without an end reads the regret at the log's first time, not its last",
+        "training/regret.py",
+        'stop = float(log["time"].iloc[-1]) if end is None else float(end)\n    return float(regret_at',
+        'stop = float(log["time"].iloc[0]) if end is None else float(end)\n    return float(regret_at',
+        gate("regret"),
+    ),
+    Bug(
+        "fresh92 robot base: a robot built with learn=False still takes TD steps (a frozen habit changes)",
+        "agents/robots/base.py",
+        "        if self.learn:\n",
+        "        if self.learn is not None:\n",
+        gate("robot_base"),
+    ),
+    Bug(
+        "fresh92 rule table: goto to something already in reach is feasible (the robot moves where it stands)",
+        "hg_marl/core/table.py",
+        "return min(reach) if reach and at not in reach else -1",
+        "return min(reach) if reach else -1",
+        gate("rule_table"),
+    ),
+    Bug(
+        "fresh92 scenario loader: an existing file that is not .toml read as a scenario, not refused",
+        "hg_marl/core/scenario.py",
+        'if Path(text).suffix != ".toml" or not Path(text).is_file():',
+        "if not Path(text).is_file():",
+        gate("scenario_loader"),
+    ),
+    Bug(
+        "fresh92 spec parser: a parameter given twice (p=1,p=2) accepted, the last value winning",
+        "hg_marl/core/spec.py",
+        '        if pair[0] in raw:\n            raise error(f"{where}: parameter {pair[0]!r} given twice")\n',
+        "",
+        gate("spec_parser"),
+    ),
+    Bug(
+        "fresh92 trace: a directory's trace files in its subfolders not found (only the top level read)",
+        "agents/humans/trace.py",
+        'files = sorted(path.rglob("*.jsonl"))',
+        'files = sorted(path.glob("*.jsonl"))',
+        gate("trace"),
+    ),
+    Bug(
+        "fresh92 backends: --address HOST:0 (port 0) accepted, not refused as malformed",
+        "training/backends.py",
+        "if match is None or not 1 <= int(match.group(3)) <= 65535:",
+        "if match is None or not 0 <= int(match.group(3)) <= 65535:",
+        gate("backends"),
+    ),
+    Bug(
+        "fresh92 bc: the linear fit climbs its loss (gradient sign flipped), reproducing few recorded actions",
+        "training/baselines/bc.py",
+        "grad = (p - y) / n",
+        "grad = (y - p) / n",
+        gate("baselines_bc"),
+    ),
+    Bug(
+        "fresh92 callbacks: a resumed run's rate curve gets a second point at its resume step",
+        "training/baselines/callbacks.py",
+        "self.curve[-1][0] != self.num_timesteps",
+        "self.curve[-1][1] != self.num_timesteps",
+        gate("baselines_callbacks"),
+    ),
+)
+"""Round 92, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 83-84, each bug run against its module's gate tests
+from modules.toml: the hybrid robot, the noisy human, the planner and its plans, the planner robot, the
+populations, the preference human, the regret metrics, the robot base, the rule table, the scenario
+loader, the spec parser, the traces, the backends, behaviour cloning and the SB3 callbacks. 12 were
+caught blind; the misses (a noisy human's memoised answer filed under no robot action, a planner
+robot's progress-guard move logged as a random one, a habit built with learn=False still learning, a
+directory's traces in subfolders not found) are pinned in ROUND92_TESTS."""
+ROUND92_TESTS = "tests/training/test_pinned_round92.py"
+"""The values round 92's missed bugs changed, pinned after the round: every round-92 bug runs them too."""
+FRESH92 = pinned_after(FRESH92, ROUND92_TESTS)
+FRESH93: tuple[Bug, ...] = (
+    Bug(
+        "fresh93 family out: fo_mirror tidies after the robot's failed action instead of waiting with it",
+        "agents/humans/family_out.py",
+        "        if robot_action < 0:\n            return wait\n",
+        "        if robot_action < 0:\n            return helpful(world, state, take=False)\n",
+        gate("family_out"),
+    ),
+    Bug(
+        "fresh93 headroom report: headroom.json lists only the held-out partners as the matrix's columns",
+        "training/headroom.py",
+        '"true": list(result.true),',
+        '"true": list(result.held_out),',
+        gate("headroom_report"),
+    ),
+    Bug(
+        "fresh93 adversarial human: hides what it holds on any free spot, the robot's shared ones included",
+        "agents/humans/adversarial.py",
+        "for s in human_only_spots(world)])",
+        "for s in range(world.n_spots)])",
+        gate("human_adversarial"),
+    ),
+    Bug(
+        "fresh93 human base: robot-only spots count as shared (a tidy human picks what it cannot put down)",
+        "agents/humans/base.py",
+        "if spot.reach.human and spot.reach.robot_from)",
+        "if spot.reach.robot_from)",
+        gate("human_base"),
+    ),
+    Bug(
+        "fresh93 cooperative human: a robot's give answered alike with any action of its duration",
+        "agents/humans/cooperative.py",
+        "a.kind is Kind.WAIT, a.kind is Kind.GIVE)",
+        "a.kind is Kind.WAIT, a.kind is Kind.TAKE)",
+        gate("human_cooperative"),
+    ),
+    Bug(
+        "fresh93 lazy human: its p_idle ignored (lazy:p_idle=0 still idles 30% of its turns)",
+        "agents/humans/lazy.py",
+        "return with_idle(deterministic(index), world, self.p_idle)",
+        "return with_idle(deterministic(index), world, 0.3)",
+        gate("human_lazy"),
+    ),
+    Bug(
+        "fresh93 no-handover human: its p_idle ignored (no_handover:p_idle=0.5 never idles)",
+        "agents/humans/no_handover.py",
+        "return with_idle(deterministic(index), world, self.p_idle)",
+        "return with_idle(deterministic(index), world, 0.0)",
+        gate("human_no_handover"),
+    ),
+    Bug(
+        "fresh93 replay human: on_mismatch='warn' logs the divergence at every step, not once per episode",
+        "agents/humans/replay.py",
+        "logger.warning(message)\n                    self._warned = True",
+        "logger.warning(message)",
+        gate("human_replay"),
+    ),
+    Bug(
+        "fresh93 partner model: a kind refused after only two chances by default (three documented)",
+        "agents/partner_model.py",
+        "def refused_kinds(self, min_chances: float = 3.0,",
+        "def refused_kinds(self, min_chances: float = 2.0,",
+        gate("partner_model"),
+    ),
+    Bug(
+        "fresh93 population gen: too few task-solving candidates not refused by the --candidates message",
+        "training/population_gen.py",
+        "if len(kept) < need:",
+        "if len(candidates) < need:",
+        gate("population_gen"),
+    ),
+    Bug(
+        "fresh93 report: a study with one n/a score writes no profiles.png nor intervals.png",
+        "training/report.py",
+        '    if frame["score"].notna().any():\n        profiles_png',
+        '    if frame["score"].notna().all():\n        profiles_png',
+        gate("report"),
+    ),
+    Bug(
+        "fresh93 stalls: a run's tasks read from its first log row (0), so no cell counts as solvable",
+        "training/stalls.py",
+        'int(log["tasks_solved"].max())',
+        'int(log["tasks_solved"].min())',
+        gate("stalls"),
+    ),
+    Bug(
+        "fresh93 switching: --seeds 0 accepted (a sweep of no run), not refused",
+        "training/switching.py",
+        'check_int(config.seeds, "--seeds", minimum=1)',
+        'check_int(config.seeds, "--seeds", minimum=0)',
+        gate("switching"),
+    ),
+    Bug(
+        "fresh93 baselines compare: no evaluation at the last step when the budget ends between evaluations",
+        "training/baselines/compare.py",
+        "if not curve.curve or curve.curve[-1][0] != result.num_timesteps:",
+        "if not curve.curve:",
+        gate("baselines_compare"),
+    ),
+    Bug(
+        "fresh93 baselines comparison: a one-seed comparison gets an aggregate without intervals, not none",
+        "training/baselines/comparison.py",
+        "if config.seeds < 2 or not rows:",
+        "if config.seeds < 1 or not rows:",
+        gate("baselines_comparison"),
+    ),
+    Bug(
+        "fresh93 baselines envs: a partner's continued key=value glued on without its comma",
+        "training/baselines/envs.py",
+        'specs[-1] += "," + piece',
+        "specs[-1] += piece",
+        gate("baselines_envs"),
+    ),
+)
+"""Round 93, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 84-85, each bug run against its module's gate tests
+from modules.toml: the family-out partners, the headroom report, the adversarial, base, cooperative,
+lazy, no-handover and replay humans, the learned partner model, the population generator, the study
+report, the stalls table, the switching sweep and the SB3 baselines' comparison, its summary and its
+environments. 12 were caught blind; the four misses (the cooperative human's give class keyed on take,
+too few task-solving candidates not refused by the --candidates message, a study with an n/a score
+drawing no profiles or intervals, --seeds 0 accepted by the switching sweep) are pinned in ROUND93_TESTS."""
+ROUND93_TESTS = "tests/training/test_pinned_round93.py"
+"""The values round 93's missed bugs changed, pinned after the round: every round-93 bug runs them too."""
+FRESH93 = pinned_after(FRESH93, ROUND93_TESTS)
+FRESH94: tuple[Bug, ...] = (
+    Bug(
+        "fresh94 human random: feasible_only=True draws among all actions, False among the feasible ones",
+        "agents/humans/random_human.py",
+        "if self.feasible_only else list(range(world.n_actions(agent)))",
+        "if not self.feasible_only else list(range(world.n_actions(agent)))",
+        gate("human_random"),
+    ),
+    Bug(
+        "fresh94 meta base: entropy_bits of a distribution with a zero probability is nan, not its entropy",
+        "agents/meta/base.py",
+        "nz = p[p > 0]",
+        "nz = p[p >= 0]",
+        gate("meta_base"),
+    ),
+    Bug(
+        "fresh94 meta coin: the coin is always fair, whatever p the random criterion was given",
+        "agents/meta/coin.py",
+        "return bool(self.rng.random() < self.p)",
+        "return bool(self.rng.random() < 0.5)",
+        gate("meta_coin"),
+    ),
+    Bug(
+        "fresh94 paper experiment: planner_share_last_third is the planner's share of the first two thirds",
+        "training/paper.py",
+        'tail = log[log["time"] >= cut]',
+        'tail = log[log["time"] < cut]',
+        gate("paper_experiment"),
+    ),
+    Bug(
+        "fresh94 partnering: a fixed-model robot's estimate reads 'blocked=0' instead of '' with nothing blocked",
+        "agents/robots/partnering.py",
+        'return f"blocked={len(self.monitor.blocked)}" if self.monitor.blocked else ""',
+        'return f"blocked={len(self.monitor.blocked)}"',
+        gate("partnering"),
+    ),
+    Bug(
+        "fresh94 planner domain: a robot-to-human handover charges the carry when the spot is at the handover",
+        "agents/planner/domain.py",
+        "carry = t.goto if not spot & d.handover else 0.0",
+        "carry = t.goto if spot & d.handover else 0.0",
+        gate("planner_domain"),
+    ),
+    Bug(
+        "fresh94 planner expectimax: an infinite expected cost is reported as 'budget', not 'no plan'",
+        "agents/planner/expectimax.py",
+        'if math.isinf(cost):\n        return ExpectimaxOutcome(None, math.inf, Terms(), len(order), "no plan")',
+        'if math.isinf(cost):\n        return ExpectimaxOutcome(None, math.inf, Terms(), len(order), "budget")',
+        gate("planner_expectimax"),
+    ),
+    Bug(
+        "fresh94 planner halfstep: ties at a robot node go to the smaller cost-so-far, not the larger",
+        "agents/planner/halfstep.py",
+        "push(heap, (g2 + h, -g2, len(nodes)))",
+        "push(heap, (g2 + h, g2, len(nodes)))",
+        gate("planner_halfstep"),
+    ),
+    Bug(
+        "fresh94 planner models: a human model with p_idle=0 says it is stochastic (expectimax for all)",
+        "agents/planner/models.py",
+        "return self.p_idle > 0.0",
+        "return self.p_idle >= 0.0",
+        gate("planner_models"),
+    ),
+    Bug(
+        "fresh94 reproduce: the adaptation figures' progress total is one short (the summary figure uncounted)",
+        "training/reproduce.py",
+        'progress("adaptation figures", len(adapt.switches) + 1)',
+        'progress("adaptation figures", len(adapt.switches))',
+        gate("reproduce_driver"),
+    ),
+    Bug(
+        "fresh94 study files: a partner in no group (plain humans) is reported in the 'validation' group",
+        "training/study.py",
+        'return "validation" if human_label in self.validation else ""',
+        'return "validation"',
+        gate("study_files"),
+    ),
+    Bug(
+        "fresh94 views: a truncated human view still lets the robot act (robot_action and reward change)",
+        "agents/views.py",
+        "if not (done or truncated):",
+        "if not done:",
+        gate("views"),
+    ),
+    Bug(
+        "fresh94 homogenize: a padded index sent for a truncated agent is swapped for a real action",
+        "hg_marl/wrappers/homogenize.py",
+        "live = not (self.terminations.get(agent, False) or self.truncations.get(agent, False))",
+        "live = not self.terminations.get(agent, False)",
+        gate("wrapper_homogenize"),
+    ),
+    Bug(
+        "fresh94 baselines hyperparams: recurrent_ppo accepts n_steps x n_envs of 1 (a one-step rollout)",
+        "training/baselines/hyperparams.py",
+        'if algo in ("ppo", "maskable_ppo", "recurrent_ppo") and',
+        'if algo in ("ppo", "maskable_ppo") and',
+        gate("baselines_hyperparams"),
+    ),
+    Bug(
+        "fresh94 baselines train: DQN's train_freq given as [4, 'step'] reads the unit, not the frequency",
+        "training/baselines/train.py",
+        "per_env = per_env[0]",
+        "per_env = per_env[-1]",
+        gate("baselines_train"),
+    ),
+    Bug(
+        "fresh94 batch rules: a give is feasible with an empty hand wherever the robot may give",
+        "hg_marl/core/batch.py",
+        "out[:, give : give + n] = held & self.give_ok[at][:, None]",
+        "out[:, give : give + n] = self.give_ok[at][:, None]",
+        gate("batch_rules"),
+    ),
+)
+"""Round 94, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 85-86, each bug run against its module's gate tests
+from modules.toml: the random human, the criteria's base, the coin criterion, the paper's experiment, the
+partnering, the planner's domain, expectimax, half-step search and human models, the reproduce driver,
+the study files, the single-agent views, the homogenising wrapper, the baselines' hyperparameters and
+training, and the batched rules. 15 were caught blind; the miss (``recurrent_ppo`` accepting a rollout of
+one step, n_steps x n_envs of 1) is pinned in ROUND94_TESTS."""
+ROUND94_TESTS = "tests/training/test_pinned_round94.py"
+"""The values round 94's missed bugs changed, pinned after the round: every round-94 bug runs them too."""
+FRESH94 = pinned_after(FRESH94, ROUND94_TESTS)
+
 
 ALL = (
     BUGS
@@ -11838,6 +12340,10 @@ ALL = (
     + FRESH88
     + FRESH89
     + FRESH90
+    + FRESH91
+    + FRESH92
+    + FRESH93
+    + FRESH94
 )
 
 
@@ -11858,6 +12364,9 @@ def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]
     failed = _failures(proc)
     # a test that also fails without the bug (in this copy, on this machine) caught nothing
     source.write_text(text)
+    if proc.returncode == HUNG:  # a run that does not end is seen: caught if the tests end without the bug
+        again = _pytest(scratch, tests)
+        return again.returncode == 0, [f"(the gate's tests ran past {HANG_AFTER} s)"] if again.returncode == 0 else []
     again = _pytest(scratch, failed or tests)
     if again.returncode == 0:
         return True, failed
@@ -11866,9 +12375,32 @@ def check(bug: Bug, work: Path, tests_rev: str | None) -> tuple[bool, list[str]]
     return bool(real), real
 
 
+HANG_AFTER = 900
+"""Seconds a gate's tests may run with a bug planted (they take well under a minute without one)."""
+HUNG = 124
+"""The return code :func:`_pytest` gives a run it stopped after :data:`HANG_AFTER` seconds (as `timeout` does)."""
+
+
 def _pytest(scratch: Path, tests: list[str]) -> subprocess.CompletedProcess[str]:
+    """The tests run in the scratch copy; a run past :data:`HANG_AFTER` seconds is stopped (a bug
+    that makes a search never end is seen as a run that does not end, not waited for)."""
     cmd = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-m", "not slow", "-rfE", *tests]
-    return subprocess.run(cmd, cwd=scratch, env=_env(scratch), capture_output=True, text=True)
+    proc = subprocess.Popen(
+        cmd,
+        cwd=scratch,
+        env=_env(scratch),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    try:
+        out, err = proc.communicate(timeout=HANG_AFTER)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, err = proc.communicate()
+        return subprocess.CompletedProcess(cmd, HUNG, out, err)
+    return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
 
 
 def _failures(proc: subprocess.CompletedProcess[str]) -> list[str]:
