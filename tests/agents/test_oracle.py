@@ -51,7 +51,7 @@ def brute_force_rate(world: World, human_name: str) -> float:
     acts_r, acts_h = world.actions(Agent.ROBOT), world.actions(Agent.HUMAN)
 
     def replies(mid: State, out_ok: bool, a: int, d: float) -> list[tuple[State, float, float]]:
-        dist = human.distribution(world, mid, a if out_ok else -1)  # type: ignore[attr-defined]
+        dist = human.distribution(world, mid, a if out_ok else -1)
         return [
             (
                 world.apply(mid, Agent.HUMAN, acts_h[h]).state,
@@ -92,12 +92,12 @@ def brute_force_rate(world: World, human_name: str) -> float:
         mu[index[s]] += q
     # options[s, c]: the lazy chain's row, reward and time of choice c at state s.
     trans, reward, time = np.zeros((n, width, n)), np.zeros((n, width)), np.ones((n, width))
-    for s, options in enumerate(rows):
+    for i, options in enumerate(rows):
         for c, (row, r, tau) in enumerate(options):
-            trans[s, c, s] = 0.5
+            trans[i, c, i] = 0.5
             for j, q in row.items():
-                trans[s, c, j] += q / 2
-            reward[s, c], time[s, c] = r, tau
+                trans[i, c, j] += q / 2
+            reward[i, c], time[i, c] = r, tau
     policies = np.array(list(itertools.product(*(range(len(o)) for o in rows))), dtype=np.int64)
     best = 0.0
     for chunk in np.array_split(policies, max(1, len(policies) // 20_000)):
@@ -143,11 +143,11 @@ def measured_rate(robot: Actor, human: str, hours: float, seed: int = 0) -> floa
 
 
 @pytest.fixture(scope="module")
-def cooperative_oracle():  # type: ignore[no-untyped-def]
+def cooperative_oracle():
     return oracle_rate("paper2015", "cooperative")
 
 
-def test_oracle_robot_achieves_the_predicted_rate_in_the_env(cooperative_oracle) -> None:  # type: ignore[no-untyped-def]
+def test_oracle_robot_achieves_the_predicted_rate_in_the_env(cooperative_oracle) -> None:
     for human in ("lazy", "random"):
         result = oracle_rate("paper2015", human)
         assert measured_rate(OracleRobot(result), human, hours=5) == pytest.approx(result.rate_per_hour, rel=0.03)
@@ -156,7 +156,7 @@ def test_oracle_robot_achieves_the_predicted_rate_in_the_env(cooperative_oracle)
     assert robot.off_model == 0
 
 
-def test_planner_robot_reaches_95_percent_and_nobody_beats_the_oracle(cooperative_oracle) -> None:  # type: ignore[no-untyped-def]
+def test_planner_robot_reaches_95_percent_and_nobody_beats_the_oracle(cooperative_oracle) -> None:
     planner = measured_rate(make_robot("planner"), "cooperative", hours=2)
     assert planner >= 0.95 * cooperative_oracle.rate_per_hour
     assert planner <= cooperative_oracle.rate_per_hour * 1.03  # sampling noise of the layouts only

@@ -24,27 +24,13 @@ from hg_marl.agents.headroom import JointModel
 from hg_marl.agents.models.answers import stationary_human
 from hg_marl.agents.oracle import oracle_rate
 from hg_marl.core import World
-from hg_marl.core.scenario import layout_count, parse_scenario
+from hg_marl.core.scenario import layout_count
 from hg_marl.training.baselines import recurrent_ppo_sb3
 from hg_marl.training.baselines.recurrent_ppo_sb3 import RecurrentSb3Config, greedy_play
+from tests.agents.test_oracle import TINY
 
 # one object on spot a or h, two robot starts (near, far): four initial layouts, each of probability 1/4
-TWO_STARTS = parse_scenario(
-    {
-        "name": "two_starts",
-        "robot_locations": ["near", "far"],
-        "handover_locations": ["near"],
-        "robot_start": ["near", "far"],
-        "objects": [{"name": "o1"}],
-        "bins": [{"name": "bin", "robot_reach": ["far"]}],
-        "spots": [
-            {"name": "a", "robot_reach": ["near"]},
-            {"name": "h", "human_reach": True},
-            {"name": "s", "robot_reach": ["near"], "human_reach": True},
-        ],
-        "layout": [{"count": 1, "spots": ["a", "h"]}],
-    }
-)
+TWO_STARTS = TINY  # the oracle tests' one-object table, which has two robot starts
 
 
 @pytest.mark.parametrize("spec", ["cooperative", "random"])

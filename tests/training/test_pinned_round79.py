@@ -19,25 +19,10 @@ import pytest
 
 from hg_marl.agents.models.layouts import canonical_layouts, layout_distribution
 from hg_marl.core import State, World
-from hg_marl.core.scenario import parse_scenario
+from tests.agents.test_oracle import TINY
 
 # one object on spot a or h, two robot starts (near, far): four initial tables, each of probability 1/4
-TWO_STARTS = parse_scenario(
-    {
-        "name": "two_starts",
-        "robot_locations": ["near", "far"],
-        "handover_locations": ["near"],
-        "robot_start": ["near", "far"],
-        "objects": [{"name": "o1"}],
-        "bins": [{"name": "bin", "robot_reach": ["far"]}],
-        "spots": [
-            {"name": "a", "robot_reach": ["near"]},
-            {"name": "h", "human_reach": True},
-            {"name": "s", "robot_reach": ["near"], "human_reach": True},
-        ],
-        "layout": [{"count": 1, "spots": ["a", "h"]}],
-    }
-)
+TWO_STARTS = TINY  # the oracle tests' one-object table, which has two robot starts
 
 
 def test_each_table_of_a_scenario_with_two_robot_starts_has_its_share_of_the_starts() -> None:
