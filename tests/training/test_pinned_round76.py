@@ -30,7 +30,7 @@ from hg_marl.agents.views import RobotView
 from hg_marl.core import Agent, Kind, World
 from hg_marl.policy import Turn
 from hg_marl.training.baselines.bc import load_traces
-from hg_marl.training.baselines.callbacks import _Every
+from tests.training.test_pinned_baselines_callbacks_gate import _Fires, _Model, _start, _steps
 
 WORLD = World("paper2015")
 
@@ -131,34 +131,11 @@ def test_traces_with_other_action_names_are_refused(tmp_path: Path) -> None:
 # -- the callbacks' schedule: one firing per reached multiple -------------------------------
 
 
-class _Model:
-    """What a callback reads of an SB3 model: the step count, its environment and logger."""
-
-    def __init__(self) -> None:
-        self.num_timesteps = 0
-        self.logger = None
-
-    def get_env(self) -> None:
-        return None
-
-
-class _Fires(_Every):
-    def __init__(self, freq: int) -> None:
-        super().__init__(freq)
-        self.fired: list[int] = []
-
-    def _fire(self) -> None:
-        self.fired.append(self.num_timesteps)
-
-
 def test_a_jump_over_several_multiples_fires_once_and_waits_for_the_next_multiple() -> None:
     # period 100 from 0: the jump to 250 crosses 100 and 200 and fires once; the next
     # multiple above 250 is 300, so 260 and 299 fire nothing and 300 fires
     model = _Model()
     callback = _Fires(100)
-    callback.init_callback(model)
-    callback.on_training_start({}, {})
-    for count in (250, 260, 299, 300, 310):
-        model.num_timesteps = count
-        assert callback.on_step() is True
+    _start(callback, model)
+    assert _steps(callback, model, [250, 260, 299, 300, 310]) == [True] * 5
     assert callback.fired == [250, 300]

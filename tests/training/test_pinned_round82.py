@@ -31,10 +31,9 @@ import pytest
 from hg_marl.agents.compiled import CompileError
 from hg_marl.agents.compiled_robot import robot_states
 from hg_marl.agents.humans.switching import SwitchingHuman
-from hg_marl.agents.memory_numpy import MemoryShape, check_memory_file
+from hg_marl.agents.memory_numpy import check_memory_file
 from hg_marl.agents.meta.base import HabitView
 from hg_marl.agents.meta.learning_state import LearningStateCriterion
-from hg_marl.agents.model_file import ModelFile
 from hg_marl.agents.models.cache import result_key
 from hg_marl.agents.models.layouts import layout_distribution
 from hg_marl.agents.observed_partner import ObservedPartner
@@ -42,9 +41,9 @@ from hg_marl.agents.oracle import oracle_rate
 from hg_marl.agents.planner.tables import split_entries
 from hg_marl.core import Agent, Kind, World
 from hg_marl.core.errors import ConfigError, HgMarlError, ModelFileError
-from hg_marl.envs.history import history_size
 from hg_marl.training.baselines.ppo_recurrent import config_from_options
 from hg_marl.training.limits import check_count
+from tests.training.test_pinned_round73 import _memory_file  # the same well-formed memory file
 
 
 class _Logged:
@@ -86,25 +85,6 @@ def test_check_count_raises_the_callers_error_type_for_every_refusal(value: obje
     # a bool, a fraction, below the minimum 1, over the limit 10: each refused with the type the caller gave
     with pytest.raises(_CallersError, match="--seeds"):
         check_count(value, "--seeds", 10, error=_CallersError)
-
-
-def _memory_file(**fields: object) -> ModelFile:
-    """A well-formed feed-forward ``memory`` file (history 1, cap 1, width 1), ``fields`` put over its header."""
-    facts, actions = ("f0", "f1"), ("a0", "a1", "wait")
-    obs_size = len(facts) + history_size(1, 1)
-    shape = MemoryShape(obs_size, len(actions), 1, False, 1, 1)
-    header: dict[str, object] = {
-        "kind": "memory",
-        "fact_names": list(facts),
-        "action_names": list(actions),
-        "history": 1,
-        "history_cap": 1,
-        "hidden": 1,
-        "obs_size": obs_size,
-        "recurrent": False,
-    }
-    header.update(fields)
-    return ModelFile(Path("m.json"), header, {name: np.zeros(dims) for name, dims in shape.arrays().items()})
 
 
 def test_a_memory_header_with_a_history_cap_of_0_is_refused_naming_the_field() -> None:
