@@ -192,7 +192,7 @@ class _Index:
         ids = np.arange(self.n, self.n + len(new), dtype=np.int64)
         out[fresh] = ids
         if len(new):
-            order = np.argsort(new, kind="stable")
+            order = np.argsort(new)  # distinct keys
             self.sorted = np.insert(self.sorted, pos[fresh][order], new[order])
             self.ids = np.insert(self.ids, pos[fresh][order], ids[order])
             self.by_id.append(new)

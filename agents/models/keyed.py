@@ -1,13 +1,18 @@
-"""Packed int64 keys: deduplicated by hashing, looked up in sorted order, and tables of segments per key.
+"""Packed int64 keys: deduplicated by sorting or hashing, looked up in sorted order, and tables of segments per key.
 
-Why hashing: ``np.unique`` sorts the whole batch, and numpy 2's hash-based ``np.unique``
-without an inverse is slower still on these keys; ``pandas.factorize`` (a hash table)
-finds the distinct keys in one pass, and only the distinct ones are sorted. Why sorted
-queries: ``searchsorted`` with queries in random order misses the cache at every probe
-of a large table; sorting the queries first and scattering the answers back gives the
-same positions many times faster on the headroom's tables of millions of keys. Every
-function here returns exactly what its ``numpy`` counterpart returns (a test compares
-them on random keys), so a model built with them is the same, bit for bit.
+Why sorting for the distinct keys with their inverse: numpy's sort of int64 keys is
+vectorised (AVX-512 or AVX2 where the CPU has them), and on the builder's batches (each
+key about twice) ``np.unique(..., return_inverse=True)`` is faster than a
+``pandas.factorize`` hash table followed by a sort of the distinct keys (measured in
+``docs/exact-references.md``). Why hashing elsewhere: the distinct keys in order of
+first occurrence, or without an inverse, come from ``pandas.unique`` in one pass. Why
+sorted queries: ``searchsorted`` with queries in random order misses the cache at every
+probe of a large table; sorting the queries first and scattering the answers back gives
+the same positions many times faster on the headroom's tables of millions of keys. The
+sorts of distinct keys (and of queries, whose equal members get equal positions) need no
+stable order, so they use numpy's default, the vectorised one. Every function here
+returns exactly what its ``numpy`` counterpart returns (a test compares them on random
+keys), so a model built with them is the same, bit for bit.
 
 :class:`SegmentTable` is the answer tables' layout: sorted keys, each with a segment of
 entries. Entries are appended, never moved (arrays grown by doubling); only the keys and
@@ -40,7 +45,7 @@ def ranges(lo: np.ndarray, size: np.ndarray) -> np.ndarray:
 
 def _sorted(codes: np.ndarray, found: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``factorize``'s distinct keys sorted, the order that sorts them, and each code's rank among them."""
-    order = np.argsort(found, kind="stable")
+    order = np.argsort(found)  # distinct keys: any sort gives the same order
     rank = np.empty(len(order), dtype=np.int64)
     rank[order] = np.arange(len(order))
     return np.asarray(found)[order], order, rank[codes]
@@ -58,8 +63,8 @@ def first_unique(keys: np.ndarray) -> np.ndarray:
 
 def unique_inverse(keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``np.unique(keys, return_inverse=True)``: the distinct keys sorted, and each key's position among them."""
-    uniq, _, inverse = _sorted(*pd.factorize(keys))
-    return uniq, inverse
+    uniq, inverse = np.unique(keys, return_inverse=True)
+    return uniq, inverse.reshape(-1)
 
 
 def unique_first_inverse(keys: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -76,7 +81,7 @@ def positions(sorted_keys: np.ndarray, queries: np.ndarray) -> np.ndarray:
     """``np.searchsorted(sorted_keys, queries)``, with large unsorted queries probed in sorted order."""
     if len(queries) <= SORT_QUERIES or bool(np.all(queries[1:] >= queries[:-1])):
         return np.searchsorted(sorted_keys, queries)
-    order = np.argsort(queries, kind="stable")
+    order = np.argsort(queries)  # equal queries get equal positions whatever their order
     found = np.empty(len(queries), dtype=np.int64)
     found[order] = np.searchsorted(sorted_keys, queries[order])
     return found
@@ -198,7 +203,7 @@ class SegmentTable:
         self.n_entries = end
 
         def merged() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-            order = np.argsort(keys, kind="stable")
+            order = np.argsort(keys)  # distinct keys
             at = np.searchsorted(self.keys, keys[order])
             return order, at, np.insert(self.keys, at, keys[order])
 
