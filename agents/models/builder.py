@@ -206,6 +206,16 @@ class _Index:
     def keys(self) -> np.ndarray:
         return np.concatenate([np.zeros(0, dtype=np.int64), *self.by_id])  # in order of their ids
 
+    def keys_between(self, lo: int, hi: int) -> np.ndarray:
+        """``keys()[lo:hi]``, copying only the batches of ids it overlaps (not every key known)."""
+        parts, start = [], 0
+        for block in self.by_id:
+            end = start + len(block)
+            if end > lo and start < hi:
+                parts.append(block[max(lo - start, 0) : hi - start])
+            start = end
+        return parts[0] if len(parts) == 1 else np.concatenate([np.zeros(0, dtype=np.int64), *parts])
+
 
 @dataclass
 class _Front:
@@ -245,7 +255,7 @@ class _Front:
         failed_actions: bool,
     ) -> _Front:
         """The front of the known states ``lo:hi`` (those of them that are known)."""
-        b, _ = packer.unpack(index.keys()[lo:hi] if len(index.by_id) > 1 else index.by_id[0][lo:hi])
+        b, _ = packer.unpack(index.keys_between(lo, hi))
         hi = lo + len(b)
         mask = rules.masks(b, Agent.ROBOT)
         n_robot = rules.n_actions[Agent.ROBOT]

@@ -163,8 +163,8 @@ class InfoMasks(VecEnvWrapper):
         return attr_name == "action_masks"
 
     def env_method(self, method_name: str, *args: Any, indices: Any = None, **kwargs: Any) -> list[Any]:
-        if method_name == "action_masks":
-            return list(self._masks)
+        if method_name == "action_masks":  # the envs asked for, as ``BatchedVecEnv`` answers
+            return [self._masks[i] for i in self._get_indices(indices)]
         return self.venv.env_method(method_name, *args, indices=indices, **kwargs)
 
 

@@ -180,6 +180,20 @@ def test_info_masks_serve_all_actions_until_infos_carry_masks_then_the_latest() 
     np.testing.assert_array_equal(np.stack(masks), [[1, 0, 1], [0, 0, 1]])
 
 
+def test_info_masks_serve_only_the_envs_asked_for() -> None:
+    """SB3's ``indices``: None is every env, an int one env, a list those envs, in its order."""
+    inner = ScriptedVec()
+    venv = InfoMasks(inner)
+    inner.reset_infos = [{"action_mask": [1, 0, 1]}, {"action_mask": [0, 0, 1]}]
+    venv.reset()
+    assert [m.tolist() for m in venv.env_method("action_masks", indices=1)] == [[False, False, True]]
+    assert [m.tolist() for m in venv.env_method("action_masks", indices=[1, 0])] == [
+        [False, False, True],
+        [True, False, True],
+    ]
+    assert len(venv.env_method("action_masks", indices=None)) == 2
+
+
 def test_info_masks_count_each_action_sent_outside_the_served_mask() -> None:
     """Masks [1,0,1] and [0,0,1]: actions (1, 0) are both outside (2), (2, 2) neither, (0, 1) one."""
     inner = ScriptedVec()

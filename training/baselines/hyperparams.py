@@ -112,7 +112,7 @@ def load_hyperparams(
     """Resolve the hyperparameters of ``algo`` for ``scenario``, with overrides.
 
     Args:
-        algo: ``ppo``, ``a2c``, ``dqn`` or ``maskable_ppo``.
+        algo: a key of :data:`ALGOS` (``ppo``, ``a2c``, ``dqn``, ``maskable_ppo`` or ``recurrent_ppo``).
         scenario: an entry of the YAML file; falls back to ``default``. A ``generated:...``
             spec looks up ``generated``.
         overrides: ``key=value`` strings (see the module docstring).
