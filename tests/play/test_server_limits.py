@@ -21,7 +21,7 @@ pytest.importorskip("starlette")
 pytest.importorskip("uvicorn")
 
 from hg_marl.core.errors import ConfigError
-from hg_marl.training.play.server_limits import ServerLimits
+from hg_marl.training.play.server_limits import ServerLimits, head_bytes
 from hg_marl.training.play.session import PlaySession
 from hg_marl.training.play.web import TOKEN_HEADER, Server
 
@@ -190,3 +190,34 @@ def test_every_connection_within_the_cap_is_served_when_the_cap_is_full(session:
         finally:
             for sock in held:
                 sock.close()
+
+
+def test_head_bytes_counts_the_request_line_and_headers_as_sent() -> None:
+    sent = b"GET /board?token=abc HTTP/1.1\r\nhost: 127.0.0.1:8000\r\nx-pad: aaa\r\n\r\n"
+    scope = {
+        "method": "GET",
+        "path": "/board",
+        "raw_path": b"/board",
+        "query_string": b"token=abc",
+        "headers": [(b"host", b"127.0.0.1:8000"), (b"x-pad", b"aaa")],
+    }
+    assert head_bytes(scope) == len(sent) == 67
+    assert head_bytes({**scope, "query_string": b""}) == len(sent) - len(b"?token=abc")
+
+
+def test_a_head_over_max_header_bytes_that_arrives_whole_is_refused_431(session: PlaySession) -> None:
+    """h11 bounds only an unfinished head: one sent whole in one piece reaches the app, which refuses it.
+
+    ``max_header_bytes=2048``; a request with the token and a 3,000-byte header, sent at once,
+    is answered 431; the same request with a 1,000-byte header is served (200).
+    """
+    limits = ServerLimits(idle_timeout=GUARD * 2, header_timeout=GUARD * 2, max_header_bytes=2048)
+    for srv in _serve(session, limits):
+        for pad, status in ((3000, b"HTTP/1.1 431"), (1000, b"HTTP/1.1 200")):
+            with _connect(srv) as sock:
+                line = f"GET /board?token={srv.token} HTTP/1.1\r\nHost: 127.0.0.1:{srv.port}\r\n"
+                sock.sendall(f"{line}X-Pad: {'a' * pad}\r\n\r\n".encode())
+                answer = b""
+                while len(answer) < 12 and (chunk := sock.recv(12 - len(answer))):  # it may come in pieces
+                    answer += chunk
+                assert answer == status

@@ -16,8 +16,11 @@ limit, a slot that a real player then cannot get. The limits here, all in
   :attr:`ServerLimits.body_timeout` seconds: the connection is closed, and the app (which
   reads bodies with :func:`read_body`) answers 408 if it was still waiting;
 - **connections**: at most :attr:`ServerLimits.max_connections` open at once (one more is
-  closed as soon as it is accepted; uvicorn answers 503 to requests beyond the same count),
-  with headers of at most :attr:`ServerLimits.max_header_bytes`.
+  closed as soon as it is accepted; uvicorn answers 503 to requests beyond the same count);
+- **head size**: a request line and headers of at most :attr:`ServerLimits.max_header_bytes`.
+  h11 holds an unfinished head to that size (uvicorn answers 400 beyond it), but a head
+  that arrives whole in one read is parsed whatever its size, so the app refuses such a
+  request too (431), measured by :func:`head_bytes`.
 
 The timers live in :func:`timed_protocol`, a subclass of uvicorn's h11 protocol (the
 one layer that sees bytes arrive). Tests pass short limits; docs/inputs.md states the
@@ -31,7 +34,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import h11
-from starlette.types import Message, Receive
+from starlette.types import Message, Receive, Scope
 from uvicorn.protocols.http.h11_impl import H11Protocol
 
 from hg_marl.core.errors import ConfigError, check_finite, check_int
@@ -128,6 +131,14 @@ def timed_protocol(limits: ServerLimits) -> type[H11Protocol]:
                 self.transport.close()
 
     return TimedH11Protocol
+
+
+def head_bytes(scope: Scope) -> int:
+    """Bytes of an HTTP/1.1 request's line and headers as sent (``GET /p?q HTTP/1.1``, CRLFs included)."""
+    query = scope.get("query_string", b"")
+    line = len(scope["method"]) + 1 + len(scope.get("raw_path") or scope["path"].encode()) + len(" HTTP/1.1\r\n")
+    line += 1 + len(query) if query else 0
+    return line + sum(len(name) + 2 + len(value) + 2 for name, value in scope["headers"]) + 2
 
 
 async def read_body(receive: Receive, max_bytes: int, timeout: float) -> tuple[bytes, tuple[int, str] | None]:

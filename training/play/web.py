@@ -51,7 +51,7 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 from hg_marl.core import Agent
 from hg_marl.core.errors import ConfigError, HgMarlError
 from hg_marl.training.play import explain
-from hg_marl.training.play.server_limits import ServerLimits, read_body, replay_body
+from hg_marl.training.play.server_limits import ServerLimits, head_bytes, read_body, replay_body
 from hg_marl.training.play.session import PlaySession
 from hg_marl.training.play.svg import table_svg
 
@@ -79,11 +79,21 @@ class Guard:
         token: the session's secret.
         port: the port served (the Host and Origin checks include it).
         body_timeout: seconds a POST body may take to arrive (then 408).
+        max_header_bytes: the largest request line and headers (then 431), as
+            :class:`ServerLimits` states it.
     """
 
-    def __init__(self, app: ASGIApp, token: str, port: int, body_timeout: float = ServerLimits.body_timeout) -> None:
+    def __init__(
+        self,
+        app: ASGIApp,
+        token: str,
+        port: int,
+        body_timeout: float = ServerLimits.body_timeout,
+        max_header_bytes: int = ServerLimits.max_header_bytes,
+    ) -> None:
         self.app = app
         self.body_timeout = body_timeout
+        self.max_header_bytes = max_header_bytes
         self.token = token
         self.hosts = frozenset({f"127.0.0.1:{port}", f"localhost:{port}"})
         self.origins = frozenset(f"http://{h}" for h in self.hosts)
@@ -94,6 +104,8 @@ class Guard:
 
     def refusal(self, scope: Scope) -> tuple[int, str] | None:
         """Why a request is refused (status, message), or None when it may proceed."""
+        if head_bytes(scope) > self.max_header_bytes:
+            return 431, f"request line and headers larger than {self.max_header_bytes} bytes"
         headers = Headers(scope=scope)
         if headers.get("host", "") not in self.hosts:
             return 403, "unknown Host: this server answers only to 127.0.0.1 and localhost on its port"
@@ -354,7 +366,7 @@ def create_app(
             Route("/quit", quit_, methods=["POST"]),
         ]
     )
-    return Guard(app, token, port, limits.body_timeout)
+    return Guard(app, token, port, limits.body_timeout, limits.max_header_bytes)
 
 
 def check_port(port: int) -> None:
