@@ -183,18 +183,25 @@ class _Index:
     def add(self, keys: np.ndarray) -> np.ndarray:
         """Give ids to the keys not known yet (``keys`` distinct, in the order ids are wanted); every key's id."""
         pos = np.searchsorted(self.sorted, keys)
-        hit = pos < len(self.sorted)
-        hit[hit] = self.sorted[pos[hit]] == keys[hit]
-        out = np.empty(len(keys), dtype=np.int64)
-        out[hit] = self.ids[pos[hit]]
+        if len(self.sorted):
+            at = np.minimum(pos, len(self.sorted) - 1)
+            hit = self.sorted[at] == keys
+            out = self.ids[at]  # a key not known yet gets its new id below
+        else:
+            hit, out = np.zeros(len(keys), dtype=bool), np.empty(len(keys), dtype=np.int64)
         fresh = np.flatnonzero(~hit)
         new = keys[fresh]
         ids = np.arange(self.n, self.n + len(new), dtype=np.int64)
         out[fresh] = ids
         if len(new):
-            order = np.argsort(new)  # distinct keys
-            self.sorted = np.insert(self.sorted, pos[fresh][order], new[order])
-            self.ids = np.insert(self.ids, pos[fresh][order], ids[order])
+            where = pos[fresh]
+            if np.any(new[1:] < new[:-1]):  # distinct keys given unsorted (the builder's are sorted)
+                order = np.argsort(new)
+                where, new_sorted, ids_sorted = where[order], new[order], ids[order]
+            else:
+                new_sorted, ids_sorted = new, ids
+            self.sorted = np.insert(self.sorted, where, new_sorted)
+            self.ids = np.insert(self.ids, where, ids_sorted)
             self.by_id.append(new)
             self.n += len(new)
         return out
@@ -422,7 +429,9 @@ def build_model(
                 lo = hi
                 continue
             # the next states of the distinct keys' answers (every one is some pair's): fewer than the pairs'
-            uniq, inv = unique_inverse(np.concatenate([o[2].next for o in outcomes]))
+            uniq, inv = unique_inverse(
+                outcomes[0][2].next if len(outcomes) == 1 else np.concatenate([o[2].next for o in outcomes])
+            )
             ids = index.add(uniq)[inv]  # sorted: new states get ids in key order
             at = 0
             for flow, (tcount, pair_of, ans, entry) in zip(flows, outcomes, strict=True):
