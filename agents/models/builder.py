@@ -31,7 +31,15 @@ from tqdm import tqdm
 
 from hg_marl.agents.models.answers import AnswerTable, KeyBatch
 from hg_marl.agents.models.budget import Budget
-from hg_marl.agents.models.keyed import first_unique, positions, ranges, starts_of, unique, unique_inverse
+from hg_marl.agents.models.keyed import (
+    first_unique,
+    nonzero_2d,
+    positions,
+    ranges,
+    starts_of,
+    unique,
+    unique_inverse,
+)
 from hg_marl.agents.models.lazy import TableTransitions
 from hg_marl.agents.models.packing import StatePacker
 from hg_marl.core import Agent, State, World
@@ -268,12 +276,12 @@ class _Front:
         n_robot = rules.n_actions[Agent.ROBOT]
         if failed_actions:  # an extra column: the first infeasible action, after the feasible ones
             fails = np.logical_not(mask.all(axis=1)).reshape(-1, 1)
-            ps, pa = np.nonzero(np.concatenate([mask, fails], axis=1))  # row-major: in option order
+            ps, pa = nonzero_2d(np.concatenate([mask, fails], axis=1))  # row-major: in option order
             failing = pa == n_robot
             pa[failing] = np.argmin(mask[ps[failing]], axis=1)
             feasible = ~failing
         else:
-            ps, pa = np.nonzero(mask)
+            ps, pa = nonzero_2d(mask)
             feasible = np.ones(len(pa), dtype=bool)
         pb = b.take(ps)
         ok, d_robot, reward = rules.step(pb, Agent.ROBOT, pa, ok=feasible)

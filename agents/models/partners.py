@@ -21,6 +21,7 @@ from typing import Any, Protocol
 
 import numpy as np
 
+from hg_marl.agents.models.keyed import nonzero_2d
 from hg_marl.core import Agent, Kind, World
 from hg_marl.envs.batched import BatchedRules, BatchState
 
@@ -93,7 +94,7 @@ def _uniform(rules: BatchedRules) -> Answers:
     def answers(b: BatchState, shared: Shared | None = None, /) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         mask = (shared or Alone(rules, b)).mask
         sizes = mask.sum(axis=1)
-        rows, actions = np.nonzero(mask)
+        rows, actions = nonzero_2d(mask)
         return sizes, actions, 1.0 / sizes[rows]
 
     return answers

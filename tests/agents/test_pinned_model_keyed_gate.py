@@ -16,6 +16,7 @@ from hg_marl.agents.models.keyed import (
     SegmentTable,
     first_unique,
     known,
+    nonzero_2d,
     positions,
     unique,
     unique_first_inverse,
@@ -32,10 +33,24 @@ def test_deduplication_is_numpys(n: int) -> None:
     want_u, want_inv = np.unique(keys, return_inverse=True)
     np.testing.assert_array_equal(u, want_u)
     np.testing.assert_array_equal(inv, want_inv)
+    # and by their definition: strictly increasing distinct keys that give back every key
+    assert bool(np.all(u[1:] > u[:-1])) and set(u.tolist()) == set(keys.tolist())
+    np.testing.assert_array_equal(u[inv], keys)
     u, first, inv = unique_first_inverse(keys)
     want = np.unique(keys, return_index=True, return_inverse=True)
     for got, expected in zip((u, first, inv), want, strict=True):
         np.testing.assert_array_equal(got, expected)
+
+
+@pytest.mark.parametrize("shape", [(0, 5), (4, 0), (1, 1), (37, 35), (300, 7)])
+def test_nonzero_2d_is_numpys_row_major_pairs(shape: tuple[int, int]) -> None:
+    mask = np.random.default_rng(sum(shape)).random(shape) < 0.3
+    rows, cols = nonzero_2d(mask)
+    want_rows, want_cols = np.nonzero(mask)
+    np.testing.assert_array_equal(rows, want_rows)
+    np.testing.assert_array_equal(cols, want_cols)
+    by_hand = [(r, c) for r in range(shape[0]) for c in range(shape[1]) if mask[r, c]]
+    assert list(zip(rows.tolist(), cols.tolist(), strict=True)) == by_hand
 
 
 def test_first_unique_keeps_the_order_of_first_occurrence() -> None:
