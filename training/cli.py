@@ -165,9 +165,10 @@ def script() -> None:
     with the refusal). :func:`main` itself returns as usual: tests call it in-process.
     """
     from hg_marl.agents.models.budget import process_start
-    from hg_marl.training.commands.common import SCRIPT
+    from hg_marl.training.commands.common import SCRIPT, arm_startup_budget
 
     SCRIPT["started"] = process_start()  # the commands' time budgets count from here
+    arm_startup_budget(sys.argv)
     try:
         main()
     except SystemExit:

@@ -87,12 +87,53 @@ def _script(args: list[str], before: str = "pass") -> subprocess.CompletedProces
 
 
 def test_the_script_counts_the_time_before_the_command() -> None:
-    # 3 s pass in the process before the script runs: a 2 s budget is over at its first reading.
+    # 3 s pass in the process before the script runs: a 2 s budget is spent while it starts
+    # up, and the start-up's timer refuses it in one line, without the exit hooks.
     proc = _script(["oracle", "--scenario", "paper2015", "--max-seconds", "2"], before="time.sleep(3)")
     assert proc.returncode == 2
     (line,) = error_lines(proc.stderr)
-    spent = float(re.search(r"of wall time \(after ([0-9.]+) s\)", line).group(1))  # type: ignore[union-attr]
+    assert line.startswith("error: --max-seconds 2: over the budget of wall time while still starting up")
+    spent = float(re.search(r"\(after ([0-9.]+) s", line).group(1))  # type: ignore[union-attr]
     assert spent >= 3.0
+    assert "teardown" not in proc.stdout
+
+
+@pytest.mark.parametrize(
+    ("argv", "expected"),
+    [
+        (["oracle", "--max-seconds", "5"], 5.0),
+        (["oracle", "--max-seconds=0.5"], 0.5),
+        (["headroom", "--max-seconds", "nan"], None),
+        (["oracle", "--max-seconds", "-1"], None),
+        (["oracle", "--max-seconds", "five"], None),
+        (["oracle", "--max-seconds"], None),
+        (["oracle", "--max-states", "5"], None),
+    ],
+)
+def test_the_startup_timer_reads_only_a_positive_finite_max_seconds(argv: list[str], expected: float | None) -> None:
+    assert common._given_max_seconds(["hg-marl", *argv]) == expected
+
+
+def test_the_startup_timer_is_armed_under_the_script_and_stopped_when_the_budget_takes_over(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    import signal
+
+    monkeypatch.setattr(signal, "signal", lambda *args: None)  # keep this process's own SIGALRM handler
+    monkeypatch.setitem(common.SCRIPT, "started", None)
+    common.arm_startup_budget(["hg-marl", "oracle", "--max-seconds", "600"])
+    assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)  # in-process: nothing armed
+    monkeypatch.setitem(common.SCRIPT, "started", time.perf_counter())
+    common.arm_startup_budget(["hg-marl", "oracle", "--max-seconds", "600"])
+    try:
+        assert 0.0 < signal.getitimer(signal.ITIMER_REAL)[0] <= 600.0
+        assert common.SCRIPT["startup_timer"] is True
+        common.command_start()  # the command's budget reads the clock from here
+        assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+        assert common.SCRIPT["startup_timer"] is False
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0.0)
+        common.SCRIPT["startup_timer"] = False
 
 
 def test_the_script_leaves_without_teardown_after_a_budget_refusal() -> None:
