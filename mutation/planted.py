@@ -14129,6 +14129,10 @@ are pinned in ROUND109_TESTS."""
 ROUND109_TESTS = "tests/training/test_pinned_round109.py"
 """The values round 109's missed bugs changed, pinned after the round: every round-109 bug runs them too."""
 FRESH109 = pinned_after(FRESH109, ROUND109_TESTS)
+FRESH110: tuple[Bug, ...] = ()
+FRESH111: tuple[Bug, ...] = ()
+FRESH112: tuple[Bug, ...] = ()
+FRESH113: tuple[Bug, ...] = ()
 
 ALL = (
     BUGS
@@ -14241,6 +14245,10 @@ ALL = (
     + FRESH107
     + FRESH108
     + FRESH109
+    + FRESH110
+    + FRESH111
+    + FRESH112
+    + FRESH113
 )
 
 
