@@ -151,3 +151,16 @@ def test_the_options_the_pages_pass_a_benchmark_are_its_own(script: str) -> None
     assert out.returncode == 0, out.stderr[-2000:]
     listed = set(re.findall(r"(--[a-z][a-z-]*)", out.stdout))
     assert DOCUMENTED[script] <= listed, f"{script} has no {sorted(DOCUMENTED[script] - listed)}"
+
+
+def test_the_hand_written_eight_object_table_is_what_its_header_says() -> None:
+    """``benchmarks/eight_objects.toml`` (``model_build.py --eight``): eight tapes, four red and four
+    blue, a bin for each colour, five of them dealt on six robot-side mats and three on four of the human's."""
+    from hg_marl.core import World
+
+    world = World(str(Path(__file__).resolve().parents[1] / "benchmarks" / "eight_objects.toml"))
+    scenario = world.scenario
+    assert list(scenario.object_colours) == ["red"] * 4 + ["blue"] * 4
+    assert sorted(b.colour for b in scenario.bins) == ["blue", "red"]
+    assert [(g.count, len(g.spots)) for g in scenario.layout] == [(5, 6), (3, 4)]
+    assert world.n_objects == 8
