@@ -11,13 +11,17 @@ import math
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from hg_marl.core.atomic import FILE_MODE, atomic_write
 
 __all__ = ["FILE_MODE", "atomic_write", "write_json", "write_text"]
 
 
 def _plain(value: Any) -> Any:
-    """JSON-safe copy: NaN and infinities become None (JSON has neither)."""
+    """JSON-safe copy: NaN and infinities become None (JSON has neither), numpy's floats included."""
+    if isinstance(value, np.floating):  # float32 and float16 are not Python floats (float64 is)
+        value = float(value)
     if isinstance(value, dict):
         return {str(k): _plain(v) for k, v in value.items()}
     if isinstance(value, list | tuple):

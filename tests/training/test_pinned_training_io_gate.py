@@ -12,7 +12,6 @@ import json
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from hg_marl.training.io import write_json, write_text
 
@@ -40,14 +39,6 @@ def test_non_finite_floats_deep_inside_dicts_and_lists_are_null_and_finite_ones_
     assert json.loads(path.read_text()) == {"outer": [{"inner": [0.0, None, -2.5]}, [None, 1e300]]}
 
 
-def test_a_non_float_number_that_reads_as_nan_is_refused_not_written_as_nan(tmp_path: Path) -> None:
-    """Strict JSON: a float32 NaN is not a Python float, so it reaches ``default=float`` as NaN;
-    the writer refuses it (``allow_nan=False``) rather than write the non-JSON token ``NaN``."""
-    with pytest.raises(ValueError):
-        write_json(tmp_path / "bad.json", {"x": np.float32("nan")})
-    assert not (tmp_path / "bad.json").exists()
-
-
 def test_a_non_float_number_is_converted_by_float(tmp_path: Path) -> None:
     """``default=float``: a float32 0.5 (exact in binary) is written as the number 0.5."""
     path = write_json(tmp_path / "f.json", {"x": np.float32(0.5)})
@@ -58,3 +49,12 @@ def test_nested_keys_are_sorted_and_stringified_at_every_level(tmp_path: Path) -
     """Keys at depth two are strings too, sorted as strings ("10" before "9")."""
     path = write_json(tmp_path / "k.json", {"z": {9: 1, 10: 2}})
     assert path.read_text() == '{\n  "z": {\n    "10": 2,\n    "9": 1\n  }\n}\n'
+
+
+def test_numpys_narrow_floats_are_written_as_numbers_and_their_nan_as_null(tmp_path: Path) -> None:
+    """A float32 NaN or infinity is null like a Python one; a finite float32 is its value (0.5 is exact)."""
+    path = write_json(
+        tmp_path / "f.json",
+        {"nan": np.float32("nan"), "inf": np.float16("inf"), "half": np.float32(0.5), "rows": [np.float32("-inf")]},
+    )
+    assert json.loads(path.read_text()) == {"half": 0.5, "inf": None, "nan": None, "rows": [None]}
