@@ -241,6 +241,7 @@ def oracle_rate(
             progress=progress,
             label=f"oracle {world.scenario.name}",
         )
+        del answers  # the model holds its own copies of the answers: the solver's arrays need the room
         solution = solve(model, tolerance=tolerance, max_iterations=max_iterations, budget=budget)
     expected = solution.seconds_per_task
     rate = 0.0 if math.isinf(expected) else HOUR / expected
