@@ -145,8 +145,9 @@ def counting_bar(total: int, desc: str) -> tuple[Any, Callable[..., None]]:
 
 SCRIPT: dict[str, Any] = {"started": None, "over_budget": False, "startup_timer": False}
 """The ``hg-marl`` script's state: when its process started (None when a command is called
-in-process, as tests do) and whether the command was refused over its budget (set by
-:func:`over_budget`; the script then leaves at once, without freeing what was computed)."""
+in-process, as tests do), whether the command was refused over its budget (set by
+:func:`over_budget`; the script then leaves at once, without freeing what was computed), and
+whether the start-up's timer (:func:`arm_startup_budget`) is armed."""
 
 
 def command_start() -> float:
@@ -161,7 +162,7 @@ def command_start() -> float:
     started = SCRIPT["started"]
     if started is None:
         return time.perf_counter()
-    if SCRIPT.get("startup_timer"):
+    if SCRIPT["startup_timer"]:
         signal.setitimer(signal.ITIMER_REAL, 0.0)
         SCRIPT["startup_timer"] = False
     return float(started)
@@ -186,10 +187,10 @@ def arm_startup_budget(argv: list[str]) -> None:
     """Under the script, end the process at its ``--max-seconds`` if it is still starting up then.
 
     Why: a command's budget counts from the process's start, but it reads the clock only
-    once the command runs, after the interpreter's start-up and the imports; on a loaded
-    machine those alone took 4-5 s, so a 2 s budget was refused only at its first reading,
-    more than twice over. A timer signal armed here refuses it at the budget, in one line
-    with exit 2, unless :func:`command_start` (the budget taking over) stopped it first.
+    once the command runs, after the interpreter's start-up and the imports, which on a
+    loaded machine can outlast a short budget (docs/exact-references.md). A timer signal
+    armed here refuses it at the budget, in one line with exit 2, unless
+    :func:`command_start` (the budget taking over) stopped it first.
     """
     started = SCRIPT["started"]
     budget = _given_max_seconds(argv)
