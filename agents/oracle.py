@@ -53,7 +53,14 @@ from typing import Any
 import numpy as np
 
 from hg_marl.agents.models.answers import AnswerTable, stationary_human
-from hg_marl.agents.models.budget import DEFAULT_MEMORY, DEFAULT_SECONDS, DEFAULT_STATES, Budget, OverBudget
+from hg_marl.agents.models.budget import (
+    DEFAULT_MEMORY,
+    DEFAULT_SECONDS,
+    DEFAULT_STATES,
+    Budget,
+    OverBudget,
+    trim_heap,
+)
 from hg_marl.agents.models.builder import build_model
 from hg_marl.agents.models.cache import cache_folder, entry_path, load_entry, result_key, save_entry
 from hg_marl.agents.models.layouts import canonical_layout_count, canonical_layouts, layout_distribution
@@ -242,6 +249,7 @@ def oracle_rate(
             label=f"oracle {world.scenario.name}",
         )
         del answers  # the model holds its own copies of the answers: the solver's arrays need the room
+        trim_heap()  # (and the build's freed batches are given back: see trim_heap)
         solution = solve(model, tolerance=tolerance, max_iterations=max_iterations, budget=budget)
     expected = solution.seconds_per_task
     rate = 0.0 if math.isinf(expected) else HOUR / expected

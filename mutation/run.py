@@ -66,6 +66,7 @@ CONFIG = ROOT / "mutation" / "modules.toml"
 EQUIVALENT = ROOT / "mutation" / "equivalent.toml"
 COPIED = (
     "hg_marl",
+    "hg_marl_start.py",
     "agents",
     "training",
     "tests",

@@ -152,10 +152,11 @@ def main() -> None:
 
 
 def script() -> None:
-    """The ``hg-marl`` console script: :func:`main`, budgets from the process's start, out at once when refused.
+    """The command line as a script: :func:`main`, budgets from the process's start, out at once when refused.
 
     The exact commands' ``--max-seconds`` count from the process's start
-    (:func:`~hg_marl.training.commands.common.command_start`).
+    (:func:`~hg_marl.training.commands.common.command_start`). The console script enters
+    through :mod:`hg_marl_start`, which arms the budget before this module's imports.
 
     An exact command refused over its budget has written nothing, and holds what it had
     computed: a partial model and the planners' memos, millions of small objects. The
@@ -164,11 +165,9 @@ def script() -> None:
     process leaves with ``os._exit(2)``, its streams flushed (forked workers were stopped
     with the refusal). :func:`main` itself returns as usual: tests call it in-process.
     """
-    from hg_marl.agents.models.budget import process_start
-    from hg_marl.training.commands.common import SCRIPT, arm_startup_budget
+    from hg_marl_start import SCRIPT, begin
 
-    SCRIPT["started"] = process_start()  # the commands' time budgets count from here
-    arm_startup_budget(sys.argv)
+    begin(sys.argv)  # (done already where the console script's first module called this)
     try:
         main()
     except SystemExit:

@@ -19,6 +19,8 @@ passes one that advances by one per call), and the states budget counts states.
 
 from __future__ import annotations
 
+import ctypes
+import functools
 import math
 import multiprocessing
 import os
@@ -29,6 +31,8 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from types import FrameType
+
+from hg_marl_start import process_start as process_start  # (its home: the script's first module)
 
 DEFAULT_SECONDS: float | None = None
 """The library's default wall-time budget: none, so that what a study, a robot or a report
@@ -43,28 +47,32 @@ MIN_FREE_BYTES = 512 * 2**20
 """Below this much memory available to the kernel, a build stops whatever its own budget."""
 
 
-def process_start() -> float:
-    """When this process started, on :func:`time.perf_counter`'s scale (now, if the system cannot say).
-
-    A person who typed ``--max-seconds 5`` counts from the moment the command started, the
-    interpreter's start-up and imports included, so the commands measure their budget from
-    here. Read from ``/proc/self/stat`` (start time in clock ticks since boot) and
-    ``/proc/uptime``, to one clock tick.
-    """
-    now = time.perf_counter()
-    try:
-        with open("/proc/self/stat", encoding="ascii") as f:
-            ticks = int(f.read().rsplit(")", 1)[1].split()[19])
-        with open("/proc/uptime", encoding="ascii") as f:
-            uptime = float(f.read().split()[0])
-        ran = uptime - ticks / os.sysconf("SC_CLK_TCK")
-    except (OSError, ValueError, IndexError):
-        return now
-    return now - ran if 0.0 <= ran < 86_400.0 else now
-
-
 class OverBudget(RuntimeError):
     """A computation stopped at its budget; the message is one line naming budget, phase and progress."""
+
+
+@functools.cache
+def _malloc_trim() -> Callable[[int], int] | None:
+    """glibc's ``malloc_trim``, or None where the C library has none (musl, macOS)."""
+    try:
+        return ctypes.CDLL(None).malloc_trim
+    except (OSError, AttributeError):
+        return None
+
+
+def trim_heap() -> None:
+    """Give the C heap's free pages back to the system, where the C library can.
+
+    Why: a model is built from thousands of batch arrays small enough for malloc's heap
+    (only large ones are mapped on their own). Once they are joined into the model and
+    freed, glibc keeps most of their pages, so the process would stay as large as the
+    build's peak through the solve that follows, and the memory budget, which reads
+    resident bytes, would count pages that hold nothing. ``malloc_trim(0)`` returns every
+    free page it can; elsewhere this does nothing.
+    """
+    trim = _malloc_trim()
+    if trim is not None:
+        trim(0)
 
 
 def rss() -> int:

@@ -30,7 +30,7 @@ from scipy import sparse
 from tqdm import tqdm
 
 from hg_marl.agents.models.answers import AnswerTable, KeyBatch
-from hg_marl.agents.models.budget import Budget
+from hg_marl.agents.models.budget import Budget, trim_heap
 from hg_marl.agents.models.keyed import (
     first_unique,
     nonzero_2d,
@@ -170,8 +170,9 @@ class Model:
         return np.repeat(np.arange(self.n), np.diff(self.pair_start))
 
     def t_pair(self) -> np.ndarray:
-        """The pair of each transition."""
-        return np.repeat(np.arange(self.n_pairs), np.diff(self.t_start))
+        """The pair of each transition (int32 where the pairs fit: the largest array the solver adds)."""
+        dtype = np.int32 if self.n_pairs <= np.iinfo(np.int32).max else np.int64
+        return np.repeat(np.arange(self.n_pairs, dtype=dtype), np.diff(self.t_start))
 
     def states(self) -> list[State]:
         """The states as :class:`State` tuples, by id (for tests and small models)."""
@@ -485,12 +486,21 @@ def build_model(
                 regen_ids,
             ),
         )
-    dynamics = [  # each list is dropped once concatenated: the peak is one field's two copies, not all
+
+    def joined(flow: dict[str, list[np.ndarray]], name: str, dtype: type) -> np.ndarray:
+        """A field's batches joined, then dropped and their heap pages given back (see trim_heap)."""
+        pieces = flow.pop(name)
+        out = cat(pieces, dtype)
+        pieces.clear()
+        trim_heap()
+        return out
+
+    dynamics = [  # each field's batches are dropped once joined: the peak is one field's two copies, not all
         Dynamics(
             t_start=starts(flow.pop("tcount")),
-            t_next=cat(flow.pop("next"), np.int64),
-            t_prob=cat(flow.pop("prob"), np.float64),
-            t_tau=cat(flow.pop("tau"), np.float64),
+            t_next=joined(flow, "next", np.int64),
+            t_prob=joined(flow, "prob", np.float64),
+            t_tau=joined(flow, "tau", np.float64),
             regen_next=index.id_of(keys),
             regen_prob=prob,
             regen_tau=tau,

@@ -31,6 +31,7 @@ converged values: the expected seconds after each pair, which the belief robot m
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -38,6 +39,11 @@ from scipy import sparse
 
 from hg_marl.agents.models.budget import Budget
 from hg_marl.agents.models.builder import Model
+
+BLOCK = 1 << 22
+"""Transitions per block of the solver's per-transition temporaries: a model of tens of
+millions of transitions is read a block at a time, so a temporary costs a block's bytes,
+not the model's (:func:`pair_blocks`)."""
 
 TIE = 1e-6
 """Pairs whose expected seconds are within this of a state's best are tied; the first in option
@@ -59,6 +65,31 @@ class Solution:
     converged: bool
     seconds_per_task: float
     """Expected seconds between successes (inf: never)."""
+
+
+def pair_blocks(t_start: np.ndarray, block: int | None = None) -> list[tuple[int, int]]:
+    """Ranges ``[p0, p1)`` of pairs cutting the transitions into blocks of about ``block`` (:data:`BLOCK`).
+
+    A pair is never cut: a per-pair sum (``np.bincount``) over a block adds each pair's
+    transitions in the same order as one pass over them all, so the result is the same
+    to the bit.
+    """
+    n_pairs, block = len(t_start) - 1, block or BLOCK
+    cuts = np.searchsorted(t_start, np.arange(block, int(t_start[-1]), block), side="left")
+    bounds = np.unique(np.concatenate([[0], np.minimum(cuts, n_pairs), [n_pairs]]))
+    return list(zip(bounds[:-1].tolist(), bounds[1:].tolist(), strict=True))
+
+
+def pair_sums(
+    t_start: np.ndarray, t_pair: np.ndarray, weights: Callable[[slice], np.ndarray], block: int | None = None
+) -> np.ndarray:
+    """Per pair, the sum of ``weights(transitions)`` over its transitions, a block at a time."""
+    n_pairs = len(t_start) - 1
+    out = np.zeros(n_pairs)
+    for p0, p1 in pair_blocks(t_start, block):
+        at = slice(int(t_start[p0]), int(t_start[p1]))
+        out[p0:p1] = np.bincount(t_pair[at] - p0, weights=weights(at), minlength=p1 - p0)
+    return out
 
 
 def certain_states(model: Model, transitions: sparse.csr_matrix) -> tuple[np.ndarray, np.ndarray]:
@@ -105,12 +136,19 @@ def without_self_loops(
         t_pair = np.repeat(np.arange(n_pairs), counts)
     # a self-loop keeps its place in the rows with probability 0: the products add exact
     # zeros in the same order, and the transitions' index arrays are shared, not copied
-    leaving = np.where(t_next == pair_state[t_pair], 0.0, t_prob)
-    out = np.bincount(t_pair, weights=leaving, minlength=n_pairs)
+    leaving = np.empty(len(t_prob))
+
+    def leaving_of(at: slice) -> np.ndarray:
+        leaving[at] = np.where(t_next[at] == pair_state[t_pair[at]], 0.0, t_prob[at])
+        return leaving[at]
+
+    out = pair_sums(t_start, t_pair, leaving_of)
     looping = (out == 0) & (counts > 0)
     scale = 1.0 / np.where(out > 0, out, 1.0)
     if (scale != 1.0).any():  # (times 1 is the identity: most partners' pairs leave with probability 1)
-        leaving *= scale[t_pair]
+        for p0, p1 in pair_blocks(t_start):
+            at = slice(int(t_start[p0]), int(t_start[p1]))
+            leaving[at] *= scale[t_pair[at]]
         cost = cost * scale
     matrix = sparse.csr_matrix((leaving, t_next, t_start), shape=(n_pairs, n))
     return matrix, cost, looping
@@ -171,9 +209,13 @@ def solve(
     """Value iteration for the expected seconds to the next success (see the module docstring)."""
     budget = budget or Budget(None, None, None)
     n, n_pairs = model.n, model.n_pairs
+    # scipy keeps the indices in the narrowest type that holds them (a copy, where the model's
+    # are wider): the sweeps' matrix reads the same copy, not one of its own
     transitions = model.transitions()
+    t_start, t_next = transitions.indptr, transitions.indices
     t_pair = model.t_pair()
-    cost = np.bincount(t_pair, weights=model.t_prob * model.t_tau, minlength=n_pairs)
+    t_prob, t_tau = model.t_prob, model.t_tau
+    cost = pair_sums(t_start, t_pair, lambda at: t_prob[at] * t_tau[at])
     budget.check("solve", 0, unit="sweeps", memory=True)
     alive, ok = certain_states(model, transitions)
     starts = model.pair_start[:-1]
@@ -191,9 +233,9 @@ def solve(
 
     values, iterations, converged = sweeps(
         pair_state,
-        model.t_start,
-        model.t_next,
-        model.t_prob,
+        t_start,
+        t_next,
+        t_prob,
         cost,
         terminal,
         alive,

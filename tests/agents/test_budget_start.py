@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 
+import hg_marl_start
 from hg_marl.agents.models import budget as budget_module
 from hg_marl.training.commands import common
 from tests.cli_helpers import HANG_GUARD, error_lines, run_main
@@ -111,7 +112,7 @@ def test_the_script_counts_the_time_before_the_command() -> None:
     ],
 )
 def test_the_startup_timer_reads_only_a_positive_finite_max_seconds(argv: list[str], expected: float | None) -> None:
-    assert common._given_max_seconds(["hg-marl", *argv]) == expected
+    assert hg_marl_start.given_max_seconds(["hg-marl", *argv]) == expected
 
 
 def test_the_startup_timer_is_armed_under_the_script_and_stopped_when_the_budget_takes_over(
@@ -121,10 +122,10 @@ def test_the_startup_timer_is_armed_under_the_script_and_stopped_when_the_budget
 
     monkeypatch.setattr(signal, "signal", lambda *args: None)  # keep this process's own SIGALRM handler
     monkeypatch.setitem(common.SCRIPT, "started", None)
-    common.arm_startup_budget(["hg-marl", "oracle", "--max-seconds", "600"])
+    hg_marl_start.arm_startup_budget(["hg-marl", "oracle", "--max-seconds", "600"])
     assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)  # in-process: nothing armed
     monkeypatch.setitem(common.SCRIPT, "started", time.perf_counter())
-    common.arm_startup_budget(["hg-marl", "oracle", "--max-seconds", "600"])
+    hg_marl_start.arm_startup_budget(["hg-marl", "oracle", "--max-seconds", "600"])
     try:
         assert 0.0 < signal.getitimer(signal.ITIMER_REAL)[0] <= 600.0
         assert common.SCRIPT["startup_timer"] is True
@@ -149,3 +150,40 @@ def test_the_script_tears_down_as_usual_after_other_errors_and_success() -> None
     assert bad.returncode == 2 and "teardown" in bad.stdout
     ok = _script(["oracle", "--scenario", "paper2015", "--human", "no_handover", "--max-states", "200000"])
     assert ok.returncode == 0 and "teardown" in ok.stdout and "optimal rate" in ok.stdout
+
+
+def test_the_console_script_enters_through_the_module_that_imports_nothing_first() -> None:
+    import tomllib
+
+    pyproject = tomllib.loads((Path(__file__).parents[2] / "pyproject.toml").read_text())
+    assert pyproject["project"]["scripts"]["hg-marl"] == "hg_marl_start:script"
+    # a fresh interpreter importing the module loads no module outside the standard library
+    code = (
+        "import sys; before = set(sys.modules); import hg_marl_start; "
+        "print(' '.join(sorted(set(sys.modules) - before)))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=HANG_GUARD, check=True)
+    loaded = {name.split(".")[0] for name in out.stdout.split()} - {"hg_marl_start"}
+    assert loaded <= set(sys.stdlib_module_names), loaded - set(sys.stdlib_module_names)
+
+
+def test_the_budget_is_armed_before_the_package_is_imported() -> None:
+    # The package's import made to take 30 s (a finder that sleeps when ``hg_marl`` is first
+    # imported, then prints): a 2 s budget is refused during that import, so the sleep never
+    # ends. Armed after the package's import, the refusal would come after the 30 s.
+    finder = (
+        "import sys, time\n"
+        "class Slow:\n"
+        "    def find_spec(self, name, path, target=None):\n"
+        "        if name == 'hg_marl':\n"
+        "            sys.meta_path.remove(self); time.sleep(30); print('slept', flush=True)\n"
+        "sys.meta_path.insert(0, Slow())\n"
+        "import hg_marl_start\n"
+        "sys.argv = ['hg-marl', 'oracle', '--scenario', 'paper2015', '--max-seconds', '2']\n"
+        "hg_marl_start.script()\n"
+    )
+    proc = subprocess.run([sys.executable, "-c", finder], capture_output=True, text=True, timeout=HANG_GUARD)
+    assert proc.returncode == 2
+    (line,) = error_lines(proc.stderr)
+    assert line.startswith("error: --max-seconds 2: over the budget of wall time while still starting up")
+    assert "slept" not in proc.stdout

@@ -129,7 +129,7 @@ def test_a_process_start_is_read_from_proc_up_to_a_day_back(
     import io
     import time
 
-    from hg_marl.agents.models import budget as module
+    import hg_marl_start as module  # process_start's home
 
     tick = os.sysconf("SC_CLK_TCK")
     files = {
@@ -178,7 +178,7 @@ def test_a_process_start_that_cannot_be_read_or_lies_ahead_is_now(
     import io
     import time
 
-    from hg_marl.agents.models import budget as module
+    import hg_marl_start as module  # process_start's home
 
     monkeypatch.setattr(os, "sysconf", lambda name: 100)
     files = {"/proc/self/stat": stat, "/proc/uptime": uptime}

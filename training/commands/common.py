@@ -7,10 +7,7 @@ user's option; ``training/cli.py:main`` prints it as one line and exits 2.
 from __future__ import annotations
 
 import dataclasses
-import math
 import os
-import signal
-import sys
 import time
 from collections.abc import Callable, Iterable
 from pathlib import Path
@@ -19,6 +16,7 @@ from typing import Any, TypeVar
 from hg_marl.core.errors import ConfigError, HgMarlError, check_finite, check_int
 from hg_marl.core.spec import Spec, collect_params, parse_spec
 from hg_marl.training.outputs import check_output
+from hg_marl_start import SCRIPT, stop_startup_timer
 
 T = TypeVar("T")
 
@@ -143,13 +141,6 @@ def counting_bar(total: int, desc: str) -> tuple[Any, Callable[..., None]]:
     return bar, update
 
 
-SCRIPT: dict[str, Any] = {"started": None, "over_budget": False, "startup_timer": False}
-"""The ``hg-marl`` script's state: when its process started (None when a command is called
-in-process, as tests do), whether the command was refused over its budget (set by
-:func:`over_budget`; the script then leaves at once, without freeing what was computed), and
-whether the start-up's timer (:func:`arm_startup_budget`) is armed."""
-
-
 def command_start() -> float:
     """When a command's time budget began, on :func:`time.perf_counter`'s scale.
 
@@ -157,59 +148,13 @@ def command_start() -> float:
     ``--max-seconds 5`` waits from then, the interpreter's start-up and imports included.
     Called in-process (a test, a notebook), now: the process may have run for hours.
     From here the command's own budget reads the clock, so the start-up's timer
-    (:func:`arm_startup_budget`) is stopped.
+    (:func:`hg_marl_start.arm_startup_budget`) is stopped.
     """
     started = SCRIPT["started"]
     if started is None:
         return time.perf_counter()
-    if SCRIPT["startup_timer"]:
-        signal.setitimer(signal.ITIMER_REAL, 0.0)
-        SCRIPT["startup_timer"] = False
+    stop_startup_timer()
     return float(started)
-
-
-def _given_max_seconds(argv: list[str]) -> float | None:
-    """The ``--max-seconds`` value on a command line, if a positive finite number (the command refuses others)."""
-    for i, arg in enumerate(argv):
-        text = arg.partition("=")[2] if arg.startswith("--max-seconds=") else None
-        if arg == "--max-seconds" and i + 1 < len(argv):
-            text = argv[i + 1]
-        if text is not None:
-            try:
-                value = float(text)
-            except ValueError:
-                return None
-            return value if math.isfinite(value) and value > 0 else None
-    return None
-
-
-def arm_startup_budget(argv: list[str]) -> None:
-    """Under the script, end the process at its ``--max-seconds`` if it is still starting up then.
-
-    Why: a command's budget counts from the process's start, but it reads the clock only
-    once the command runs, after the interpreter's start-up and the imports, which on a
-    loaded machine can outlast a short budget (docs/exact-references.md). A timer signal
-    armed here refuses it at the budget, in one line with exit 2, unless
-    :func:`command_start` (the budget taking over) stopped it first.
-    """
-    started = SCRIPT["started"]
-    budget = _given_max_seconds(argv)
-    if started is None or budget is None or not hasattr(signal, "setitimer"):
-        return
-
-    def expire(signum: int, frame: Any) -> None:
-        elapsed = time.perf_counter() - float(started)
-        sys.stdout.flush()
-        sys.stderr.write(
-            f"error: --max-seconds {budget:g}: over the budget of wall time while still starting up "
-            f"(after {elapsed:.1f} s: the interpreter and its imports took longer); raise --max-seconds\n"
-        )
-        sys.stderr.flush()
-        os._exit(2)
-
-    signal.signal(signal.SIGALRM, expire)
-    signal.setitimer(signal.ITIMER_REAL, max(float(started) + budget - time.perf_counter(), 1e-3))
-    SCRIPT["startup_timer"] = True
 
 
 def over_budget() -> None:
