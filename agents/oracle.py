@@ -249,7 +249,7 @@ def oracle_rate(
             label=f"oracle {world.scenario.name}",
         )
         del answers  # the model holds its own copies of the answers: the solver's arrays need the room
-        trim_heap()  # (and the build's freed batches are given back: see trim_heap)
+        trim_heap(model.t_prob.nbytes)  # (its pages given back where the build was large: see trim_heap)
         solution = solve(model, tolerance=tolerance, max_iterations=max_iterations, budget=budget)
     expected = solution.seconds_per_task
     rate = 0.0 if math.isinf(expected) else HOUR / expected

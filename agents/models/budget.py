@@ -60,8 +60,14 @@ def _malloc_trim() -> Callable[[int], int] | None:
         return None
 
 
-def trim_heap() -> None:
-    """Give the C heap's free pages back to the system, where the C library can.
+TRIM_BYTES = 256 * 2**20
+"""Freed bytes below which :func:`trim_heap` keeps the pages: pages given back are faulted in
+again by the next build in the process, which costs a small model's build more than the
+pages are worth."""
+
+
+def trim_heap(freed: int) -> None:
+    """Give the C heap's free pages back to the system, where the C library can, once ``freed`` bytes were freed.
 
     Why: a model is built from thousands of batch arrays small enough for malloc's heap
     (only large ones are mapped on their own). Once they are joined into the model and
@@ -71,7 +77,7 @@ def trim_heap() -> None:
     free page it can; elsewhere this does nothing.
     """
     trim = _malloc_trim()
-    if trim is not None:
+    if trim is not None and freed >= TRIM_BYTES:
         trim(0)
 
 

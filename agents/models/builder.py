@@ -492,7 +492,7 @@ def build_model(
         pieces = flow.pop(name)
         out = cat(pieces, dtype)
         pieces.clear()
-        trim_heap()
+        trim_heap(out.nbytes)
         return out
 
     dynamics = [  # each field's batches are dropped once joined: the peak is one field's two copies, not all

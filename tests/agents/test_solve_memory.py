@@ -14,6 +14,7 @@ import importlib
 import numpy as np
 import pytest
 
+from hg_marl.agents.models import budget as budget_module
 from hg_marl.agents.models.budget import _malloc_trim, rss, trim_heap
 from hg_marl.agents.models.solve import pair_blocks, pair_sums, solve, without_self_loops
 from hg_marl.core import World
@@ -84,7 +85,7 @@ def test_freed_small_arrays_pages_go_back_to_the_system() -> None:
     arrays = [np.ones(1024) for _ in range(40_000)]
     del arrays[:-100]
     before = rss()
-    trim_heap()
+    trim_heap(312 * 2**20)
     assert before - rss() >= 200 * 2**20
     assert sum(float(a[0]) for a in arrays) == 100.0  # the arrays still alive are untouched
 
@@ -100,3 +101,13 @@ def test_pairs_that_all_loop_are_all_rescaled() -> None:
     assert matrix.toarray().tolist() == [[0.0, 1.0], [1.0, 0.0]]
     assert cost.tolist() == [6.0, 8.0]
     assert looping.tolist() == [False, False]
+
+
+def test_the_heap_is_trimmed_only_after_256_mib_were_freed(monkeypatch: pytest.MonkeyPatch) -> None:
+    # giving pages back makes the next build fault them in again: a small build keeps them
+    calls: list[int] = []
+    monkeypatch.setattr(budget_module, "_malloc_trim", lambda: calls.append)
+    trim_heap(256 * 2**20 - 1)
+    assert calls == []
+    trim_heap(256 * 2**20)
+    assert calls == [0]
