@@ -15123,6 +15123,11 @@ ROUND117_TESTS = "tests/training/test_pinned_round117.py"
 """The values round 117's missed bugs changed, pinned after the round: every round-117 bug runs them too."""
 FRESH117 = pinned_after(FRESH117, ROUND117_TESTS)
 
+FRESH118: tuple[Bug, ...] = ()
+FRESH119: tuple[Bug, ...] = ()
+FRESH120: tuple[Bug, ...] = ()
+FRESH121: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -15242,6 +15247,10 @@ ALL = (
     + FRESH115
     + FRESH116
     + FRESH117
+    + FRESH118
+    + FRESH119
+    + FRESH120
+    + FRESH121
 )
 
 
