@@ -15441,8 +15441,8 @@ FRESH120: tuple[Bug, ...] = (
     Bug(
         "fresh120 population generator: member names lose their zero padding (m3, not m03)",
         "training/population_gen.py",
-        "m[\"name\"] = f\"m{m.pop('index'):02d}\"",
-        "m[\"name\"] = f\"m{m.pop('index'):d}\"",
+        'm["name"] = f"m{m.pop(\'index\'):02d}"',
+        'm["name"] = f"m{m.pop(\'index\'):d}"',
         gate("population_gen"),
     ),
     Bug(
