@@ -15628,6 +15628,11 @@ ROUND121_TESTS = "tests/training/test_pinned_round121.py"
 """The values round 121's missed bugs changed, pinned after the round: every round-121 bug runs them too."""
 FRESH121 = pinned_after(FRESH121, ROUND121_TESTS)
 
+FRESH122: tuple[Bug, ...] = ()
+FRESH123: tuple[Bug, ...] = ()
+FRESH124: tuple[Bug, ...] = ()
+FRESH125: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -15751,6 +15756,10 @@ ALL = (
     + FRESH119
     + FRESH120
     + FRESH121
+    + FRESH122
+    + FRESH123
+    + FRESH124
+    + FRESH125
 )
 
 
