@@ -16123,6 +16123,11 @@ ROUND125_TESTS = "tests/training/test_pinned_round125.py"
 """The values round 125's missed bugs changed, pinned after the round: every round-125 bug runs them too."""
 FRESH125 = pinned_after(FRESH125, ROUND125_TESTS)
 
+FRESH126: tuple[Bug, ...] = ()
+FRESH127: tuple[Bug, ...] = ()
+FRESH128: tuple[Bug, ...] = ()
+FRESH129: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -16250,6 +16255,10 @@ ALL = (
     + FRESH123
     + FRESH124
     + FRESH125
+    + FRESH126
+    + FRESH127
+    + FRESH128
+    + FRESH129
 )
 
 
