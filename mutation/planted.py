@@ -16407,15 +16407,15 @@ FRESH128: tuple[Bug, ...] = (
     Bug(
         "fresh128 planner robot: a planned decision is recorded under the expert name 'plan', not 'planner'",
         "agents/robots/planner.py",
-        "            \"planner\",\n            prop.action,",
-        "            \"plan\",\n            prop.action,",
+        '            "planner",\n            prop.action,',
+        '            "plan",\n            prop.action,',
         gate("planner_robot"),
     ),
     Bug(
         "fresh128 population: a population's description is read from its scenario field",
         "agents/humans/population.py",
-        "description=data.get(\"description\", \"\"),",
-        "description=data.get(\"scenario\", \"\"),",
+        'description=data.get("description", ""),',
+        'description=data.get("scenario", ""),',
         gate("population"),
     ),
     Bug(
@@ -16449,15 +16449,15 @@ FRESH128: tuple[Bug, ...] = (
     Bug(
         "fresh128 scenario loader: the default scenario is roboergosum, not paper2015",
         "hg_marl/core/scenario.py",
-        "DEFAULT_SCENARIO = \"paper2015\"",
-        "DEFAULT_SCENARIO = \"roboergosum\"",
+        'DEFAULT_SCENARIO = "paper2015"',
+        'DEFAULT_SCENARIO = "roboergosum"',
         gate("scenario_loader"),
     ),
     Bug(
         "fresh128 spec parser: a continued spec list joins its k=v pieces with a space, not a comma",
         "hg_marl/core/spec.py",
-        "out[-1] += \",\" + piece",
-        "out[-1] += \" \" + piece",
+        'out[-1] += "," + piece',
+        'out[-1] += " " + piece',
         gate("spec_parser"),
     ),
     Bug(
@@ -16477,8 +16477,8 @@ FRESH128: tuple[Bug, ...] = (
     Bug(
         "fresh128 belief: the default splits believe in the train members only, not train and validation",
         "agents/robots/belief.py",
-        "splits: str = \"train,validation\",",
-        "splits: str = \"train\",",
+        'splits: str = "train,validation",',
+        'splits: str = "train",',
         gate("belief"),
     ),
     Bug(
