@@ -31,7 +31,7 @@ converged values: the expected seconds after each pair, which the belief robot m
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
@@ -80,14 +80,18 @@ def pair_blocks(t_start: np.ndarray, block: int | None = None) -> list[tuple[int
     return list(zip(bounds[:-1].tolist(), bounds[1:].tolist(), strict=True))
 
 
+def transition_blocks(t_start: np.ndarray, block: int | None = None) -> Iterator[tuple[int, int, slice]]:
+    """Each of :func:`pair_blocks`' ranges with the slice of the transitions it holds."""
+    for p0, p1 in pair_blocks(t_start, block):
+        yield p0, p1, slice(int(t_start[p0]), int(t_start[p1]))
+
+
 def pair_sums(
     t_start: np.ndarray, t_pair: np.ndarray, weights: Callable[[slice], np.ndarray], block: int | None = None
 ) -> np.ndarray:
     """Per pair, the sum of ``weights(transitions)`` over its transitions, a block at a time."""
-    n_pairs = len(t_start) - 1
-    out = np.zeros(n_pairs)
-    for p0, p1 in pair_blocks(t_start, block):
-        at = slice(int(t_start[p0]), int(t_start[p1]))
+    out = np.zeros(len(t_start) - 1)
+    for p0, p1, at in transition_blocks(t_start, block):
         out[p0:p1] = np.bincount(t_pair[at] - p0, weights=weights(at), minlength=p1 - p0)
     return out
 
@@ -146,8 +150,7 @@ def without_self_loops(
     looping = (out == 0) & (counts > 0)
     scale = 1.0 / np.where(out > 0, out, 1.0)
     if (scale != 1.0).any():  # (times 1 is the identity: most partners' pairs leave with probability 1)
-        for p0, p1 in pair_blocks(t_start):
-            at = slice(int(t_start[p0]), int(t_start[p1]))
+        for _, _, at in transition_blocks(t_start):
             leaving[at] *= scale[t_pair[at]]
         cost = cost * scale
     matrix = sparse.csr_matrix((leaving, t_next, t_start), shape=(n_pairs, n))
