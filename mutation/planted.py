@@ -16623,6 +16623,11 @@ ROUND129_TESTS = "tests/training/test_pinned_round129.py"
 """The values round 129's missed bugs changed, pinned after the round: every round-129 bug runs them too."""
 FRESH129 = pinned_after(FRESH129, ROUND129_TESTS)
 
+FRESH130: tuple[Bug, ...] = ()
+FRESH131: tuple[Bug, ...] = ()
+FRESH132: tuple[Bug, ...] = ()
+FRESH133: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -16754,6 +16759,10 @@ ALL = (
     + FRESH127
     + FRESH128
     + FRESH129
+    + FRESH130
+    + FRESH131
+    + FRESH132
+    + FRESH133
 )
 
 
