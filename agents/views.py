@@ -59,7 +59,7 @@ from hg_marl.agents.humans.registry import resolve_human
 from hg_marl.agents.partner_specs import as_list, make_robot_actor, resolve_partner
 from hg_marl.agents.vector_envs import human_vector_env, robot_vector_env
 from hg_marl.core import Agent, Durations, Scenario, World
-from hg_marl.core.cycle import ends_episode, seat_reward
+from hg_marl.core.cycle import check_effort_weight, ends_episode, seat_reward
 from hg_marl.envs.table_cleaning import EVENT_SEPARATOR, raw_env
 from hg_marl.policy import Actor
 
@@ -283,8 +283,7 @@ class HumanView(_View):
         render_mode: str | None = None,
         durations: Durations | None = None,
     ) -> None:
-        if effort_weight < 0:
-            raise ValueError(f"effort_weight must be non-negative, got {effort_weight}")
+        effort_weight = check_effort_weight(effort_weight)
         super().__init__(
             scenario, as_list(robot), continuing, max_cycles, time_budget, observation, render_mode, durations
         )

@@ -66,6 +66,10 @@ class Robot(ABC):
     def end(self, turn: Turn, terminated: bool = True) -> None:  # noqa: B027 (optional hook)
         """The run or episode is over; learners take their last TD step (see module docstring)."""
 
+    def _record_none(self) -> None:
+        """No decision of this robot's own this turn (another expert decided)."""
+        self.last_decision = None
+
     def _record(self, expert: str, action: int, **fields: Any) -> None:
         """Keep this decision's :class:`~hg_marl.policy.Decision` (unnamed fields keep their defaults)."""
         self.last_decision = Decision(expert=expert, action=int(action), **fields)

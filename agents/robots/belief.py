@@ -221,6 +221,8 @@ class BeliefRobot(Robot):
         self._prev: tuple[State, int] | None = None
         self.progress = ProgressGuard()
         self._observed = ObservedSolver()
+        self._planned = False
+        """Whether the planner decided this turn (otherwise it only follows: :meth:`PlannerRobot.follow`)."""
 
     def _reset(self, world: World) -> None:
         """Forget the previous run's evidence (members' models are solved when first consulted)."""
@@ -344,6 +346,13 @@ class BeliefRobot(Robot):
 
     def act(self, turn: Turn) -> int:
         """Update the belief, then the action with the least expected seconds under it."""
+        self._planned = False
+        action = self._act(turn)
+        if not self._planned:
+            self._planner.follow(turn, action)
+        return action
+
+    def _act(self, turn: Turn) -> int:
         start = time.perf_counter()
         self._observe(turn)
         world, state = turn.world, turn.state
@@ -379,8 +388,6 @@ class BeliefRobot(Robot):
         factor = self.bayes_factor if self.posterior.learned is not None else 1.0
         off_population = self.unknown > 0 and post[self._unknown_name] > factor * max(weights)
         if off_population:
-            if not self._off_population:
-                self._planner.last_decision = None  # its expectation from an earlier spell is stale
             self._off_population = True
             unpaid = 0.0  # a solve that gave no move is charged with the planner's decision
             if isinstance(self.posterior.learned, ObservedPartner):
@@ -399,6 +406,7 @@ class BeliefRobot(Robot):
                 )
                 partnering.base = learned if keep else fixed
             action = self._planner.act(turn)
+            self._planned = True
             record = self._planner.last_decision
             assert record is not None
             reason = "no member explains the partner, the planner drives: " + record.reason

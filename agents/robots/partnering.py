@@ -75,8 +75,9 @@ class Partnering:
         """
         human_action = turn.last_actions[1]
         solved = turn.reward > 0
-        if last is not None:
-            self.monitor.observe(self.world, last.expected_human_action, human_action, solved)
+        if last is not None or solved:  # a task solved forgets the blocks, whoever decided the move before it
+            expected = last.expected_human_action if last is not None else -1
+            self.monitor.observe(self.world, expected, human_action, solved)
         if self.posterior is not None and self._prev is not None and not solved and human_action >= 0:
             state, robot_action = self._prev
             step = self.world.step(state, Agent.ROBOT, robot_action)

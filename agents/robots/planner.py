@@ -94,3 +94,15 @@ class PlannerRobot(Robot):
         )
         self.partnering.acted(turn.state, prop.action)
         return prop.action
+
+    def follow(self, turn: Turn, action: int) -> None:
+        """Keep the partner model in step on a turn another expert decided ``action``.
+
+        A robot that consults this planner only now and then (the belief robot, off its
+        members) would otherwise hold blocks past the tasks solved in between, and compare
+        the human's move with an expectation from an earlier spell.
+        """
+        self.partnering.observe(turn, self.last_decision)
+        self.planner = self.partnering.planner
+        self._record_none()
+        self.partnering.acted(turn.state, action)

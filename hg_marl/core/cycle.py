@@ -39,6 +39,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from hg_marl.core.errors import check_finite
 from hg_marl.core.types import Agent, Event, State
 from hg_marl.core.world import World
 
@@ -222,6 +223,15 @@ def cycle(
 
 
 # ---- the human's seat (scalars and arrays alike) ------------------------------------------
+def check_effort_weight(effort_weight: Any) -> float:
+    """``effort_weight`` as a float, refused (``ConfigError``) unless a finite number >= 0.
+
+    One check for the scalar view and the batched table: a NaN weight would make every
+    reward of the human's seat NaN, and ``NaN < 0`` is false.
+    """
+    return check_finite(effort_weight, "effort_weight", minimum=0.0)
+
+
 def seat_reward(task_reward: Any, work: Any, effort_weight: float) -> Any:
     """The human seat's reward: the task reward less ``effort_weight`` times its seconds of work."""
     return task_reward - effort_weight * work

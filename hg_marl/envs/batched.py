@@ -102,8 +102,7 @@ class BatchedTable(VectorEnv):
             max_cycles = check_int(max_cycles, "max_cycles", minimum=1)
         if time_budget is not None and not (np.isfinite(time_budget) and time_budget > 0):
             raise ConfigError(f"time_budget: expected a positive finite number of seconds, got {time_budget!r}")
-        if not (np.isfinite(effort_weight) and effort_weight >= 0):
-            raise ConfigError(f"effort_weight: expected a non-negative finite number, got {effort_weight!r}")
+        effort_weight = cycle.check_effort_weight(effort_weight)
         modes = {"next_step": AutoresetMode.NEXT_STEP, "same_step": AutoresetMode.SAME_STEP}
         if autoreset_mode not in modes:
             raise ConfigError(f"autoreset_mode: expected one of {sorted(modes)}, got {autoreset_mode!r}")

@@ -150,6 +150,18 @@ def test_bad_arguments_are_clear() -> None:
         HumanView(effort_weight=-1.0)
 
 
+@pytest.mark.parametrize("weight", [float("nan"), float("inf"), -0.0 - 1e-9])
+def test_an_effort_weight_that_is_not_a_finite_number_at_least_zero_is_refused(weight: float) -> None:
+    """A NaN weight would make every reward of the human's seat NaN (NaN < 0 is false)."""
+    from hg_marl.core.errors import ConfigError
+    from hg_marl.envs.batched import BatchedTable
+
+    with pytest.raises(ConfigError, match="effort_weight"):
+        HumanView(effort_weight=weight)
+    with pytest.raises(ConfigError, match="effort_weight"):
+        BatchedTable("planner", 1, "paper2015", effort_weight=weight)
+
+
 @pytest.mark.slow
 def test_maskable_ppo_learns_briefly() -> None:
     from sb3_contrib import MaskablePPO

@@ -32,3 +32,27 @@ def test_a_taken_batch_copies_its_rows_and_keeps_which_env_tables_they_are() -> 
     assert t.rows.tolist() == [7, 5, 7]
     t.where[0, 0] = 9
     assert b.where[2, 0] == 4
+
+
+def test_in_the_humans_seat_the_robot_partners_first_move_at_reset_sees_no_human_action() -> None:
+    """The protocol: a robot partner's ``seen`` is -1 on every table (no human move to react
+    to). At reset in the human's seat the robot moves first, so its first ``seen`` is all -1."""
+    from hg_marl.core import Agent
+    from hg_marl.envs.batched import BatchedTable
+
+    world = World("paper2015")
+    wait = world.n_actions(Agent.ROBOT) - 1
+
+    class Recorder:
+        name = "recorder"
+
+        def __init__(self) -> None:
+            self.seen: list[list[int]] = []
+
+        def act(self, batch: object, seen: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+            self.seen.append(seen.tolist())
+            return np.full(len(seen), wait, dtype=np.int64)
+
+    partner = Recorder()
+    BatchedTable(partner, 3, world, seat=Agent.HUMAN).reset(seed=0)
+    assert partner.seen == [[-1, -1, -1]]

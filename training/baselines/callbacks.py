@@ -137,7 +137,10 @@ class StopOnSignal(BaseCallback):
         return True
 
     def request(self, signum: int = 0, frame: Any = None) -> None:
-        """Ask for a stop (the signal handler); a second request restores the default handlers."""
+        """Ask for a stop (the signal handler); a second request aborts with ``KeyboardInterrupt``.
+
+        Leaving :meth:`catching` is what restores the default handlers.
+        """
         if self._requested:
             raise KeyboardInterrupt
         self._requested = True
