@@ -17124,6 +17124,11 @@ ROUND133_TESTS = "tests/training/test_pinned_round133.py"
 """The values round 133's missed bugs changed, pinned after the round: every round-133 bug runs them too."""
 FRESH133 = pinned_after(FRESH133, ROUND133_TESTS)
 
+FRESH134: tuple[Bug, ...] = ()
+FRESH135: tuple[Bug, ...] = ()
+FRESH136: tuple[Bug, ...] = ()
+FRESH137: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -17259,6 +17264,10 @@ ALL = (
     + FRESH131
     + FRESH132
     + FRESH133
+    + FRESH134
+    + FRESH135
+    + FRESH136
+    + FRESH137
 )
 
 
