@@ -50,8 +50,12 @@ class Spec:
         return format_spec(self.name, self.raw)
 
 
-def _split_top_level(text: str) -> list[str]:
-    """Split on commas that are not inside brackets, braces or double quotes."""
+def _split_top_level(text: str, what: str = "spec") -> list[str]:
+    """Split on commas that are not inside brackets, braces or double quotes.
+
+    Raises:
+        SpecError: a closing bracket with none open (past it no comma would split again).
+    """
     parts: list[str] = []
     depth, quoted, escaped, start = 0, False, False, 0
     for i, ch in enumerate(text):
@@ -67,6 +71,8 @@ def _split_top_level(text: str) -> list[str]:
         elif ch in "[{(":
             depth += 1
         elif ch in "]})":
+            if depth == 0:
+                raise SpecError(f"{what}: an unmatched {ch!r} (it closes nothing)")
             depth -= 1
         elif ch == "," and depth == 0:
             parts.append(text[start:i])
@@ -110,7 +116,7 @@ def parse_spec(text: str | Spec, what: str = "spec") -> Spec:
     name = name.strip()
     if not name:
         raise SpecError(f"{what} {text!r}: missing the name before ':'")
-    items = _split_top_level(rest) if rest.strip() else []
+    items = _split_top_level(rest, f"{what} {text!r}") if rest.strip() else []
     return Spec(name, collect_params(items, f"{what} {text!r}", SpecError))
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 
 import pytest
 
@@ -25,6 +26,16 @@ def test_commas_inside_json_do_not_split() -> None:
 def test_malformed_specs_are_refused(text: str) -> None:
     with pytest.raises(SpecError):
         parse_spec(text)
+
+
+@pytest.mark.parametrize(("text", "closer"), [("a:x=]y,b=1", "]"), ("a:x=1},b=1", "}"), ("a:x=(1)),b=1", ")")])
+def test_a_closing_bracket_that_closes_nothing_is_refused_naming_it(text: str, closer: str) -> None:
+    """Past an unmatched closer no top-level comma would split again: ``x`` would silently
+    read ``]y,b=1`` and ``b`` would be lost. Refused in one line naming the spec and the closer."""
+    with pytest.raises(SpecError, match=re.escape(f"{text!r}: an unmatched {closer!r}")):
+        parse_spec(text)
+    # A closer inside quotes is text, not a bracket.
+    assert dict(parse_spec('a:x="]",b=1').raw) == {"x": '"]"', "b": "1"}
 
 
 DEFAULTS = {"p": 0.5, "n": 3, "flag": False, "mode": "wait", "names": ["a"], "cfg": {}, "path": REQUIRED}
