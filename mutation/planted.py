@@ -17619,6 +17619,11 @@ ROUND137_TESTS = "tests/training/test_pinned_round137.py"
 """The values round 137's missed bugs changed, pinned after the round: every round-137 bug runs them too."""
 FRESH137 = pinned_after(FRESH137, ROUND137_TESTS)
 
+FRESH138: tuple[Bug, ...] = ()
+FRESH139: tuple[Bug, ...] = ()
+FRESH140: tuple[Bug, ...] = ()
+FRESH141: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -17758,6 +17763,10 @@ ALL = (
     + FRESH135
     + FRESH136
     + FRESH137
+    + FRESH138
+    + FRESH139
+    + FRESH140
+    + FRESH141
 )
 
 
