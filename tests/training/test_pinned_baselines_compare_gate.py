@@ -30,6 +30,7 @@ class _Result:
     num_timesteps: int
     seconds: float = 2.0
     steps_per_second: float = 50.0
+    interrupted: bool = False
 
 
 def _config(tmp_path: Path, **changes: Any) -> CompareConfig:
@@ -307,3 +308,32 @@ def test_a_batched_cell_whose_last_update_was_evaluated_is_not_evaluated_again(
     monkeypatch.setattr(compare, "result_model", lambda path: pytest.fail("evaluated again"))
     record = compare.run_cell(_config(tmp_path), "ppo_batched", "lazy", 0, tmp_path / "cell")
     assert [s for s, _ in record["curve"]] == [0, 100, 200]
+
+
+def test_a_cell_stopped_by_a_signal_stops_the_comparison_and_is_not_stored(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Seed 0 trains to the end; seed 1 is stopped at 120 of 300 steps (a first Ctrl-C, a
+    checkpoint saved). The comparison stops there with a KeyboardInterrupt (the CLI's exit
+    130), seed 1 is not evaluated and not stored, and a rerun trains seed 1 again, reusing seed 0."""
+    monkeypatch.setattr(compare, "_trainer_fingerprint", lambda: {"sources": "fixed"})
+    monkeypatch.setattr(compare, "reference_rates", lambda config, human: {"oracle": 100.0})
+    monkeypatch.setattr(compare, "runner_rate", lambda *a, **k: 7.0)
+    trained: list[int] = []
+    stop_at = {1: 120}
+
+    def fake_train(config: Any, callbacks: Any = ()) -> _Result:
+        trained.append(config.seed)
+        steps = stop_at.get(config.seed, 300)
+        return _Result("m", tmp_path / f"m{config.seed}.json", steps, interrupted=steps < 300)
+
+    monkeypatch.setattr(compare, "train", fake_train)
+    config = _config(tmp_path, seeds=2)
+    with pytest.raises(KeyboardInterrupt, match="a2c vs lazy seed 1: stopped at 120 steps"):
+        compare.compare(config)
+    assert trained == [0, 1]
+    assert not (config.out / "summary.json").exists()
+    stop_at.clear()
+    summary = compare.compare(config)
+    assert trained == [0, 1, 1]
+    assert [c["steps"] for c in summary["cells"]] == [300, 300]

@@ -100,6 +100,11 @@ def run_cell(config: CompareConfig, algo: str, human: str, seed: int, directory:
         ),
         callbacks=[curve],
     )
+    if result.interrupted:
+        # A cell stopped by a signal is not a result: nothing is stored for it and the
+        # comparison stops (the cells before it are in the store, so the same command
+        # goes on from this cell). Otherwise one Ctrl-C stopped one cell and the next began.
+        raise KeyboardInterrupt(f"{algo} vs {human} seed {seed}: stopped at {result.num_timesteps} steps")
     if not curve.curve or curve.curve[-1][0] != result.num_timesteps:
         curve.curve.append((result.num_timesteps, evaluate(result.model)))
     return _record(config, algo, human, seed, result, curve.curve)
