@@ -25,6 +25,11 @@ import sys
 import time
 from typing import Any
 
+MAX_SECONDS = 10_000_000.0
+"""The longest wall-time budget a command takes (``--max-seconds``, about 16 weeks): a timer
+for 1e23 s is past what the platform's ``setitimer`` holds (an ``OverflowError``), and no
+exact computation here runs for weeks."""
+
 SCRIPT: dict[str, Any] = {"started": None, "over_budget": False, "startup_timer": False}
 """The ``hg-marl`` script's state: when its process started (None when a command is called
 in-process, as tests do), whether the command was refused over its budget (the script then
@@ -53,7 +58,7 @@ def process_start() -> float:
 
 
 def given_max_seconds(argv: list[str]) -> float | None:
-    """The ``--max-seconds`` value on a command line, if a positive finite number (the command refuses others)."""
+    """The ``--max-seconds`` value on a command line, if in (0, :data:`MAX_SECONDS`] (the command refuses others)."""
     for i, arg in enumerate(argv):
         text = arg.partition("=")[2] if arg.startswith("--max-seconds=") else None
         if arg == "--max-seconds" and i + 1 < len(argv):
@@ -63,7 +68,7 @@ def given_max_seconds(argv: list[str]) -> float | None:
                 value = float(text)
             except ValueError:
                 return None
-            return value if math.isfinite(value) and value > 0 else None
+            return value if math.isfinite(value) and 0 < value <= MAX_SECONDS else None
     return None
 
 

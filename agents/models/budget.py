@@ -32,7 +32,9 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from types import FrameType
 
-from hg_marl_start import process_start as process_start  # (its home: the script's first module)
+from hg_marl.core.errors import check_finite
+from hg_marl_start import MAX_SECONDS as MAX_SECONDS  # (their home: the script's first module)
+from hg_marl_start import process_start as process_start
 
 DEFAULT_SECONDS: float | None = None
 """The library's default wall-time budget: none, so that what a study, a robot or a report
@@ -157,6 +159,8 @@ class Budget:
     free_memory: Callable[[], int | None] = available_bytes
 
     def __post_init__(self) -> None:
+        if self.seconds is not None:
+            self.seconds = check_finite(self.seconds, "--max-seconds", positive=True, maximum=MAX_SECONDS)
         if math.isnan(self.start):
             self.start = self.clock()
 

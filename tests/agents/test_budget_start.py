@@ -109,10 +109,39 @@ def test_the_script_counts_the_time_before_the_command() -> None:
         (["oracle", "--max-seconds", "five"], None),
         (["oracle", "--max-seconds"], None),
         (["oracle", "--max-states", "5"], None),
+        (["oracle", "--max-seconds", "10000000"], 1e7),
+        (["oracle", "--max-seconds", "10000001"], None),
+        (["oracle", "--max-seconds", "1e23"], None),
     ],
 )
 def test_the_startup_timer_reads_only_a_positive_finite_max_seconds(argv: list[str], expected: float | None) -> None:
     assert hg_marl_start.given_max_seconds(["hg-marl", *argv]) == expected
+
+
+@pytest.mark.parametrize("command", ["oracle", "headroom"])
+def test_a_budget_past_the_longest_timer_is_refused_in_one_line(
+    command: str, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """1e23 s was past what ``setitimer`` holds: an ``OverflowError`` traceback. The longest
+    budget is 1e7 s (about 16 weeks); past it, one line naming the option and the limit, exit 2."""
+    from hg_marl.training.cli import main
+
+    monkeypatch.setattr("sys.argv", ["hg-marl", command, "--max-seconds", "1e23"])
+    with pytest.raises(SystemExit) as exit_info:
+        main()
+    assert exit_info.value.code == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["error: --max-seconds: expected a number <= 1e+07, got 1e+23"]
+
+
+def test_a_library_budget_past_the_longest_timer_is_refused() -> None:
+    from hg_marl.agents.models.budget import Budget
+    from hg_marl.core.errors import ConfigError
+
+    assert Budget(seconds=1e7).seconds == 1e7
+    for seconds in (1e7 + 1, 1e23, float("inf"), float("nan"), 0.0, -1.0):
+        with pytest.raises(ConfigError, match="--max-seconds"):
+            Budget(seconds=seconds)
 
 
 def test_the_startup_timer_is_armed_under_the_script_and_stopped_when_the_budget_takes_over(

@@ -34,6 +34,7 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """Policy optimal against A played with T over the optimum with T; 1 - IQM of the cooperative row."""
         from hg_marl.agents.humans import HumanError
+        from hg_marl.agents.models.budget import MAX_SECONDS
         from hg_marl.agents.models.forked import check_jobs
         from hg_marl.agents.oracle import OracleTooLarge
         from hg_marl.core.errors import ConfigError, check_finite
@@ -47,7 +48,7 @@ def register(app: typer.Typer) -> None:
             check_jobs(jobs, "--jobs")
         except ValueError as exc:
             raise ConfigError(str(exc)) from None
-        check_finite(max_seconds, "--max-seconds", positive=True)
+        check_finite(max_seconds, "--max-seconds", positive=True, maximum=MAX_SECONDS)
         specs = split_specs(humans or "")
         columns, held_out = partners(population, specs)
         load_scenario(scenario)

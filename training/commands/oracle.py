@@ -19,12 +19,12 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """Optimal tasks per simulated hour by value iteration on the exact model."""
         from hg_marl.agents.humans import HumanError
-        from hg_marl.agents.models.budget import Budget
+        from hg_marl.agents.models.budget import MAX_SECONDS, Budget
         from hg_marl.agents.oracle import OracleTooLarge, oracle_rate
         from hg_marl.core.errors import check_finite
         from hg_marl.training.commands.common import command_start, over_budget
 
-        check_finite(max_seconds, "--max-seconds", positive=True)
+        check_finite(max_seconds, "--max-seconds", positive=True, maximum=MAX_SECONDS)
         check_finite(max_memory, "--max-memory", positive=True)
         # the budget counts from the command's start, imports included: what its user waits
         budget = Budget(max_seconds, int(max_memory * 2**30), max_states, start=command_start())
