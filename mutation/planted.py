@@ -18113,6 +18113,14 @@ ROUND141_TESTS = "tests/training/test_pinned_round141.py"
 """The values round 141's missed bugs changed, pinned after the round: every round-141 bug runs them too."""
 FRESH141 = pinned_after(FRESH141, ROUND141_TESTS)
 
+FRESH142: tuple[Bug, ...] = ()
+
+FRESH143: tuple[Bug, ...] = ()
+
+FRESH144: tuple[Bug, ...] = ()
+
+FRESH145: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -18256,6 +18264,10 @@ ALL = (
     + FRESH139
     + FRESH140
     + FRESH141
+    + FRESH142
+    + FRESH143
+    + FRESH144
+    + FRESH145
 )
 
 
