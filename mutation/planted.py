@@ -18628,6 +18628,14 @@ ROUND145_TESTS = "tests/training/test_pinned_round145.py"
 """The values round 145's missed bugs changed, pinned after the round: every round-145 bug runs them too."""
 FRESH145 = pinned_after(FRESH145, ROUND145_TESTS)
 
+FRESH146: tuple[Bug, ...] = ()
+
+FRESH147: tuple[Bug, ...] = ()
+
+FRESH148: tuple[Bug, ...] = ()
+
+FRESH149: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -18775,6 +18783,10 @@ ALL = (
     + FRESH143
     + FRESH144
     + FRESH145
+    + FRESH146
+    + FRESH147
+    + FRESH148
+    + FRESH149
 )
 
 
