@@ -18,6 +18,9 @@ The model:
 - **Counts** per (mid-cycle state, robot action seen), each key's counts multiplied by
   ``forget`` at each of its observations (a partner who changes is followed within a few
   visits of each state).
+- **Pauses**: a wait at a key where the partner has done something else is a pause, not
+  an answer, and is not counted (:meth:`ObservedPartner.update`): a partner who rests is
+  back with the habits it had.
 - **Predictive** at a seen key: ``p(a) = (n_a + weight * base(a)) / (N + weight)``; at an
   unseen key: the base's answer. With ``weight`` 0.5 one answer seen gives it 2/3 of the
   mass, two the same answers 4/5.
@@ -136,6 +139,19 @@ class ObservedPartner:
         """
         return self.contradictions < CONTRADICTED * max(self.repeats, MIN_REPEATS)
 
+    def seen_at(self, world: World, state: State) -> bool:
+        """Whether the partner has answered one of the robot's feasible moves at ``state``.
+
+        Where it has not, the model answers as its base does, a member that explains this
+        partner worse than the model (or the robot would not be planning with the model): a
+        best response there is a guess, and the robot plans as the planner does
+        (:class:`~hg_marl.agents.robots.belief.BeliefRobot`).
+        """
+        for a in world.feasible_indices(state, Agent.ROBOT):
+            if (world.table.successor(state, Agent.ROBOT, a)[0], a) in self.counts:
+                return True
+        return False
+
     def distribution(self, world: World, state: State, robot_action: int = -1) -> Distribution:
         """The predicted answer at mid-cycle ``state`` while the robot does ``robot_action``."""
         return answer(self.base, self.counts, self.weight, world, state, robot_action)
@@ -145,11 +161,24 @@ class ObservedPartner:
         return dict(self.distribution(world, state, robot_action)).get(human_action, 0.0)
 
     def update(self, world: World, state: State, robot_action: int, human_action: int) -> None:
-        """Count the answer (after :meth:`predict`, for a prequential evidence)."""
+        """Count the answer (after :meth:`predict`, for a prequential evidence); a pause is not counted.
+
+        A wait where the partner has done something else (at this state, to this move) is a
+        pause (a rest, a look away), not its answer to the robot's move. Counted, the pauses
+        of a partner who rests would teach the model that the partner no longer answers as
+        it did, and once it is back the robot would plan around a partner who stops (waiting
+        with an object in hand, fetching a handover). The model's answer there stays what the
+        partner did; the posterior still weighs the wait (:meth:`predict` came first), so a
+        member who idles can explain a partner who has stopped for good. A wait where the
+        partner has only ever waited is its answer (a partner who stops when the robot stops).
+        """
+        counts = self.counts.setdefault((state, robot_action), {})
+        wait = world.n_actions(Agent.HUMAN) - 1
+        if human_action == wait and any(a != wait for a in counts):
+            return  # a pause: the model, its surprises and its stationarity are unchanged
         if self.predict(world, state, robot_action, human_action) < 0.5:
             self.version += 1
             self.surprised[(state, robot_action)] = self.version
-        counts = self.counts.setdefault((state, robot_action), {})
         if counts:  # an answer where the partner answered before: as before, or not
             total = sum(counts.values())
             contradicted = counts.get(human_action, 0.0) < 0.5 * total

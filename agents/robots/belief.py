@@ -40,7 +40,9 @@ response** (the oracle's values, :func:`~hg_marl.agents.oracle.oracle_rate`):
   state, over the expansions kept from earlier solves; a solve is charged to the clock as a
   planner call of one node per state it expands. A partner whose answers at a state
   contradict its earlier ones there (a clock, its own history), or a table whose members'
-  models are too large (``roboergosum``), is planned for as the plain planner plans.
+  models are too large (``roboergosum``), is planned for as the plain planner plans; so
+  is a state where the partner was never seen answering, where the model is only a member
+  worse than itself. A wait where the partner has acted is a pause, not counted.
 - **Probing** (``probe=S``, default off). While no member holds 90% of the belief, the
   robot may take, instead of its best action, the action whose reply tells the members
   apart most (mutual information between member and reply, :meth:`information`) if it
@@ -463,6 +465,8 @@ class BeliefRobot(Robot):
         partner = self.posterior.learned
         assert isinstance(partner, ObservedPartner)
         best = int(np.argmax(weights))
+        if not partner.seen_at(world, state):
+            return -1, 0.0  # the model is only its base here, a member worse than it: the planner drives
         q, expanded, solved = self._observed.q_values(
             world, state, partner, self.members.result(best).n_states, self._relabel
         )
