@@ -19133,6 +19133,14 @@ ROUND149_TESTS = "tests/training/test_pinned_round149.py"
 """The values round 149's missed bugs changed, pinned after the round: every round-149 bug runs them too."""
 FRESH149 = pinned_after(FRESH149, ROUND149_TESTS)
 
+FRESH150: tuple[Bug, ...] = ()
+
+FRESH151: tuple[Bug, ...] = ()
+
+FRESH152: tuple[Bug, ...] = ()
+
+FRESH153: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -19284,6 +19292,10 @@ ALL = (
     + FRESH147
     + FRESH148
     + FRESH149
+    + FRESH150
+    + FRESH151
+    + FRESH152
+    + FRESH153
 )
 
 
