@@ -14,6 +14,7 @@ from hg_marl.agents.observed_partner import ObservedPartner, ObservedSolver
 from hg_marl.agents.robots import make_robot
 from hg_marl.core import Agent, World
 from hg_marl.training.runner import RunConfig, run
+from hg_marl.training.study import load_study
 from tests.agents.test_observed_partner import HARD, LastFirst, first_state
 
 
@@ -113,3 +114,18 @@ def test_a_partner_back_from_a_rest_is_planned_for_as_it_worked() -> None:
     takes = [int(r.log["action_name"].astype(str).str.startswith("take").sum()) for r in (planner, observed)]
     assert takes == [0, 0]
     assert observed.summary["tasks_solved"] >= planner.summary["tasks_solved"]
+
+
+def test_the_rests_study_runs_the_planner_and_the_observed_robot_over_25_spells() -> None:
+    """``studies/family_out_rests.toml`` (docs/adaptation.md, section 11): every pair of work
+    in 70, 80, ..., 110 s and rest in 40, 50, ..., 80 s, on both hard layouts, 3 seeds."""
+    study = load_study("studies/family_out_rests.toml")
+    assert study.scenarios == ("forced_coordination", "asymmetric_advantages")
+    assert study.seeds == (0, 1, 2)
+    assert [r.label for r in study.robots] == [
+        "planner",
+        "belief:open_world=observed,population=populations/hard_layouts.toml",
+    ]
+    spells = {(a.params["work"], a.params["rest"]) for a in study.humans if a.name == "fo_bursts"}
+    assert spells == {(w, r) for w in range(70, 111, 10) for r in range(40, 81, 10)}
+    assert len(study.humans) == 25
