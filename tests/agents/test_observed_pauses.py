@@ -12,18 +12,23 @@ import pytest
 from hg_marl.agents.humans.family_out import Bursts
 from hg_marl.agents.observed_partner import ObservedPartner, ObservedSolver
 from hg_marl.agents.robots import make_robot
-from hg_marl.core import Agent, World
+from hg_marl.core import Agent, State, World
 from hg_marl.training.runner import RunConfig, run
 from hg_marl.training.study import load_study
 from tests.agents.test_observed_partner import HARD, LastFirst, first_state
 
 
-def test_a_wait_where_the_partner_did_something_else_is_a_pause_and_not_counted() -> None:
+def _first_key() -> tuple[World, State, int, int, int, int]:
+    """The first table's key for the robot's wait: its world, mid-cycle state, the robot's wait,
+    the number of the human's feasible answers, the human's wait and one answer that is not."""
     world = World("forced_coordination")
     mid, wait_r, feasible = first_state(world)
-    n = len(feasible)
     wait_h = world.n_actions(Agent.HUMAN) - 1
-    act = next(h for h in feasible if h != wait_h)
+    return world, mid, wait_r, len(feasible), wait_h, next(h for h in feasible if h != wait_h)
+
+
+def test_a_wait_where_the_partner_did_something_else_is_a_pause_and_not_counted() -> None:
+    world, mid, wait_r, n, wait_h, act = _first_key()
     model = ObservedPartner(weight=0.5, forget=0.8)  # no base: uniform over the n feasible answers
     model.update(world, mid, wait_r, act)
     version, observations, repeats = model.version, model.observations, model.repeats
@@ -42,12 +47,8 @@ def test_a_wait_where_the_partner_did_something_else_is_a_pause_and_not_counted(
 
 def test_a_wait_where_the_partner_only_ever_waited_is_its_answer() -> None:
     """A partner who waits whenever the robot waits (a mirror) is learnt: its waits are answers."""
-    world = World("forced_coordination")
-    mid, wait_r, feasible = first_state(world)
-    n = len(feasible)
-    wait_h = world.n_actions(Agent.HUMAN) - 1
-    act = next(h for h in feasible if h != wait_h)
-    model = ObservedPartner(weight=0.5, forget=0.8)
+    world, mid, wait_r, n, wait_h, act = _first_key()
+    model = ObservedPartner(weight=0.5, forget=0.8)  # no base: uniform over the n feasible answers
     model.update(world, mid, wait_r, wait_h)
     model.update(world, mid, wait_r, wait_h)
     assert model.counts[(mid, wait_r)] == pytest.approx({wait_h: 1.8})  # 1 * 0.8 + 1
