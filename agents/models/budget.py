@@ -47,6 +47,9 @@ DEFAULT_STATES = 1_500_000
 """The default states budget of one model."""
 MIN_FREE_BYTES = 512 * 2**20
 """Below this much memory available to the kernel, a build stops whatever its own budget."""
+RING_AT_ONCE = 1e-6
+"""Seconds to an outer timer put back after :meth:`Budget.deadline` whose moment passed in the
+block (a timer of 0 would be none)."""
 
 
 class OverBudget(RuntimeError):
@@ -233,6 +236,7 @@ class Budget:
             self._refuse(f"{self.seconds:g} s of wall time (after {self.spent():.1f} s)", "--max-seconds")
 
         previous = signal.signal(signal.SIGALRM, ring)
+        entered = self.clock()
         old_delay, old_interval = signal.setitimer(signal.ITIMER_REAL, left)
         try:
             yield
@@ -240,4 +244,7 @@ class Budget:
             signal.setitimer(signal.ITIMER_REAL, 0)
             signal.signal(signal.SIGALRM, previous)
             if old_delay > 0:
-                signal.setitimer(signal.ITIMER_REAL, old_delay, old_interval)
+                # The outer timer lost the block's time too: it rings when it would have,
+                # at once if that moment passed during the block (never later, never lost).
+                rest = max(old_delay - (self.clock() - entered), RING_AT_ONCE)
+                signal.setitimer(signal.ITIMER_REAL, rest, old_interval)
