@@ -220,8 +220,8 @@ class Budget:
         """Within the block, a real-time timer refuses at the time budget wherever the work is.
 
         Only on the main thread (where signals are delivered); elsewhere, and with no time
-        budget, the block runs with the checks alone. The previous handler and timer are
-        restored on exit.
+        budget, the block runs with the checks alone. The previous handler is restored on
+        exit, and a previous timer is put back with the block's seconds taken off it.
         """
         if (
             self.seconds is None
