@@ -19644,6 +19644,14 @@ ROUND153_TESTS = "tests/training/test_pinned_round153.py"
 """The values round 153's missed bugs changed, pinned after the round: every round-153 bug runs them too."""
 FRESH153 = pinned_after(FRESH153, ROUND153_TESTS)
 
+FRESH154: tuple[Bug, ...] = ()
+
+FRESH155: tuple[Bug, ...] = ()
+
+FRESH156: tuple[Bug, ...] = ()
+
+FRESH157: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -19799,6 +19807,10 @@ ALL = (
     + FRESH151
     + FRESH152
     + FRESH153
+    + FRESH154
+    + FRESH155
+    + FRESH156
+    + FRESH157
 )
 
 
