@@ -20153,6 +20153,14 @@ ROUND157_TESTS = "tests/training/test_pinned_round157.py"
 """The values round 157's missed bugs changed, pinned after the round: every round-157 bug runs them too."""
 FRESH157 = pinned_after(FRESH157, ROUND157_TESTS)
 
+FRESH158: tuple[Bug, ...] = ()
+
+FRESH159: tuple[Bug, ...] = ()
+
+FRESH160: tuple[Bug, ...] = ()
+
+FRESH161: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -20312,6 +20320,10 @@ ALL = (
     + FRESH155
     + FRESH156
     + FRESH157
+    + FRESH158
+    + FRESH159
+    + FRESH160
+    + FRESH161
 )
 
 
