@@ -45,12 +45,13 @@ from __future__ import annotations
 import json
 import logging
 import os
-import tempfile
 from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Literal
 
 import numpy as np
+
+from hg_marl.core.atomic import atomic_write
 
 logger = logging.getLogger(__name__)
 
@@ -232,17 +233,16 @@ class QLearner:
 
     # ---- persistence -------------------------------------------------------------
     def save(self, path: str | os.PathLike[str]) -> Path:
-        """Write weights, codes and statistics to an ``.npz`` atomically (temp file + rename).
+        """Write weights, codes and statistics to an ``.npz`` atomically (the project's
+        :func:`~hg_marl.core.atomic.atomic_write`: flushed to disk, mode 0644).
 
         A crash mid-write leaves the previous file intact, which matters for long runs
         that checkpoint the habit periodically.
         """
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
         codes = np.array(self._code_facts, dtype=np.int8).reshape(len(self._code_facts), self.n_facts)
-        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-        try:
-            with os.fdopen(fd, "wb") as f:
+
+        def write(tmp: Path) -> None:
+            with tmp.open("wb") as f:  # a file object: np.savez would add ".npz" to a name
                 np.savez(
                     f,
                     config=np.array(json.dumps(asdict(self.config))),
@@ -256,11 +256,8 @@ class QLearner:
                     codes=codes,
                     n_updates=np.array(self.n_updates),
                 )
-            os.replace(tmp, path)
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
-        return path
+
+        return atomic_write(Path(path), write)
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> QLearner:

@@ -151,6 +151,26 @@ def test_save_is_atomic_on_failure(tmp_path, monkeypatch) -> None:
     assert [p.name for p in tmp_path.iterdir()] == ["habit.npz"]
 
 
+def test_a_saved_habit_is_readable_by_others_as_every_result_is(tmp_path) -> None:
+    """The habit's file goes through the project's atomic write: mode 0644 like every result
+    file (it was 0600, ``mkstemp``'s own, and written without a flush to disk)."""
+    import stat
+
+    path = QLearner(N_FACTS, N_ACTIONS).save(tmp_path / "habit.npz")
+    assert stat.S_IMODE(path.stat().st_mode) == 0o644
+
+
+def test_the_uncertainty_follows_the_squared_td_error_worked_by_hand() -> None:
+    """Prior variance 1, rate 0.1. A first update with reward 3 on a terminal step from a
+    zero Q is a TD error of 3: the pair's and the state's variance move a tenth of the way
+    to 9, 1 + 0.1 * (9 - 1) = 1.8, so the sd is sqrt(1.8) for the action taken and, untried
+    there, for the others (their state's running value); another state keeps the prior's 1."""
+    q = QLearner(N_FACTS, N_ACTIONS, QLearnerConfig(features="tabular"))
+    assert q.update(S0, 1, 3.0, S1, done=True) == pytest.approx(3.0)
+    assert q.uncertainty(S0) == pytest.approx(np.full(N_ACTIONS, np.sqrt(1.8)))
+    assert q.uncertainty(S1) == pytest.approx(np.ones(N_ACTIONS))
+
+
 @pytest.mark.parametrize(
     "kwargs",
     [{"features": "deep"}, {"alpha": 0.0}, {"gamma": 1.5}, {"beta": -1.0}, {"uncertainty_rate": 0.0}],
