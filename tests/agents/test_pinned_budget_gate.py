@@ -188,33 +188,9 @@ def test_a_process_start_that_cannot_be_read_or_lies_ahead_is_now(
     assert before <= start <= time.perf_counter()
 
 
-@pytest.mark.parametrize("outer", [5.0, 0.0])
-def test_the_deadline_puts_back_a_timer_armed_before_it(outer: float, monkeypatch: pytest.MonkeyPatch) -> None:
-    """An outer timer with 5 s left is re-armed for them when the block ends; none is armed
-    where none was."""
-    import signal
-    import time
-
-    monkeypatch.setattr(time, "perf_counter", lambda: 100.0)
-    calls: list[tuple[float, float]] = []
-
-    def record(which: int, seconds: float, interval: float = 0.0) -> tuple[float, float]:
-        calls.append((seconds, interval))
-        return (outer, 0.0) if len(calls) == 1 else (0.0, 0.0)
-
-    monkeypatch.setattr(signal, "setitimer", record)
-    with Budget(10.0, None, None, clock=time.perf_counter, start=96.0).deadline():
-        pass
-    assert calls == [(6.05, 0.0), (0.0, 0.0), *([(5.0, 0.0)] if outer else [])]
-
-
-@pytest.mark.parametrize(("outer", "block", "expected"), [(5.0, 2.0, 3.0), (1.0, 2.0, 1e-6), (5.0, 5.0, 1e-6)])
-def test_an_outer_timer_put_back_rings_when_it_would_have(
-    outer: float, block: float, expected: float, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    """The block's seconds count against the outer timer too: 5 s left, a 2 s block, 3 s left
-    after it (re-armed with 5 s, it rang 2 s late). A moment that passed in the block rings at
-    once (1e-6 s: a timer of 0 is none); it is never lost."""
+def _timers_armed(outer: float, block: float, monkeypatch: pytest.MonkeyPatch) -> list[tuple[float, float]]:
+    """The ``setitimer`` calls of a 10 s budget's deadline block (4 s spent) that lasts ``block``
+    seconds, an outer timer with ``outer`` seconds left (0: none) armed before it."""
     import signal
     import time
 
@@ -229,6 +205,25 @@ def test_an_outer_timer_put_back_rings_when_it_would_have(
     monkeypatch.setattr(signal, "setitimer", record)
     with Budget(10.0, None, None, clock=time.perf_counter, start=96.0).deadline():
         now[0] += block
+    return calls
+
+
+@pytest.mark.parametrize("outer", [5.0, 0.0])
+def test_the_deadline_puts_back_a_timer_armed_before_it(outer: float, monkeypatch: pytest.MonkeyPatch) -> None:
+    """An outer timer with 5 s left is re-armed for them when the block ends; none is armed
+    where none was."""
+    calls = _timers_armed(outer, 0.0, monkeypatch)
+    assert calls == [(6.05, 0.0), (0.0, 0.0), *([(5.0, 0.0)] if outer else [])]
+
+
+@pytest.mark.parametrize(("outer", "block", "expected"), [(5.0, 2.0, 3.0), (1.0, 2.0, 1e-6), (5.0, 5.0, 1e-6)])
+def test_an_outer_timer_put_back_rings_when_it_would_have(
+    outer: float, block: float, expected: float, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The block's seconds count against the outer timer too: 5 s left, a 2 s block, 3 s left
+    after it (re-armed with 5 s, it rang 2 s late). A moment that passed in the block rings at
+    once (1e-6 s: a timer of 0 is none); it is never lost."""
+    calls = _timers_armed(outer, block, monkeypatch)
     assert calls[:2] == [(6.05, 0.0), (0.0, 0.0)]
     assert calls[2] == (pytest.approx(expected), 0.0)
     assert len(calls) == 3
