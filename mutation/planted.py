@@ -20653,6 +20653,14 @@ ROUND161_TESTS = "tests/training/test_pinned_round161.py"
 """The values round 161's missed bugs changed, pinned after the round: every round-161 bug runs them too."""
 FRESH161 = pinned_after(FRESH161, ROUND161_TESTS)
 
+FRESH162: tuple[Bug, ...] = ()
+
+FRESH163: tuple[Bug, ...] = ()
+
+FRESH164: tuple[Bug, ...] = ()
+
+FRESH165: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -20816,6 +20824,10 @@ ALL = (
     + FRESH159
     + FRESH160
     + FRESH161
+    + FRESH162
+    + FRESH163
+    + FRESH164
+    + FRESH165
 )
 
 
