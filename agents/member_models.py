@@ -32,7 +32,7 @@ from pathlib import Path
 from typing import Any, Protocol
 
 from hg_marl.agents.models.answers import stationary_human
-from hg_marl.agents.models.cache import cache_folder, result_key
+from hg_marl.agents.models.cache import cache_folder, named_folder, result_key
 from hg_marl.agents.models.python_model import PythonModel
 from hg_marl.agents.oracle import OracleResult, oracle_rate
 from hg_marl.agents.planner.space import Relabel
@@ -63,13 +63,15 @@ class MemberModels:
 
     Args:
         specs: the members' human specs, in the belief's order.
-        cache: a folder for the on-disk content cache; empty: ``$HG_MARL_CACHE/oracle``
-            when set, else no disk cache.
+        cache: a folder for the on-disk content cache, created and tried at once (a folder
+            that cannot be written is refused); empty: ``$HG_MARL_CACHE/oracle`` when set,
+            else no disk cache.
+        option: what named ``cache``, for a refusal's message.
     """
 
-    def __init__(self, specs: tuple[str, ...], cache: str = "") -> None:
+    def __init__(self, specs: tuple[str, ...], cache: str = "", option: str = "cache") -> None:
         self.specs = specs
-        self.cache: Path | None = Path(cache) if cache else cache_folder(True)
+        self.cache: Path | None = named_folder(cache, option) if cache else cache_folder(True)
         self.world: World | None = None
         self._results: list[OracleResult | None] = [None] * len(specs)
         self._models: list[PythonModel | None] = [None] * len(specs)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import io
 import os
+import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -33,6 +34,26 @@ def cache_folder(cache: Path | str | bool | None) -> Path | None:
         root = os.environ.get("HG_MARL_CACHE")
         return Path(root) / "oracle" if root else None
     return Path(cache)
+
+
+def named_folder(folder: Path | str, option: str) -> Path:
+    """A cache folder the user named, created if missing and tried with a temporary file before any work.
+
+    A folder named by the user is an output: a typo or a folder nobody can write would
+    otherwise leave every run solving its models again in silence. Created because the
+    user named it, as every output folder is (docs/inputs.md); only ``$HG_MARL_CACHE``, a
+    machine-wide convenience, stays best effort. Raises :class:`OutputError`, one line
+    naming ``option``.
+    """
+    path = Path(folder)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=".hg-marl-probe-", dir=path)
+    except OSError as exc:
+        raise OutputError(f"{option} {path}: cannot write in it ({exc.strerror or exc})") from None
+    os.close(fd)
+    os.unlink(tmp)
+    return path
 
 
 def result_key(world: World, spec: str, options: dict[str, Any]) -> str:

@@ -96,7 +96,7 @@ from hg_marl.agents.robots.base import Robot, make_planner
 from hg_marl.agents.robots.partnering import planner_in
 from hg_marl.agents.robots.planner import PlannerRobot
 from hg_marl.core import Agent, Kind, State, World
-from hg_marl.core.errors import RobotError, check_bool, check_finite
+from hg_marl.core.errors import OutputError, RobotError, check_bool, check_finite
 from hg_marl.policy import Decision, Turn
 
 HEDGES = ("qmdp", "map")
@@ -213,7 +213,10 @@ class BeliefRobot(Robot):
             self.posterior = PartnerPosterior(types=types, prior=prior, decay=decay, epsilon=epsilon, learned=learned)
         except ValueError as exc:
             raise RobotError(f"belief: {exc}") from None
-        self.members = MemberModels(self.member_specs, cache)
+        try:
+            self.members = MemberModels(self.member_specs, cache, "belief.cache")
+        except OutputError as exc:
+            raise RobotError(str(exc)) from None
         self.refusals = check_bool(refusals, "belief.refusals", RobotError)
         self._never_takes = MemberModels(tuple(never_takes(spec) for spec in self.member_specs), cache)
         self._fallback = OracleRobot(result=None)

@@ -20,6 +20,7 @@ from hg_marl.agents.member_models import MemberModels, clear_memo
 from hg_marl.agents.oracle import oracle_rate
 from hg_marl.agents.robots.belief import BeliefRobot
 from hg_marl.core import World
+from hg_marl.core.errors import RobotError
 from hg_marl.training.runner import RunConfig, run
 
 SCENARIOS = Path(__file__).resolve().parents[2] / "hg_marl" / "core" / "scenarios"
@@ -93,6 +94,26 @@ def test_a_second_robot_reads_the_members_from_the_disk_cache(tmp_path: Path, bu
     state = world.initial_state(np.random.default_rng(0))
     fresh = oracle_rate(world, MAT, cache=False)
     assert second.result(1).value_at(world, state) == fresh.value_at(world, state)
+
+
+def test_a_named_cache_folder_is_created_and_tried_before_any_work(tmp_path: Path, builds: list[int]) -> None:
+    # The folder a user names is an output: created with its missing parents (the user named
+    # it), empty of the write probe, and nothing solved yet.
+    folder = tmp_path / "a" / "b"
+    BeliefRobot(population=_population(tmp_path, (COOP, MAT)), cache=str(folder))
+    assert folder.is_dir() and list(folder.iterdir()) == [] and builds == []
+
+
+@pytest.mark.parametrize("where", ["file/sub", "file"])
+def test_a_cache_folder_that_cannot_be_written_is_refused_in_one_line(tmp_path: Path, where: str) -> None:
+    # A folder through a file (or the file itself) cannot hold the cache: refused when the
+    # robot is built, naming the parameter, instead of every run solving its members again.
+    (tmp_path / "file").write_text("x")
+    folder = tmp_path / where
+    with pytest.raises(RobotError) as refused:
+        BeliefRobot(population=_population(tmp_path, (COOP,)), cache=str(folder))
+    assert str(refused.value).startswith(f"belief.cache {folder}: cannot write in it (")
+    assert "\n" not in str(refused.value) and (tmp_path / "file").read_text() == "x"
 
 
 def test_the_process_memo_serves_a_second_robot_without_a_disk_cache(
