@@ -104,16 +104,17 @@ def test_a_named_cache_folder_is_created_and_tried_before_any_work(tmp_path: Pat
     assert folder.is_dir() and list(folder.iterdir()) == [] and builds == []
 
 
-@pytest.mark.parametrize("where", ["file/sub", "file"])
-def test_a_cache_folder_that_cannot_be_written_is_refused_in_one_line(tmp_path: Path, where: str) -> None:
+@pytest.mark.parametrize(("where", "why"), [("file/sub", "Not a directory"), ("file", "File exists")])
+def test_a_cache_folder_that_cannot_be_written_is_refused_in_one_line(tmp_path: Path, where: str, why: str) -> None:
     # A folder through a file (or the file itself) cannot hold the cache: refused when the
-    # robot is built, naming the parameter, instead of every run solving its members again.
+    # robot is built, naming the parameter and the system's reason (POSIX's ENOTDIR and
+    # EEXIST texts), instead of every run solving its members again.
     (tmp_path / "file").write_text("x")
     folder = tmp_path / where
     with pytest.raises(RobotError) as refused:
         BeliefRobot(population=_population(tmp_path, (COOP,)), cache=str(folder))
-    assert str(refused.value).startswith(f"belief.cache {folder}: cannot write in it (")
-    assert "\n" not in str(refused.value) and (tmp_path / "file").read_text() == "x"
+    assert str(refused.value) == f"belief.cache {folder}: cannot write in it ({why})"
+    assert (tmp_path / "file").read_text() == "x"
 
 
 def test_the_process_memo_serves_a_second_robot_without_a_disk_cache(
