@@ -41,6 +41,12 @@ class LiveRobots:
         self.specs = specs
         # a name builds one actor per table; an instance is shared by the tables it plays
         self.actors = [make_robot_actor(specs[i % len(specs)]) for i in range(num_envs)]
+        self._clock: np.ndarray = np.zeros(num_envs)
+        self._tasks: np.ndarray = np.zeros(num_envs, dtype=np.int64)
+
+    def follow(self, clock: np.ndarray, tasks_solved: np.ndarray) -> None:
+        """Every table's clock and tasks solved (``FollowsClock``), for the turns the robots see."""
+        self._clock, self._tasks = clock, tasks_solved
 
     def reset_rows(self, rows: np.ndarray, rng: np.random.Generator) -> None:
         """Start the actors of tables ``rows`` with generators drawn from ``rng``."""
@@ -56,9 +62,11 @@ class LiveRobots:
         for j in range(len(batch)):
             state = batch.state(j)
             obs = {"observation": self.world.facts(state), "action_mask": self.world.mask(state, Agent.ROBOT)}
-            out[j] = int(
-                self.actors[int(rows[j])].act(Turn(world=self.world, state=state, agent=Agent.ROBOT, observation=obs))
+            row = int(rows[j])
+            turn = Turn(
+                self.world, state, Agent.ROBOT, obs, clock=float(self._clock[row]), tasks_solved=int(self._tasks[row])
             )
+            out[j] = int(self.actors[int(rows[j])].act(turn))
         return out
 
 

@@ -9,7 +9,8 @@ over ``[0, 2**63 - 1)``, in row order (the reference is that rule, written out);
 human is that human's compiled table, not a population of one; a robot list is compiled
 only when it names one compilable robot (``planner``), other robots stay live without a
 warning (the warning is for a scenario over the compiler's budget); the compiled robot
-is built without a progress bar and, by default, cached under ``$HG_MARL_CACHE``.
+is built without a progress bar and, by default, cached under ``$HG_MARL_CACHE``. Live robots
+in the human's seat see each table's clock and tasks solved, as the live env shows them.
 """
 
 from __future__ import annotations
@@ -150,3 +151,45 @@ def test_a_learned_human_given_by_its_spec_is_named_by_that_spec(tmp_path: Path)
     save_sb3_policy(tmp_path / "policy", model, "paper2015", observation="facts")
     spec = f"learned:path={tmp_path / 'policy'}"
     assert compiled_humans(World("paper2015"), spec, cache=None).name == spec
+
+
+class _Recording:
+    """The planner as a robot actor, recording the clock and tasks solved of every turn it is given."""
+
+    name = "recording"
+
+    def __init__(self) -> None:
+        from hg_marl.agents.robots import make_robot
+
+        self.inner = make_robot("planner")
+        self.seen: list[tuple[float, int]] = []
+
+    def reset(self, world: World, agent: Agent, rng: np.random.Generator) -> None:
+        self.inner.reset(world, agent, rng)
+
+    def act(self, turn: Turn) -> int:
+        self.seen.append((turn.clock, turn.tasks_solved))
+        return int(self.inner.act(turn))
+
+
+def test_live_robots_in_the_human_seat_see_each_tables_clock_and_tasks() -> None:
+    # A robot's turn opens the next cycle: it sees the clock the human's step ended at and
+    # the tasks solved before its own move (a task its move completes is counted after it,
+    # as in the live env), so each turn after the first is the previous step's info, less
+    # that step's task reward. The first turn comes at the reset: clock 0, no task.
+    from hg_marl.agents.vector_envs import human_vector_env
+
+    robots = [_Recording(), _Recording()]
+    env = human_vector_env(num_envs=2, robot=robots, compiled=False, continuing=True, max_cycles=None)
+    env.reset(seed=0)
+    rng = np.random.default_rng(0)
+    expected: list[list[tuple[float, int]]] = [[(0.0, 0)], [(0.0, 0)]]
+    for _ in range(80):
+        masks = env.action_masks()
+        _, _, _, _, info = env.step(np.array([rng.choice(np.flatnonzero(m)) for m in masks]))
+        for i in range(2):
+            expected[i].append(
+                (float(info["clock"][i]), int(info["tasks_solved"][i]) - int(info["task_reward"][i] > 0))
+            )
+    assert [r.seen for r in robots] == expected
+    assert all(r.seen[-1][0] > 100.0 and r.seen[-1][1] >= 3 for r in robots)  # the run went far enough to tell
