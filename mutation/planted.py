@@ -3823,8 +3823,8 @@ FRESH30 = (
     Bug(
         "fresh30 meta cost: a zero cost (habit, planner base or per node) refused as negative",
         "agents/meta/cost.py",
-        "            if value < 0:",
-        "            if value <= 0:",
+        "or value < 0:  # NaN passes",
+        "or value <= 0:  # NaN passes",
         gate("meta_cost"),
     ),
     Bug(

@@ -19,6 +19,7 @@ results would not reproduce; the default is a model:
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Literal
 
@@ -43,8 +44,8 @@ class CostModel:
             raise ValueError(f"CostModel.mode: expected 'model' or 'wall', got {self.mode!r}")
         for name in ("habit", "planner_base", "planner_per_node"):
             value = getattr(self, name)
-            if value < 0:
-                raise ValueError(f"CostModel.{name}: expected a non-negative number, got {value!r}")
+            if not math.isfinite(value) or value < 0:  # NaN passes `value < 0`; infinity would charge forever
+                raise ValueError(f"CostModel.{name}: expected a finite non-negative number, got {value!r}")
 
     def habit_cost(self, wall_time: float = 0.0) -> float:
         """Cost of one habit decision."""

@@ -260,6 +260,15 @@ def test_cost_model() -> None:
         CostModel(mode="fast")  # type: ignore[arg-type]
 
 
+@pytest.mark.parametrize("field", ["habit", "planner_base", "planner_per_node"])
+@pytest.mark.parametrize("value", [math.nan, math.inf, -math.inf])
+def test_a_charge_that_is_not_a_finite_number_is_refused(field: str, value: float) -> None:
+    # NaN is not below 0, so a sign check alone lets it through and every charge becomes
+    # NaN (infinity: a run whose clock stops meaning anything); each field is refused by name.
+    with pytest.raises(ValueError, match=rf"^CostModel\.{field}: expected a finite non-negative number, got "):
+        CostModel(**{field: value})
+
+
 def test_same_seed_same_decisions() -> None:
     def run(seed: int) -> list[str]:
         mc = controller("random", seed=seed)

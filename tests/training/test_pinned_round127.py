@@ -64,7 +64,7 @@ def test_the_solved_count_counts_the_results_taken_not_the_members_index(stub_or
 
 
 def test_a_negative_charge_is_refused_naming_the_value_given() -> None:
-    with pytest.raises(ValueError, match=r"CostModel\.habit: expected a non-negative number, got -0\.25"):
+    with pytest.raises(ValueError, match=r"CostModel\.habit: expected a finite non-negative number, got -0\.25"):
         CostModel(habit=-0.25)
 
 
