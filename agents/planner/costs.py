@@ -72,6 +72,8 @@ class CostWeights:
     def __post_init__(self) -> None:
         for f in fields(self):
             value = getattr(self, f.name)
+            if not math.isfinite(value):  # NaN passes every comparison below; plans would cost NaN
+                raise ValueError(f"CostWeights.{f.name} must be a finite number, got {value}")
             if value < 0:
                 raise ValueError(f"CostWeights.{f.name} must be >= 0, got {value}")
         if self.time <= 0:

@@ -205,3 +205,12 @@ def test_relabel_maps_actions_back_to_the_original_objects() -> None:
     pick = [w.index(Agent.ROBOT, Action(Kind.PICK, o)) for o in range(3)]
     assert [relabel.action_back(Agent.ROBOT, pick[o], orig) for o in range(3)] == [pick[2], pick[0], pick[1]]
     assert relabel.action_back(Agent.ROBOT, -1, orig) == -1  # "no action" stays "no action"
+
+
+@pytest.mark.parametrize("weight", ["time", "human_effort", "effort_balance", "human_idle", "human_holding"])
+@pytest.mark.parametrize("value", [float("nan"), float("inf")])
+def test_a_cost_weight_that_is_not_a_finite_number_is_refused(weight: str, value: float) -> None:
+    # NaN is neither below nor at 0, so the sign checks alone let it through and every plan
+    # would cost NaN (no plan better than another); infinity makes every plan cost the same.
+    with pytest.raises(ValueError, match=rf"^CostWeights\.{weight} must be a finite number, got {value}$"):
+        CostWeights(**{weight: value})
