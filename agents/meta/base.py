@@ -161,6 +161,8 @@ def check_count(name: str, value: int) -> int:
 def check_positive(name: str, value: float, allow_zero: bool = True) -> float:
     """Validate a non-negative (or positive) parameter."""
     v = float(value)
+    if not math.isfinite(v):  # NaN passes the comparisons below
+        raise ValueError(f"{name}: expected a finite number, got {value!r}")
     if v < 0 or (v == 0 and not allow_zero):
         kind = "non-negative" if allow_zero else "positive"
         raise ValueError(f"{name}: expected a {kind} number, got {value!r}")

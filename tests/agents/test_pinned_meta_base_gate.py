@@ -110,6 +110,15 @@ def test_zero_is_non_negative_but_not_positive() -> None:
             check_positive("t", bad)
 
 
+@pytest.mark.parametrize("allow_zero", [True, False])
+@pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf])
+def test_a_criterion_parameter_that_is_not_finite_is_refused(bad: float, allow_zero: bool) -> None:
+    # NaN is neither below nor at 0, so the sign checks alone accept it (vpi's tau = NaN
+    # would make every gain NaN); infinity is no rate either.
+    with pytest.raises(ValueError, match=r"^vpi\.tau: expected a finite number, got "):
+        check_positive("vpi.tau", bad, allow_zero=allow_zero)
+
+
 class _Counting(Criterion):
     """A criterion that counts its resets, to show what the base class does at the start of a run."""
 
