@@ -14568,8 +14568,8 @@ FRESH113: tuple[Bug, ...] = (
     Bug(
         "fresh113 training io: write_text adds a newline to the text it writes",
         "training/io.py",
-        '"""Atomically write text."""\n    return atomic_write(path, lambda tmp: tmp.write_text(text))',
-        '"""Atomically write text."""\n    return atomic_write(path, lambda tmp: tmp.write_text(text + "\\n"))',
+        'lambda tmp: tmp.write_text(text, encoding="utf-8"))',
+        'lambda tmp: tmp.write_text(text + "\\n", encoding="utf-8"))',
         gate("training_io"),
     ),
     Bug(

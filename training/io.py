@@ -19,9 +19,14 @@ __all__ = ["FILE_MODE", "atomic_write", "write_json", "write_text"]
 
 
 def _plain(value: Any) -> Any:
-    """JSON-safe copy: NaN and infinities become None (JSON has neither), numpy's floats included."""
+    """JSON-safe copy: NaN and infinities become None (JSON has neither), numpy's floats included;
+    numpy's integers and booleans stay integers and booleans, its arrays become lists."""
     if isinstance(value, np.floating):  # float32 and float16 are not Python floats (float64 is)
         value = float(value)
+    elif isinstance(value, np.bool_ | np.integer):  # json's default=float would write 3 as 3.0, True as 1.0
+        value = value.item()
+    elif isinstance(value, np.ndarray):
+        value = value.tolist()
     if isinstance(value, dict):
         return {str(k): _plain(v) for k, v in value.items()}
     if isinstance(value, list | tuple):
@@ -38,5 +43,5 @@ def write_json(path: str | Path, data: Any) -> Path:
 
 
 def write_text(path: str | Path, text: str) -> Path:
-    """Atomically write text."""
-    return atomic_write(path, lambda tmp: tmp.write_text(text))
+    """Atomically write text, as UTF-8 whatever the locale (a name outside ASCII is not refused under ``LANG=C``)."""
+    return atomic_write(path, lambda tmp: tmp.write_text(text, encoding="utf-8"))

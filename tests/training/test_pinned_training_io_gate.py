@@ -58,3 +58,32 @@ def test_numpys_narrow_floats_are_written_as_numbers_and_their_nan_as_null(tmp_p
         {"nan": np.float32("nan"), "inf": np.float16("inf"), "half": np.float32(0.5), "rows": [np.float32("-inf")]},
     )
     assert json.loads(path.read_text()) == {"half": 0.5, "inf": None, "nan": None, "rows": [None]}
+
+
+def test_numpys_integers_and_booleans_are_written_as_json_integers_and_booleans(tmp_path: Path) -> None:
+    """A task count from numpy is ``3``, not ``3.0``; a numpy flag is ``true``, not ``1.0``; an array is a list."""
+    data = {
+        "n": np.int64(3),
+        "u": np.uint8(255),
+        "b": np.bool_(True),
+        "rows": np.array([1, 2]),
+        "m": np.array([0.5, np.nan]),
+    }
+    path = write_json(tmp_path / "i.json", data)
+    assert path.read_text() == (
+        '{\n  "b": true,\n  "m": [\n    0.5,\n    null\n  ],\n'
+        '  "n": 3,\n  "rows": [\n    1,\n    2\n  ],\n  "u": 255\n}\n'
+    )
+
+
+def test_write_text_writes_utf8_whatever_the_locale(tmp_path: Path) -> None:
+    """A report naming a partner outside ASCII is written as UTF-8 bytes under an ASCII locale
+    (``LC_ALL=C`` with Python's UTF-8 mode and locale coercion off), not refused."""
+    import os
+    import subprocess
+    import sys
+
+    env = {**os.environ, "LC_ALL": "C", "PYTHONUTF8": "0", "PYTHONCOERCECLOCALE": "0"}
+    code = "import sys; from hg_marl.training.io import write_text; write_text(sys.argv[1], 'Zo\\u00eb, \\u6771')"
+    subprocess.run([sys.executable, "-c", code, str(tmp_path / "r.md")], env=env, check=True, capture_output=True)
+    assert (tmp_path / "r.md").read_bytes() == "Zo\u00eb, \u6771".encode()
