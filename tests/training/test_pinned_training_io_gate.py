@@ -12,6 +12,7 @@ import json
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from hg_marl.training.io import write_json, write_text
 
@@ -87,3 +88,14 @@ def test_write_text_writes_utf8_whatever_the_locale(tmp_path: Path) -> None:
     code = "import sys; from hg_marl.training.io import write_text; write_text(sys.argv[1], 'Zo\\u00eb, \\u6771')"
     subprocess.run([sys.executable, "-c", code, str(tmp_path / "r.md")], env=env, check=True, capture_output=True)
     assert (tmp_path / "r.md").read_bytes() == "Zo\u00eb, \u6771".encode()
+
+
+def test_a_nan_that_only_float_can_read_is_refused_not_written(tmp_path: Path) -> None:
+    """``default=float`` reads a ``Decimal('NaN')`` as NaN after the null pass; strict JSON refuses it
+    (``allow_nan=False``), so no file holds a bare ``NaN`` that other readers reject."""
+    from decimal import Decimal
+
+    with pytest.raises(ValueError, match="not JSON compliant"):
+        write_json(tmp_path / "d.json", {"x": Decimal("NaN")})
+    assert list(tmp_path.iterdir()) == []
+    assert json.loads(write_json(tmp_path / "ok.json", {"x": Decimal("0.5")}).read_text()) == {"x": 0.5}
