@@ -31,14 +31,13 @@ def register(app: typer.Typer) -> None:
         workers: Annotated[int, typer.Option(help="Worker processes.")] = 1,
     ) -> None:
         """Tasks, regret against the per-phase best response, paired difference from the baseline, recovery."""
-        import json
 
         from hg_marl.agents.humans.population import load_population
         from hg_marl.core.errors import ConfigError
         from hg_marl.core.spec import split_specs
         from hg_marl.training import plots
         from hg_marl.training.commands.common import check_duration, check_out_dir, check_workers, counting_bar
-        from hg_marl.training.io import atomic_write
+        from hg_marl.training.io import write_json
         from hg_marl.training.limits import MAX_SEEDS, check_count
         from hg_marl.training.switching import (
             SwitchingConfig,
@@ -86,8 +85,7 @@ def register(app: typer.Typer) -> None:
         finally:
             bar.close()
         typer.echo(switching_table(summary))
-        text = json.dumps(summary, indent=1)
-        atomic_write(out / "switching.json", lambda tmp: tmp.write_text(text))
+        write_json(out / "switching.json", summary)  # strict JSON, as every result file
         figure = plots.switching(summary, out / "switching.png")
         lost = [c for c in summary["cells"] if c["loses"]]
         typer.echo(
