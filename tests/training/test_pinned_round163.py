@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -36,28 +37,27 @@ def test_an_edit_of_the_oracle_or_its_solver_changes_the_oracle_cache_key(
     assert result_key(world, "cooperative", OPTIONS) != before
 
 
+def saved_dqn(path: Path, **policy_kwargs: Any) -> Path:
+    """An untrained DQN on paper2015's robot seat with these ``policy_kwargs``, saved at ``path`` (SB3 needed)."""
+    from stable_baselines3 import DQN
+
+    from hg_marl.agents.model_file import save_sb3, world_fields
+    from hg_marl.agents.views import RobotView
+
+    env = RobotView("paper2015")
+    model = DQN("MlpPolicy", env, buffer_size=16, learning_starts=0, seed=0, device="cpu", policy_kwargs=policy_kwargs)
+    return save_sb3(model, path, world_fields(PAPER, Agent.ROBOT), observation="facts")
+
+
 def test_a_rebuild_given_policy_kwargs_keeps_the_headers_network(tmp_path: Path) -> None:
     # A resume hands the run's hyperparameters to build_sb3; among them may be policy_kwargs.
     # The network is the one the header describes (one hidden layer of 8 units, as saved), so
     # the caller's policy_kwargs are dropped, not passed to SB3 a second time (a refusal).
     pytest.importorskip("stable_baselines3")
-    from stable_baselines3 import DQN
-
-    from hg_marl.agents.model_file import save_sb3, world_fields
     from hg_marl.agents.model_format import load_model_file
     from hg_marl.agents.model_sb3 import build_sb3
-    from hg_marl.agents.views import RobotView
 
-    model = DQN(
-        "MlpPolicy",
-        RobotView("paper2015"),
-        buffer_size=16,
-        learning_starts=0,
-        seed=0,
-        device="cpu",
-        policy_kwargs={"net_arch": [8]},
-    )
-    path = save_sb3(model, tmp_path / "model.json", world_fields(PAPER, Agent.ROBOT), observation="facts")
+    path = saved_dqn(tmp_path / "model.json", net_arch=[8])
     again = build_sb3(load_model_file(path), policy_kwargs={"net_arch": [64, 64]}, learning_rate=0.01)
     assert again.policy_kwargs["net_arch"] == [8]
     assert again.learning_rate == 0.01

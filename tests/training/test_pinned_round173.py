@@ -70,12 +70,8 @@ class _Stop(Exception):
     pass
 
 
-def test_an_oracle_job_keys_its_solution_by_the_files_its_humans_parameters_name(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    # A policy file named by the human's parameters (learned:path=FILE) is part of what the
-    # worker's oracle solution is kept by: two contents of the file, two sets of inputs, each
-    # holding the SHA-256 of the bytes the file held (worked here with hashlib).
+def oracle_inputs(monkeypatch: pytest.MonkeyPatch, job: Job, path: Path, contents: tuple[bytes, ...]) -> list[str]:
+    """The cache inputs a worker's oracle job is solved under, ``path`` holding each of ``contents`` in turn."""
     seen: list[str] = []
 
     def record(scenario: str, human: Any, inputs: str) -> Any:
@@ -83,11 +79,22 @@ def test_an_oracle_job_keys_its_solution_by_the_files_its_humans_parameters_name
         raise _Stop
 
     monkeypatch.setattr(backends, "_oracle_policy", record)
-    policy = tmp_path / "policy.npz"
-    job = Job(robot="oracle", seed=0, duration=20.0, human="learned", human_params={"path": str(policy)})
-    for content in (b"first weights", b"second weights"):
-        policy.write_bytes(content)
+    for content in contents:
+        path.write_bytes(content)
         with pytest.raises(_Stop):
             backends.execute(job)
-        assert hashlib.sha256(content).hexdigest() in seen[-1]
+    return seen
+
+
+def test_an_oracle_job_keys_its_solution_by_the_files_its_humans_parameters_name(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # A policy file named by the human's parameters (learned:path=FILE) is part of what the
+    # worker's oracle solution is kept by: two contents of the file, two sets of inputs, each
+    # holding the SHA-256 of the bytes the file held (worked here with hashlib).
+    policy = tmp_path / "policy.npz"
+    job = Job(robot="oracle", seed=0, duration=20.0, human="learned", human_params={"path": str(policy)})
+    contents = (b"first weights", b"second weights")
+    seen = oracle_inputs(monkeypatch, job, policy, contents)
+    assert all(hashlib.sha256(c).hexdigest() in inputs for c, inputs in zip(contents, seen, strict=True))
     assert len(seen) == 2 and seen[0] != seen[1]

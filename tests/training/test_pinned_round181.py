@@ -7,7 +7,6 @@ import json
 from importlib import resources
 from pathlib import Path
 from types import SimpleNamespace
-from typing import Any
 
 import numpy as np
 import pytest
@@ -17,10 +16,11 @@ from hg_marl.agents.progress import PROGRESS_AFTER
 from hg_marl.agents.robots import HybridRobot
 from hg_marl.core import Agent, State, World
 from hg_marl.policy import Turn
-from hg_marl.training import backends
 from hg_marl.training.store import Job
 from tests.agents.test_pinned_promises_b import PAPER, ROBOT_WAIT, _off_model_robot
 from tests.training.test_pinned_round37 import _Clocked
+from tests.training.test_pinned_round163 import saved_dqn
+from tests.training.test_pinned_round173 import oracle_inputs
 
 
 def _turn(state: State) -> Turn:
@@ -52,23 +52,11 @@ def test_an_sb3_model_with_a_named_activation_is_stored_by_its_name_and_loads(tm
     # has the same activation class.
     pytest.importorskip("stable_baselines3")
     import torch
-    from stable_baselines3 import DQN
 
-    from hg_marl.agents.model_file import save_sb3, world_fields
     from hg_marl.agents.model_format import load_model_file
     from hg_marl.agents.model_sb3 import build_sb3
-    from hg_marl.agents.views import RobotView
 
-    model = DQN(
-        "MlpPolicy",
-        RobotView("paper2015"),
-        buffer_size=16,
-        learning_starts=0,
-        seed=0,
-        device="cpu",
-        policy_kwargs={"net_arch": [8], "activation_fn": torch.nn.ReLU},
-    )
-    path = save_sb3(model, tmp_path / "model.json", world_fields(PAPER, Agent.ROBOT), observation="facts")
+    path = saved_dqn(tmp_path / "model.json", net_arch=[8], activation_fn=torch.nn.ReLU)
     assert json.loads(path.read_text())["policy_kwargs"]["activation_fn"] == "relu"
     again = build_sb3(load_model_file(path))
     assert again.policy_kwargs["activation_fn"] is torch.nn.ReLU
@@ -124,30 +112,17 @@ def test_a_recurrent_model_file_names_the_memory_it_was_trained_with(tmp_path: P
     assert json.loads(result.path.read_text())["trained_by"] == "ppo_recurrent (mlp)"
 
 
-class _Stop(Exception):
-    pass
-
-
 def test_an_oracle_job_keys_its_solution_by_the_scenario_files_content(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     # A scenario given as a TOML path is part of what the worker's oracle solution is kept by:
     # the bundled paper2015 file, then the same with a comment line added, give two sets of
     # inputs, each holding the SHA-256 of the bytes the file held (worked here with hashlib).
-    seen: list[str] = []
-
-    def record(scenario: str, human: Any, inputs: str) -> Any:
-        seen.append(inputs)
-        raise _Stop
-
-    monkeypatch.setattr(backends, "_oracle_policy", record)
     bundled = resources.files("hg_marl.core.scenarios").joinpath("paper2015.toml").read_bytes()
     path = tmp_path / "table.toml"
     job = Job(robot="oracle", seed=0, duration=20.0, scenario=str(path))
-    for content in (bundled, bundled + b"\n# the same table, edited\n"):
-        path.write_bytes(content)
-        with pytest.raises(_Stop):
-            backends.execute(job)
-        assert hashlib.sha256(content).hexdigest() in seen[-1]
+    contents = (bundled, bundled + b"\n# the same table, edited\n")
+    seen = oracle_inputs(monkeypatch, job, path, contents)
+    assert all(hashlib.sha256(c).hexdigest() in inputs for c, inputs in zip(contents, seen, strict=True))
     assert len(seen) == 2 and seen[0] != seen[1]
     assert World(str(path)).n_actions(Agent.ROBOT) == PAPER.n_actions(Agent.ROBOT)
