@@ -23690,6 +23690,14 @@ ROUND185_TESTS = "tests/training/test_pinned_round185.py"
 """The values round 185's missed bugs changed, pinned after the round: every round-185 bug runs them too."""
 FRESH185 = pinned_after(FRESH185, ROUND185_TESTS)
 
+FRESH186: tuple[Bug, ...] = ()
+
+FRESH187: tuple[Bug, ...] = ()
+
+FRESH188: tuple[Bug, ...] = ()
+
+FRESH189: tuple[Bug, ...] = ()
+
 ALL = (
     BUGS
     + FRESH
@@ -23877,6 +23885,10 @@ ALL = (
     + FRESH183
     + FRESH184
     + FRESH185
+    + FRESH186
+    + FRESH187
+    + FRESH188
+    + FRESH189
 )
 
 
