@@ -66,7 +66,7 @@ class LiveRobots:
             turn = Turn(
                 self.world, state, Agent.ROBOT, obs, clock=float(self._clock[row]), tasks_solved=int(self._tasks[row])
             )
-            out[j] = int(self.actors[int(rows[j])].act(turn))
+            out[j] = int(self.actors[row].act(turn))
         return out
 
 

@@ -16732,7 +16732,7 @@ FRESH130: tuple[Bug, ...] = (
     Bug(
         "fresh130 array partners: live robots answer a subset of tables with the actors of its first tables",
         "agents/array_partners.py",
-        "self.actors[int(rows[j])]",
+        "self.actors[row]",
         "self.actors[j]",
         gate("array_partners"),
     ),

@@ -17,7 +17,7 @@ from hg_marl.core import Agent, State
 from hg_marl.policy import Turn
 from tests.agents.test_belief_planner_follow import _members_drive
 from tests.agents.test_pinned_hybrid_robot_gate import WORLD, _record, _turn
-from tests.training.test_pinned_round37 import _Clocked
+from tests.training.test_pinned_round37 import train_clocked
 
 
 def test_a_hybrid_decision_records_the_planners_own_wall_time_as_its_planning_time() -> None:
@@ -42,21 +42,7 @@ def test_a_hybrid_decision_records_the_planners_own_wall_time_as_its_planning_ti
 def test_a_recurrent_model_file_counts_the_steps_run_not_the_steps_asked(tmp_path: Path) -> None:
     # 8 tables x 3 cycles: an update every 24 steps. Asked for 50, the run stops at the first
     # update at or past 50: 24, 48, 72, so 72 steps were run and the model file says 72 (not 50).
-    from hg_marl.training.baselines.ppo_recurrent import RecurrentConfig, train_recurrent
-
-    config = RecurrentConfig(
-        memory="mlp",
-        history=0,
-        hidden=8,
-        num_envs=8,
-        n_steps=3,
-        steps=50,
-        epochs=1,
-        minibatches=1,
-        eval_seconds=3.0,
-        out=tmp_path,
-    )
-    result = train_recurrent(config, env=_Clocked(8))
+    result = train_clocked(tmp_path, steps=50)
     assert result.num_timesteps == 72
     assert load_model_file(result.path).header["num_timesteps"] == 72
 

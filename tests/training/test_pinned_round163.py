@@ -18,7 +18,7 @@ from hg_marl.core import Agent, Kind, World
 from hg_marl.policy import Turn
 from tests.agents.test_pinned_promises_b import PAPER, ROBOT_WAIT, K, _off_model_robot
 from tests.source_copy import copy_sources, edit_code
-from tests.training.test_pinned_round37 import _Clocked
+from tests.training.test_pinned_round37 import train_clocked
 
 OPTIONS = {"failed_actions": True, "symmetry": None, "tolerance": 1e-9, "max_iterations": 200_000}
 
@@ -100,21 +100,6 @@ def test_a_declared_method_gives_its_next_step_only_where_the_robot_stands() -> 
 
 def test_a_recurrent_model_file_names_every_training_partner(tmp_path: Path) -> None:
     # Trained against two partners, the model file's header lists both, in the order given.
-    from hg_marl.training.baselines.ppo_recurrent import RecurrentConfig, train_recurrent
-
-    config = RecurrentConfig(
-        humans=("cooperative", "lazy"),
-        memory="mlp",
-        history=0,
-        hidden=8,
-        num_envs=8,
-        n_steps=3,
-        steps=24,
-        epochs=1,
-        minibatches=1,
-        eval_seconds=3.0,
-        out=tmp_path,
-    )
-    result = train_recurrent(config, env=_Clocked(8))
+    result = train_clocked(tmp_path, humans=("cooperative", "lazy"))
     header = json.loads(result.path.read_text())
     assert header["partners"] == ["cooperative", "lazy"]

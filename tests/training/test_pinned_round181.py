@@ -18,7 +18,7 @@ from hg_marl.core import Agent, State, World
 from hg_marl.policy import Turn
 from hg_marl.training.store import Job
 from tests.agents.test_pinned_promises_b import PAPER, ROBOT_WAIT, _off_model_robot
-from tests.training.test_pinned_round37 import _Clocked
+from tests.training.test_pinned_round37 import train_clocked
 from tests.training.test_pinned_round163 import saved_dqn
 from tests.training.test_pinned_round173 import oracle_inputs
 
@@ -94,21 +94,7 @@ def test_a_plan_read_from_the_cache_is_kept_as_the_most_recently_used() -> None:
 
 def test_a_recurrent_model_file_names_the_memory_it_was_trained_with(tmp_path: Path) -> None:
     # The header says who trained it and with which memory: "ppo_recurrent (mlp)".
-    from hg_marl.training.baselines.ppo_recurrent import RecurrentConfig, train_recurrent
-
-    config = RecurrentConfig(
-        memory="mlp",
-        history=0,
-        hidden=8,
-        num_envs=8,
-        n_steps=3,
-        steps=24,
-        epochs=1,
-        minibatches=1,
-        eval_seconds=3.0,
-        out=tmp_path,
-    )
-    result = train_recurrent(config, env=_Clocked(8))
+    result = train_clocked(tmp_path)
     assert json.loads(result.path.read_text())["trained_by"] == "ppo_recurrent (mlp)"
 
 

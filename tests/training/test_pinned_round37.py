@@ -95,27 +95,31 @@ class _Clocked:
         return obs, np.zeros(self.num_envs), term, np.zeros(self.num_envs, dtype=bool), info
 
 
+def train_clocked(out: Path, steps: int = 24, **overrides: Any) -> Any:
+    """A tiny mlp recurrent run on the clocked toy (8 tables x 3 cycles: an update every 24 steps)."""
+    from hg_marl.training.baselines.ppo_recurrent import RecurrentConfig, train_recurrent
+
+    fields: dict[str, Any] = {
+        "memory": "mlp",
+        "history": 0,
+        "hidden": 8,
+        "num_envs": 8,
+        "n_steps": 3,
+        "steps": steps,
+        "epochs": 1,
+        "minibatches": 1,
+        "eval_seconds": 3.0,
+        "out": out,
+    }
+    return train_recurrent(RecurrentConfig(**(fields | overrides)), env=_Clocked(8))
+
+
 def test_recurrent_checkpoints_fall_at_the_first_update_past_each_multiple(tmp_path: Path) -> None:
     """8 tables x 3 cycles: an update every 24 steps (24, 48, 72, 96, 120). With
     ``checkpoint_freq=50`` a checkpoint is due at each multiple of 50 and written at the
     first update at or past it: 50 -> 72, 100 -> 120 (a period counted from 72 would be
     due at 122 and miss the run's end)."""
-    from hg_marl.training.baselines.ppo_recurrent import RecurrentConfig, train_recurrent
-
-    config = RecurrentConfig(
-        memory="mlp",
-        history=0,
-        hidden=8,
-        num_envs=8,
-        n_steps=3,
-        steps=120,
-        epochs=1,
-        minibatches=1,
-        checkpoint_freq=50,
-        eval_seconds=3.0,
-        out=tmp_path,
-    )
-    result = train_recurrent(config, env=_Clocked(8))
+    result = train_clocked(tmp_path, steps=120, checkpoint_freq=50)
     assert result.num_timesteps == 120
     assert [p.name for p in result.checkpoints] == ["ckpt_72_steps.json", "ckpt_120_steps.json"]
 
