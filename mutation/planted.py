@@ -24194,6 +24194,11 @@ offer "standing" leaves it -1, the same next state and key."""
 ROUND189_TESTS = "tests/training/test_pinned_round189.py"
 """The values round 189's missed bugs changed, pinned after the round: every round-189 bug runs them too."""
 FRESH189 = pinned_after(FRESH189, ROUND189_TESTS)
+FRESH190: tuple[Bug, ...] = ()
+FRESH191: tuple[Bug, ...] = ()
+FRESH192: tuple[Bug, ...] = ()
+FRESH193: tuple[Bug, ...] = ()
+
 
 ALL = (
     BUGS
@@ -24386,6 +24391,10 @@ ALL = (
     + FRESH187
     + FRESH188
     + FRESH189
+    + FRESH190
+    + FRESH191
+    + FRESH192
+    + FRESH193
 )
 
 
