@@ -24702,6 +24702,11 @@ ROUND193_TESTS = "tests/training/test_pinned_round193.py"
 """The values round 193's missed bugs changed, pinned after the round: every round-193 bug runs them too."""
 FRESH193 = pinned_after(FRESH193, ROUND193_TESTS)
 
+FRESH194: tuple[Bug, ...] = ()
+FRESH195: tuple[Bug, ...] = ()
+FRESH196: tuple[Bug, ...] = ()
+FRESH197: tuple[Bug, ...] = ()
+
 
 ALL = (
     BUGS
@@ -24898,6 +24903,10 @@ ALL = (
     + FRESH191
     + FRESH192
     + FRESH193
+    + FRESH194
+    + FRESH195
+    + FRESH196
+    + FRESH197
 )
 
 
