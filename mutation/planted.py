@@ -25203,6 +25203,11 @@ ROUND197_TESTS = "tests/training/test_pinned_round197.py"
 """The values round 197's missed bugs changed, pinned after the round: every round-197 bug runs them too."""
 FRESH197 = pinned_after(FRESH197, ROUND197_TESTS)
 
+FRESH198: tuple[Bug, ...] = ()
+FRESH199: tuple[Bug, ...] = ()
+FRESH200: tuple[Bug, ...] = ()
+FRESH201: tuple[Bug, ...] = ()
+
 
 ALL = (
     BUGS
@@ -25403,6 +25408,10 @@ ALL = (
     + FRESH195
     + FRESH196
     + FRESH197
+    + FRESH198
+    + FRESH199
+    + FRESH200
+    + FRESH201
 )
 
 
