@@ -49,6 +49,12 @@ class Terms(NamedTuple):
         return Terms(*(a + b for a, b in zip(self, other, strict=True)))
 
 
+MAX_WEIGHT = 1e6
+"""The largest weight of a cost term, per second: only the weights' ratios matter to a plan, and
+past this a plan's cost (weights times up to millions of simulated seconds) could overflow to
+infinity, the bound's mark for a dead end, so every plan would fail as unreachable."""
+
+
 @dataclass(frozen=True)
 class CostWeights:
     """Weights of the cost terms (cost per second of each quantity).
@@ -76,6 +82,8 @@ class CostWeights:
                 raise ValueError(f"CostWeights.{f.name} must be a finite number, got {value}")
             if value < 0:
                 raise ValueError(f"CostWeights.{f.name} must be >= 0, got {value}")
+            if value > MAX_WEIGHT:
+                raise ValueError(f"CostWeights.{f.name} must be at most {MAX_WEIGHT:g} per second, got {value}")
         if self.time <= 0:
             raise ValueError("CostWeights.time must be > 0 (plans must not be free to lengthen)")
 

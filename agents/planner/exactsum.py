@@ -31,8 +31,10 @@ Tables = Sequence[Sequence[Sequence[Sequence[float]]]]
 class ExactSums:
     """Packed integer tables for the plain and the offer tables of a space.
 
-    ``packed`` is None when some value is negative or not a float that scales exactly
-    (never for the bound's tables); :meth:`.Space.sums` then keeps to ``fsum``.
+    ``packed`` is None when some value is negative, or when the values lie so far apart
+    (over about 2**1000 between the least and the largest) that the largest, scaled by
+    the least one's ``2**-exp``, would not be a float; :meth:`.Space.sums` then keeps to
+    ``fsum``.
     """
 
     def __init__(self, plain: Tables, offer: Tables, n_objects: int) -> None:
@@ -44,6 +46,8 @@ class ExactSums:
             return
         nonzero = [v for v in finite if v > 0.0]
         self.exp = min((math.frexp(v)[1] - 53 for v in nonzero), default=0)
+        if max((math.frexp(v)[1] for v in nonzero), default=0) - self.exp > 1023:
+            return  # values too far apart: scaled by ``2**-exp`` the largest is no float (fsum keeps them)
         top = max((int(ldexp(v, -self.exp)) for v in nonzero), default=0)
         self.width = (top * max(n_objects, 1)).bit_length() + 1
         self.fields = self.k == 5 and self.width <= 64

@@ -283,6 +283,27 @@ def test_negative_values_keep_to_fsum() -> None:
     assert exact.packed is None
 
 
+def test_values_too_far_apart_to_scale_keep_to_fsum() -> None:
+    # the least subnormal (2**-1074) and 1e10 (about 2**33): scaling 1e10 by 2**1126 to an
+    # integer is past the largest float (about 2**1024), so the tables keep to fsum, and a
+    # planner whose weights give such tables (CostWeights accepts a time weight of 5e-324)
+    # plans like any other instead of raising OverflowError
+    tabs = [[[[5e-324, 1e10]]]]
+    assert ExactSums(tabs, tabs, 1).packed is None
+    assert ExactSums([[[[2.0**-60, 1e10]]]], [[[[2.0**-60, 1e10]]]], 1).packed is not None  # 2**94 apart: packs
+    # the time weight is then far below an ulp of the effort sums, so the plan is the one a
+    # time weight of 2**-900 gives, whose tables (2**-952 to about 2**7) still pack
+    plans = []
+    for time in (5e-324, 2.0**-900):
+        world = World("paper2015")
+        planner = Planner(world, PlannerConfig(weights=CostWeights(time=time, human_effort=1.0, human_idle=0.0)))
+        assert (planner.space._exact.packed is None) == (time == 5e-324)
+        result = planner.plan(world.initial_state(np.random.default_rng(0)))
+        assert result.success
+        plans.append((result.robot_action, result.cost))
+    assert plans[0] == plans[1]
+
+
 @pytest.mark.parametrize("scenario", ["paper2015", "generated:objects=5,human_only=0.8,seed=1"])
 def test_a_plan_from_the_search_path_is_the_plan_a_replay_builds(scenario: str) -> None:
     # the search hands its path's states to build_plan instead of a replay; the plan must be

@@ -214,3 +214,12 @@ def test_a_cost_weight_that_is_not_a_finite_number_is_refused(weight: str, value
     # would cost NaN (no plan better than another); infinity makes every plan cost the same.
     with pytest.raises(ValueError, match=rf"^CostWeights\.{weight} must be a finite number, got {value}$"):
         CostWeights(**{weight: value})
+
+
+@pytest.mark.parametrize("weight", ["time", "human_effort", "effort_balance", "human_idle", "human_holding"])
+def test_a_cost_weight_over_a_million_per_second_is_refused(weight: str) -> None:
+    # 1e308 per second of time made every plan's cost overflow to infinity, the bound's mark
+    # of a dead end: the planner answered "no plan" for every table; 1e6 itself is accepted
+    assert getattr(CostWeights(**{weight: 1e6}), weight) == 1e6
+    with pytest.raises(ValueError, match=rf"^CostWeights\.{weight} must be at most 1e\+06 per second, got 1e\+308$"):
+        CostWeights(**{weight: 1e308})
