@@ -23,7 +23,8 @@ The model:
   back with the habits it had.
 - **Predictive** at a seen key: ``p(a) = (n_a + weight * base(a)) / (N + weight)``; at an
   unseen key: the base's answer. With ``weight`` 0.5 one answer seen gives it 2/3 of the
-  mass, two the same answers 4/5.
+  mass, two the same answers 1.8/2.3, about 0.78 (the first counts 0.8 once forgotten);
+  the base's answers share the rest.
 - **Surprises**: an answer the model gave less than half its mass before seeing it. The
   exact solution changes only where the model does, so :attr:`version` counts surprises
   and :class:`ObservedSolver` solves again only after one (see there).
