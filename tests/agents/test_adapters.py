@@ -13,6 +13,7 @@ from hg_marl.agents.adapters import scripted_v0
 from hg_marl.core import Agent, World
 from hg_marl.policy import Turn
 from hg_marl.wrappers import homogenize_v0
+from tests.env.seeded_spaces import seeded
 
 
 class LastFeasible:
@@ -46,7 +47,7 @@ def test_scripted_seat_mask_is_one_hot_on_the_actors_choice() -> None:
 def test_scripted_stack_passes_api_test() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UserWarning)
-        api_test(homogenize_v0(scripted_v0(hg_marl.env(), human="cooperative")), num_cycles=40)
+        api_test(seeded(homogenize_v0(scripted_v0(hg_marl.env(), human="cooperative"))), num_cycles=40)
 
 
 def test_scripted_needs_a_seat() -> None:

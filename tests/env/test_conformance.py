@@ -9,6 +9,7 @@ import pytest
 from pettingzoo.test import api_test, max_cycles_test, parallel_api_test, render_test, seed_test
 
 import hg_marl
+from tests.env.seeded_spaces import seeded
 
 SCENARIOS = ["paper2015", "roboergosum", "generated:objects=4,spots=6,locations=3,bins=2,seed=2"]
 pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
@@ -17,13 +18,13 @@ pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
 @pytest.mark.parametrize("scenario", SCENARIOS)
 @pytest.mark.parametrize("continuing", [False, True])
 def test_api(scenario: str, continuing: bool) -> None:
-    api_test(hg_marl.env(scenario=scenario, continuing=continuing), num_cycles=300)
+    api_test(seeded(hg_marl.env(scenario=scenario, continuing=continuing)), num_cycles=300)
 
 
 @pytest.mark.parametrize("scenario", SCENARIOS)
 @pytest.mark.parametrize("continuing", [False, True])
 def test_parallel_api(scenario: str, continuing: bool) -> None:
-    parallel_api_test(hg_marl.parallel_env(scenario=scenario, continuing=continuing), num_cycles=300)
+    parallel_api_test(seeded(hg_marl.parallel_env(scenario=scenario, continuing=continuing)), num_cycles=300)
 
 
 @pytest.mark.parametrize("scenario", SCENARIOS)

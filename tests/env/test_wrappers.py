@@ -13,6 +13,7 @@ from pettingzoo.test import api_test, parallel_api_test
 import hg_marl
 from hg_marl.envs import InvalidActionError
 from hg_marl.wrappers import audit_v0, flatten_v0, homogenize_v0, to_parallel
+from tests.env.seeded_spaces import seeded
 
 N_FACTS = 24  # paper2015: the paper's boolean facts
 N_ROBOT, N_HUMAN = 18, 31  # paper2015's action counts
@@ -31,14 +32,14 @@ STACKS: dict[str, Callable[[], AECEnv]] = {
 def test_stack_passes_pettingzoo_api_test(name: str) -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UserWarning)  # naming/style recommendations only
-        api_test(STACKS[name](), num_cycles=60)
+        api_test(seeded(STACKS[name]()), num_cycles=60)
 
 
 @pytest.mark.parametrize("name", sorted(STACKS))
 def test_stack_passes_pettingzoo_parallel_api_test(name: str) -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UserWarning)
-        parallel_api_test(to_parallel(STACKS[name]()), num_cycles=60)
+        parallel_api_test(seeded(to_parallel(STACKS[name]())), num_cycles=60)
 
 
 def test_homogenised_spaces_are_shared_and_padded() -> None:
