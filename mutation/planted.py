@@ -25705,6 +25705,11 @@ ROUND201_TESTS = "tests/training/test_pinned_round201.py"
 """The values round 201's missed bugs changed, pinned after the round: every round-201 bug runs them too."""
 FRESH201 = pinned_after(FRESH201, ROUND201_TESTS)
 
+FRESH202: tuple[Bug, ...] = ()
+FRESH203: tuple[Bug, ...] = ()
+FRESH204: tuple[Bug, ...] = ()
+FRESH205: tuple[Bug, ...] = ()
+
 
 ALL = (
     BUGS
@@ -25909,6 +25914,10 @@ ALL = (
     + FRESH199
     + FRESH200
     + FRESH201
+    + FRESH202
+    + FRESH203
+    + FRESH204
+    + FRESH205
 )
 
 
