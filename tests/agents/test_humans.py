@@ -16,6 +16,7 @@ from hg_marl.agents.humans import (
     read_trace,
     save_learned_policy,
 )
+from hg_marl.agents.humans.learned import LearnedHuman
 from hg_marl.agents.humans.switching import SwitchingHuman
 from hg_marl.agents.models.python_model import PythonModel
 from hg_marl.agents.oracle import layout_distribution
@@ -325,3 +326,30 @@ def test_same_seed_same_trajectory(name: str, tmp_path: Path) -> None:
         return make_human(name)
 
     assert play(build(), 3, steps=40) == play(build(), 3, steps=40)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        ({"weights": "big"}, r"weights and bias must be finite and lie in \[-1e\+06, 1e\+06\]"),
+        ({"weights": "nan"}, r"weights and bias must be finite"),
+        ({"weights": "zero", "temperature": 1e4}, r"temperature: expected a number <= 1000, got 10000\.0"),
+        ({"weights": "zero", "temperature": 1e-4}, r"temperature: expected a number >= 0\.001, got 0\.0001"),
+        ({"table": {b"\x02" * 24: 0}}, r"table facts must be 0 or 1"),
+        ({"table": {b"\x01" * 5: 0}}, r"table keys must be 24 fact bytes each"),
+    ],
+)
+def test_a_policy_the_reader_would_refuse_is_not_written(
+    tmp_path: Path, kwargs: dict[str, object], message: str
+) -> None:
+    # the reader (LearnedHuman) accepts weights within 1e6, temperatures in [1e-3, 1e3] and
+    # facts of 0 and 1 (paper2015 has 24 facts, 31 human actions); a policy outside those used
+    # to be written, then refused on load: now it is refused before its folder is made
+    shape = (PAPER.n_actions(Agent.HUMAN), PAPER.n_facts)
+    arrays = {"big": np.full(shape, 2e6), "nan": np.full(shape, np.nan), "zero": np.zeros(shape)}
+    given = {k: arrays[v] if k == "weights" else v for k, v in kwargs.items()}  # type: ignore[index]
+    with pytest.raises((ValueError, HumanError), match=message):
+        save_learned_policy(tmp_path / "p", PAPER, **given)  # type: ignore[arg-type]
+    assert not (tmp_path / "p").exists()
+    save_learned_policy(tmp_path / "ok", PAPER, weights=np.full(shape, 1e6), temperature=1e3)
+    assert LearnedHuman(tmp_path / "ok").name == "learned"  # the bounds themselves are read back
