@@ -12,8 +12,9 @@ Per episode of a trace (one game), from the recorded facts, masks and actions on
 The comparison replays each scripted human (with default parameters) against the same
 robot, on the same seed and for the same simulated time as the recorded game, records
 it in the same trace format and measures it the same way. Resemblance is the L1
-distance between the vectors of action-kind shares plus handover acceptance (0 when
-either side never saw an offer); the scripted human at the smallest distance is named.
+distance between the vectors of action-kind shares plus handover acceptance (a side
+that never saw an offer counts as accepting none); the scripted human at the smallest
+distance is named.
 """
 
 from __future__ import annotations
