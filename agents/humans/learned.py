@@ -74,15 +74,7 @@ def save_learned_policy(
         b = np.zeros(n_a) if bias is None else np.asarray(bias, dtype=np.float64)
         if w.shape != (n_a, n_f) or b.shape != (n_a,):
             raise ValueError(f"weights must be ({n_a}, {n_f}) and bias ({n_a},), got {w.shape} and {b.shape}")
-        # the reader's bounds (_numpy_policy), so that what is written can be read back
-        if (
-            not (np.isfinite(w).all() and np.isfinite(b).all())
-            or max(np.abs(w).max(initial=0.0), np.abs(b).max(initial=0.0)) > MAX_WEIGHT
-        ):
-            raise ValueError(f"weights and bias must be finite and lie in [-{MAX_WEIGHT:g}, {MAX_WEIGHT:g}]")
-        temperature = check_finite(
-            temperature, "temperature", minimum=MIN_TEMPERATURE, maximum=MAX_TEMPERATURE, error=HumanError
-        )
+        temperature = check_finite(temperature, "temperature", positive=True, error=HumanError)
         header: dict[str, Any] = {**world_fields(world, seat), "kind": "linear_softmax", "temperature": temperature}
         arrays: dict[str, np.ndarray] = {"W": w, "b": b}
     else:
@@ -91,14 +83,13 @@ def save_learned_policy(
         if any(len(k) != n_f for k in keys):
             raise ValueError(f"table keys must be {n_f} fact bytes each")
         facts = np.array([np.frombuffer(k, dtype=np.int8) for k in keys], dtype=np.int8).reshape(len(keys), n_f)
-        if not np.isin(facts, (0, 1)).all():
-            raise ValueError("table facts must be 0 or 1")
         actions = np.array([int(table[k]) for k in keys], dtype=np.int64)
         if len(actions) and not (actions.min() >= 0 and actions.max() < n_a):
             raise ValueError(f"table actions must be indices in [0, {n_a})")
         header = {**world_fields(world, seat), "kind": "table"}
         arrays = {"facts": facts, "actions": actions}
-    out.mkdir(parents=True, exist_ok=True)  # only once the policy is known to be readable
+    _numpy_policy(ModelFile(out / HEADER, header, arrays))  # the reader's own checks: what is written loads
+    out.mkdir(parents=True, exist_ok=True)
     save_model_file(out / HEADER, header, arrays)
     return out
 

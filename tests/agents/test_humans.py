@@ -23,6 +23,7 @@ from hg_marl.agents.oracle import layout_distribution
 from hg_marl.agents.robots import make_robot
 from hg_marl.agents.views import RobotView
 from hg_marl.core import Action, Agent, Kind, State, World
+from hg_marl.core.errors import ModelFileError
 from hg_marl.policy import Turn
 
 PAPER = World("paper2015")
@@ -331,11 +332,11 @@ def test_same_seed_same_trajectory(name: str, tmp_path: Path) -> None:
 @pytest.mark.parametrize(
     ("kwargs", "message"),
     [
-        ({"weights": "big"}, r"weights and bias must be finite and lie in \[-1e\+06, 1e\+06\]"),
-        ({"weights": "nan"}, r"weights and bias must be finite"),
-        ({"weights": "zero", "temperature": 1e4}, r"temperature: expected a number <= 1000, got 10000\.0"),
-        ({"weights": "zero", "temperature": 1e-4}, r"temperature: expected a number >= 0\.001, got 0\.0001"),
-        ({"table": {b"\x02" * 24: 0}}, r"table facts must be 0 or 1"),
+        ({"weights": "big"}, r"policy\.json: W and b must lie in \[-1e\+06, 1e\+06\]"),
+        ({"weights": "nan"}, r"policy\.json: W and b must be finite"),
+        ({"weights": "zero", "temperature": 1e4}, r"'temperature': expected a number <= 1000, got 10000\.0"),
+        ({"weights": "zero", "temperature": 1e-4}, r"'temperature': expected a number >= 0\.001, got 0\.0001"),
+        ({"table": {b"\x02" * 24: 0}}, r"policy\.json: table facts must be 0 or 1"),
         ({"table": {b"\x01" * 5: 0}}, r"table keys must be 24 fact bytes each"),
     ],
 )
@@ -348,7 +349,7 @@ def test_a_policy_the_reader_would_refuse_is_not_written(
     shape = (PAPER.n_actions(Agent.HUMAN), PAPER.n_facts)
     arrays = {"big": np.full(shape, 2e6), "nan": np.full(shape, np.nan), "zero": np.zeros(shape)}
     given = {k: arrays[v] if k == "weights" else v for k, v in kwargs.items()}  # type: ignore[index]
-    with pytest.raises((ValueError, HumanError), match=message):
+    with pytest.raises((ValueError, ModelFileError), match=message):
         save_learned_policy(tmp_path / "p", PAPER, **given)  # type: ignore[arg-type]
     assert not (tmp_path / "p").exists()
     save_learned_policy(tmp_path / "ok", PAPER, weights=np.full(shape, 1e6), temperature=1e3)
