@@ -26206,6 +26206,11 @@ ROUND205_TESTS = "tests/training/test_pinned_round205.py"
 """The values round 205's missed bugs changed, pinned after the round: every round-205 bug runs them too."""
 FRESH205 = pinned_after(FRESH205, ROUND205_TESTS)
 
+FRESH206: tuple[Bug, ...] = ()
+FRESH207: tuple[Bug, ...] = ()
+FRESH208: tuple[Bug, ...] = ()
+FRESH209: tuple[Bug, ...] = ()
+
 
 ALL = (
     BUGS
@@ -26414,6 +26419,10 @@ ALL = (
     + FRESH203
     + FRESH204
     + FRESH205
+    + FRESH206
+    + FRESH207
+    + FRESH208
+    + FRESH209
 )
 
 
