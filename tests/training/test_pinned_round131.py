@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 import hg_marl
-from hg_marl.agents.humans.learned import LearnedHuman, save_learned_policy
+from hg_marl.agents.humans.learned import LearnedHuman
+from hg_marl.agents.model_file import save_model_file, world_fields
 from hg_marl.agents.partner import PartnerMonitor
 from hg_marl.agents.robots import make_robot
 from hg_marl.agents.robots.base import LearningRobot
@@ -41,12 +42,15 @@ def test_the_habit_robot_acts_on_the_q_values_of_the_facts_it_sees() -> None:
 
 def test_a_table_policy_whose_facts_are_not_0_or_1_is_refused(tmp_path: Path) -> None:
     # The module docstring: "0/1 facts" are checked on load; a row holding -1 is no fact vector.
+    # save_learned_policy refuses to write one, so the file is written as another tool would.
     world = World("paper2015")
     row = np.zeros(world.n_facts, dtype=np.int8)
     row[0] = -1
-    path = save_learned_policy(tmp_path / "p", world, table={row.tobytes(): 0})
+    (tmp_path / "p").mkdir()
+    header = {**world_fields(world, Agent.HUMAN), "kind": "table"}
+    save_model_file(tmp_path / "p" / "policy.json", header, {"facts": row[None, :], "actions": np.zeros(1, np.int64)})
     with pytest.raises(ModelFileError, match="table facts must be 0 or 1"):
-        LearnedHuman(path)
+        LearnedHuman(tmp_path / "p")
 
 
 def test_an_unobserved_human_action_is_no_refusal_of_the_expected_one() -> None:
