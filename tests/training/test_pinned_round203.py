@@ -10,10 +10,9 @@ import pytest
 from hg_marl.agents.meta.base import Expert, HabitView, PlanProposal
 from hg_marl.agents.meta.entropy import EntropyCriterion
 from hg_marl.agents.partner_specs import make_robot_actor, resolve_partner
-from hg_marl.agents.robots import make_robot
-from hg_marl.core import Agent, World
+from hg_marl.core import Agent
 from hg_marl.core.errors import RobotError
-from hg_marl.policy import Turn
+from tests.training.test_pinned_round68 import habit_robot_turns
 
 # --- agents/meta/entropy.py ---
 
@@ -44,14 +43,7 @@ def test_the_habit_robots_decisions_name_no_planner_proposal() -> None:
     # The habit robot is "the model-free Q-learner alone": it has no planner, and
     # Decision.planner_action is "the planner's proposal (-1: the planner did not propose)".
     # So every decision logs planner_action -1 (checked over ten turns), beside its own action.
-    world = World("paper2015")
-    state = world.initial_state(np.random.default_rng(0))
-    robot = make_robot("habit")
-    robot.reset(world, Agent.ROBOT, np.random.default_rng(1))
-    for _ in range(10):
-        observation = {"observation": world.facts(state), "action_mask": world.mask(state, Agent.ROBOT)}
-        action = robot.act(Turn(world, state, Agent.ROBOT, observation))
-        decision = robot.last_decision
+    for action, decision in habit_robot_turns():
         assert decision is not None and decision.expert == "habit"
         assert decision.planner_action == -1
         assert decision.habit_action == action

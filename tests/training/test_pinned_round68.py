@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 import hg_marl
+from hg_marl.agents.meta.controller import Decision
 from hg_marl.agents.robots import make_robot
 from hg_marl.agents.robots.canonical import CanonicalView
 from hg_marl.core import Agent, State, World
@@ -34,19 +35,25 @@ def test_a_state_with_its_first_tape_in_place_and_the_others_swapped_is_relabell
     assert int(to_original[17]) == 17 and int(to_canonical[17]) == 17
 
 
+def habit_robot_turns(turns: int = 10) -> list[tuple[int, Decision | None]]:
+    """A habit robot's actions and logged decisions over ``turns`` turns at paper2015's first table."""
+    world = World("paper2015")
+    state = world.initial_state(np.random.default_rng(0))
+    robot = make_robot("habit")
+    robot.reset(world, Agent.ROBOT, np.random.default_rng(1))
+    out = []
+    for _ in range(turns):
+        observation = {"observation": world.facts(state), "action_mask": world.mask(state, Agent.ROBOT)}
+        action = robot.act(Turn(world, state, Agent.ROBOT, observation))
+        out.append((action, robot.last_decision))
+    return out
+
+
 def test_the_habit_robots_decisions_log_the_habits_proposal_as_the_action_taken() -> None:
     # The habit robot is "the model-free Q-learner alone": every action it takes is its habit's
     # proposal, and Decision.habit_action is "the habit's proposal (-1: no habit)". So each
     # decision's habit_action is the executed action, never -1 (checked over ten turns).
-    world = World("paper2015")
-    rng = np.random.default_rng(0)
-    state = world.initial_state(rng)
-    robot = make_robot("habit")
-    robot.reset(world, Agent.ROBOT, np.random.default_rng(1))
-    for _ in range(10):
-        observation = {"observation": world.facts(state), "action_mask": world.mask(state, Agent.ROBOT)}
-        action = robot.act(Turn(world, state, Agent.ROBOT, observation))
-        decision = robot.last_decision
+    for action, decision in habit_robot_turns():
         assert decision is not None and decision.expert == "habit"
         assert decision.habit_action == decision.action == action != -1
 
