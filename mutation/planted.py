@@ -26703,6 +26703,18 @@ ROUND209_TESTS = "tests/training/test_pinned_round209.py"
 FRESH209 = pinned_after(FRESH209, ROUND209_TESTS)
 
 
+FRESH210: tuple[Bug, ...] = ()
+
+
+FRESH211: tuple[Bug, ...] = ()
+
+
+FRESH212: tuple[Bug, ...] = ()
+
+
+FRESH213: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -26914,6 +26926,10 @@ ALL = (
     + FRESH207
     + FRESH208
     + FRESH209
+    + FRESH210
+    + FRESH211
+    + FRESH212
+    + FRESH213
 )
 
 
