@@ -27209,6 +27209,18 @@ ROUND213_TESTS = "tests/training/test_pinned_round213.py"
 FRESH213 = pinned_after(FRESH213, ROUND213_TESTS)
 
 
+FRESH214: tuple[Bug, ...] = ()
+
+
+FRESH215: tuple[Bug, ...] = ()
+
+
+FRESH216: tuple[Bug, ...] = ()
+
+
+FRESH217: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -27424,6 +27436,10 @@ ALL = (
     + FRESH211
     + FRESH212
     + FRESH213
+    + FRESH214
+    + FRESH215
+    + FRESH216
+    + FRESH217
 )
 
 
