@@ -27713,6 +27713,18 @@ ROUND217_TESTS = "tests/training/test_pinned_round217.py"
 FRESH217 = pinned_after(FRESH217, ROUND217_TESTS)
 
 
+FRESH218: tuple[Bug, ...] = ()
+
+
+FRESH219: tuple[Bug, ...] = ()
+
+
+FRESH220: tuple[Bug, ...] = ()
+
+
+FRESH221: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -27932,6 +27944,10 @@ ALL = (
     + FRESH215
     + FRESH216
     + FRESH217
+    + FRESH218
+    + FRESH219
+    + FRESH220
+    + FRESH221
 )
 
 
