@@ -28210,6 +28210,18 @@ ROUND221_TESTS = "tests/training/test_pinned_round221.py"
 FRESH221 = pinned_after(FRESH221, ROUND221_TESTS)
 
 
+FRESH222: tuple[Bug, ...] = ()
+
+
+FRESH223: tuple[Bug, ...] = ()
+
+
+FRESH224: tuple[Bug, ...] = ()
+
+
+FRESH225: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -28433,6 +28445,10 @@ ALL = (
     + FRESH219
     + FRESH220
     + FRESH221
+    + FRESH222
+    + FRESH223
+    + FRESH224
+    + FRESH225
 )
 
 
