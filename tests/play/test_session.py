@@ -201,6 +201,7 @@ def test_play_tui_takes_one_key_per_move_in_a_real_terminal(tmp_path: Path) -> N
     """In a pseudo-terminal, keys without Enter play moves (the terminal is in cbreak mode)."""
     import os
     import pty
+    import re
     import select
     import subprocess
     import sys
@@ -213,21 +214,30 @@ def test_play_tui_takes_one_key_per_move_in_a_real_terminal(tmp_path: Path) -> N
     os.close(child_fd)
     seen = b""
 
-    def wait_for(text: bytes, timeout: float = 600.0) -> None:
+    def wait_for(*texts: bytes, since: int = 0, timeout: float = 600.0) -> bytes:
+        """Read the terminal until one of ``texts`` shows after byte ``since``; return the first shown.
+
+        The timeout only stops a child that hangs: a wrong answer is told apart at once.
+        """
         nonlocal seen
         end = time.monotonic() + timeout
-        while text not in seen:
+        while not any(t in seen[since:] for t in texts):
             assert time.monotonic() < end, seen[-2000:]
             if select.select([main_fd], [], [], 0.1)[0]:
                 try:
                     seen += os.read(main_fd, 65536)
                 except OSError:  # the child closed the terminal
-                    assert text in seen, seen[-2000:]
+                    assert any(t in seen[since:] for t in texts), seen[-2000:]
+        return min((seen.index(t, since), t) for t in texts if t in seen[since:])[1]
 
     try:
         wait_for(b"finish and save")
         os.write(main_fd, b"1")  # pick(tape3): no Enter
-        wait_for(b"you:   pick(tape3)")
+        # The screen answers a key with the move played or with "not a key here": either ends the wait.
+        assert wait_for(b"you:   ", b"is not a key here") == b"you:   ", seen[-2000:]
+        start = seen.index(b"you:   ") + len(b"you:   ")
+        wait_for(b"\r", b"\n", b"\x1b", since=start)  # the move's name is whole
+        assert re.split(rb"[\r\n\x1b ]", seen[start:], maxsplit=1)[0] == b"pick(tape3)", seen[-2000:]
         os.write(main_fd, b"q")
         wait_for(b"trace saved")
         assert proc.wait(timeout=600) == 0
