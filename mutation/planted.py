@@ -28724,6 +28724,18 @@ ROUND225_TESTS = "tests/training/test_pinned_round225.py"
 FRESH225 = pinned_after(FRESH225, ROUND225_TESTS)
 
 
+FRESH226: tuple[Bug, ...] = ()
+
+
+FRESH227: tuple[Bug, ...] = ()
+
+
+FRESH228: tuple[Bug, ...] = ()
+
+
+FRESH229: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -28951,6 +28963,10 @@ ALL = (
     + FRESH223
     + FRESH224
     + FRESH225
+    + FRESH226
+    + FRESH227
+    + FRESH228
+    + FRESH229
 )
 
 
