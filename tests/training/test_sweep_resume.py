@@ -98,10 +98,13 @@ def test_a_job_claimed_elsewhere_does_not_hold_back_the_jobs_after_it(
         sweep = threading.Thread(target=lambda: results.append(run_sweep(JOBS, tmp_path)), daemon=True)
         sweep.start()
         deadline = time.monotonic() + 600
-        while not all(store.get(job, key) for job, key in zip(JOBS[1:], keys[1:], strict=True)):
+        # An entry's result.json is written last (atomically): once each is there, each must read
+        # back, so an entry stored unreadable fails here at once rather than at the deadline.
+        while not all((store.entry(key) / "result.json").is_file() for key in keys[1:]):
             assert time.monotonic() < deadline, "the jobs after the claimed one were never run"
             assert sweep.is_alive(), "the sweep stopped while a job was still claimed elsewhere"
             time.sleep(0.05)
+        assert all(store.get(job, key) for job, key in zip(JOBS[1:], keys[1:], strict=True))
         assert store.get(JOBS[0], keys[0]) is None  # still ours: the sweep waits for it
     sweep.join(timeout=600)
     assert not sweep.is_alive() and results == [ref]
