@@ -115,7 +115,9 @@ def answer_table(
     tables = [AnswerTable(world, h, packer, budget) for h in (human, *closure)]
     try:
         model = build_model(world, tables, layout_distribution(world), budget=budget, progress=progress)
-    except OverBudget:
+    except OverBudget as over:
+        if over.resource == "machine":  # the machine is short of memory, not the table too big: say so
+            raise CompileError(str(over)) from over
         model = None
     table = tables[0]
     if model is not None:

@@ -10373,8 +10373,8 @@ FRESH80: tuple[Bug, ...] = (
     Bug(
         "fresh80 model budget: the memory refusal advises raising --max-states, not --max-memory",
         "agents/models/budget.py",
-        'GB of memory", "--max-memory")',
-        'GB of memory", "--max-states")',
+        'GB of memory", "--max-memory", "memory")',
+        'GB of memory", "--max-states", "memory")',
         gate("model_budget"),
     ),
     Bug(
@@ -11504,8 +11504,8 @@ FRESH89: tuple[Bug, ...] = (
     Bug(
         "fresh89 model budget: a states refusal advises raising --max-seconds, not --max-states",
         "agents/models/budget.py",
-        'f"max_states={self.states:,} states ({states:,} states)", "--max-states")',
-        'f"max_states={self.states:,} states ({states:,} states)", "--max-seconds")',
+        'f"max_states={self.states:,} states ({states:,} states)", "--max-states", "states")',
+        'f"max_states={self.states:,} states ({states:,} states)", "--max-seconds", "states")',
         gate("model_budget"),
     ),
     Bug(
@@ -16008,8 +16008,8 @@ FRESH125: tuple[Bug, ...] = (
     Bug(
         "fresh125 model budget: the low-machine-memory refusal advises raising --max-memory, not --max-states",
         "agents/models/budget.py",
-        'MB of memory left", "--max-states")',
-        'MB of memory left", "--max-memory")',
+        'MB of memory left", "--max-states", "machine"',
+        'MB of memory left", "--max-memory", "machine"',
         gate("model_budget"),
     ),
     Bug(

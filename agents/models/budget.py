@@ -53,7 +53,20 @@ block (a timer of 0 would be none)."""
 
 
 class OverBudget(RuntimeError):
-    """A computation stopped at its budget; the message is one line naming budget, phase and progress."""
+    """A computation stopped at its budget; the message is one line naming budget, phase and progress.
+
+    ``resource`` says which budget stopped it (``states``, ``seconds``, ``memory``, or ``machine``
+    where the machine itself had too little memory left; empty where unsaid), so a caller that
+    words one refusal its own way (the compiler's ``max_keys``) does not give that reason for another.
+    """
+
+    def __init__(self, message: str, resource: str = "") -> None:
+        super().__init__(message)
+        self.resource = resource
+
+    def __reduce__(self) -> tuple[type[OverBudget], tuple[str, str]]:
+        """Pickled with its resource (a forked worker's refusal reaches the parent whole)."""
+        return (OverBudget, (str(self), self.resource))
 
 
 @functools.cache
@@ -191,28 +204,31 @@ class Budget:
         self.phase = phase
         self.progress = f"{done:,} of {total:,} {unit}" if total is not None else f"{done:,} {unit}"
         if self.states is not None and states is not None and states > self.states:
-            self._refuse(f"max_states={self.states:,} states ({states:,} states)", "--max-states")
+            self._refuse(f"max_states={self.states:,} states ({states:,} states)", "--max-states", "states")
         if self.seconds is not None:
             spent = self.spent()
             if spent > self.seconds:
-                self._refuse(f"{self.seconds:g} s of wall time (after {spent:.1f} s)", "--max-seconds")
+                self._refuse(f"{self.seconds:g} s of wall time (after {spent:.1f} s)", "--max-seconds", "seconds")
         if memory:
             if self.memory is not None and rss() > self.memory:
-                self._refuse(f"{self.memory / 2**30:g} GB of memory", "--max-memory")
+                self._refuse(f"{self.memory / 2**30:g} GB of memory", "--max-memory", "memory")
             free = self.free_memory()
             if free is not None and free < MIN_FREE_BYTES:
-                self._refuse(f"the machine: less than {MIN_FREE_BYTES // 2**20} MB of memory left", "--max-states")
+                self._refuse(
+                    f"the machine: less than {MIN_FREE_BYTES // 2**20} MB of memory left", "--max-states", "machine"
+                )
 
     def refuse_count(self, phase: str, count: int, unit: str) -> None:
         """Refuse before a phase that would enumerate ``count`` items, more than the states budget."""
         if self.states is not None and count > self.states:
             self.phase, self.progress = phase, f"0 of {count:,} {unit}"
-            self._refuse(f"max_states={self.states:,} ({count:,} {unit} to enumerate)", "--max-states")
+            self._refuse(f"max_states={self.states:,} ({count:,} {unit} to enumerate)", "--max-states", "states")
 
-    def _refuse(self, what: str, option: str) -> None:
+    def _refuse(self, what: str, option: str, resource: str) -> None:
         raise OverBudget(
             f"{self.subject} is over its budget of {what} in phase {self.phase!r} ({self.progress}); "
-            f"raise {option} or {self.hint}"
+            f"raise {option} or {self.hint}",
+            resource,
         )
 
     @contextmanager
@@ -233,7 +249,7 @@ class Budget:
         left = max(self.seconds - self.spent(), 0.0) + 0.05
 
         def ring(signum: int, frame: FrameType | None) -> None:
-            self._refuse(f"{self.seconds:g} s of wall time (after {self.spent():.1f} s)", "--max-seconds")
+            self._refuse(f"{self.seconds:g} s of wall time (after {self.spent():.1f} s)", "--max-seconds", "seconds")
 
         previous = signal.signal(signal.SIGALRM, ring)
         entered = self.clock()

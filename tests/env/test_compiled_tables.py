@@ -56,6 +56,31 @@ def test_a_table_over_the_key_budget_is_refused_in_one_line() -> None:
     assert len(compile_human(world, "random", cache=None, max_keys=n)) == n
 
 
+def test_a_machine_short_of_memory_is_named_not_blamed_on_the_key_budget(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The builder stopped because the machine had too little memory left: the refusal says so.
+
+    Blaming the compiler's ``max_keys`` would have the user shrink a table that fits.
+    """
+    import hg_marl.agents.models as models
+    from hg_marl.agents.compiled import CompileError
+
+    real = models.build_model
+
+    def short_of_memory(*args, budget, **kwargs):  # type: ignore[no-untyped-def]
+        budget.free_memory = lambda: 0  # the machine reports no memory left
+        return real(*args, budget=budget, **kwargs)
+
+    monkeypatch.setattr(models, "build_model", short_of_memory)
+    world = World("paper2015")
+    with pytest.raises(CompileError) as refused:
+        answer_table(world, live("random", world))
+    message = str(refused.value)
+    assert message.startswith(
+        "scenario: 'paper2015' against 'random' is over its budget of the machine: less than 512 MB of memory left"
+    )
+    assert "max_keys" not in message and "\n" not in message
+
+
 @pytest.mark.parametrize("scenario", ["paper2015", "forced_coordination", "generated:objects=2,seed=4,human_only=0.8"])
 def test_the_compiled_robots_states_are_the_python_enumerations(scenario: str) -> None:
     from hg_marl.agents.compiled_robot import robot_states
