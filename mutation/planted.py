@@ -29239,6 +29239,18 @@ ROUND229_TESTS = "tests/training/test_pinned_round229.py"
 FRESH229 = pinned_after(FRESH229, ROUND229_TESTS)
 
 
+FRESH230: tuple[Bug, ...] = ()
+
+
+FRESH231: tuple[Bug, ...] = ()
+
+
+FRESH232: tuple[Bug, ...] = ()
+
+
+FRESH233: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -29470,6 +29482,10 @@ ALL = (
     + FRESH227
     + FRESH228
     + FRESH229
+    + FRESH230
+    + FRESH231
+    + FRESH232
+    + FRESH233
 )
 
 
