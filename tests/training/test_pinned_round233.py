@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import json
-import logging
 import re
 from pathlib import Path
 
@@ -15,7 +14,7 @@ from hg_marl.core import Agent, World
 from hg_marl.envs.batched import BatchedTable
 from hg_marl.training.store import Store, seal
 from tests.env.test_pinned_batched import GOTO_HUMAN, HUMAN_WAIT, ROBOT_WAIT, Always
-from tests.training.test_pinned_store import JOB, _result
+from tests.training.test_pinned_store import JOB, _result, skipped_then_removed
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -45,12 +44,7 @@ def test_a_sealed_entry_without_a_summary_dict_is_not_used(
     record = json.loads(path.read_text())
     record["summary"] = summary
     path.write_text(json.dumps(seal(record)))
-    assert store.get(JOB) is None
-    assert store.entry(JOB.key()).exists()  # without the claim it is only skipped
-    with caplog.at_level(logging.WARNING, logger="hg_marl.training.store"):
-        assert store.get(JOB, repair=True) is None
-    assert [problem in r.getMessage() for r in caplog.records] == [True]
-    assert not store.entry(JOB.key()).exists()
+    skipped_then_removed(store, problem, caplog)
 
 
 def test_same_step_autoreset_keeps_the_final_observation_of_a_table_that_ended_alone() -> None:

@@ -55,6 +55,16 @@ def _reseal_summary(store: Store, edit: dict[str, object], drop: str = "") -> Pa
     return path
 
 
+def skipped_then_removed(store: Store, problem: str, caplog: pytest.LogCaptureFixture) -> None:
+    """``JOB``'s unusable entry: skipped without the claim, removed with one warning naming ``problem`` with it."""
+    assert store.get(JOB) is None
+    assert store.entry(JOB.key()).exists()  # without the claim it is only skipped
+    with caplog.at_level(logging.WARNING, logger="hg_marl.training.store"):
+        assert store.get(JOB, repair=True) is None
+    assert [problem in r.getMessage() for r in caplog.records] == [True]
+    assert not store.entry(JOB.key()).exists()
+
+
 def test_a_resealed_entry_with_the_same_summary_is_still_used(tmp_path: Path) -> None:
     # The control for the two tests below: sealing again by itself does not make an entry unusable.
     store = Store(tmp_path)
@@ -81,9 +91,4 @@ def test_a_sealed_entry_whose_summary_is_not_the_runners_is_not_used(
     store = Store(tmp_path)
     store.put(JOB, _result())
     _reseal_summary(store, edit, drop)
-    assert store.get(JOB) is None
-    assert store.entry(JOB.key()).exists()  # without the claim it is only skipped
-    with caplog.at_level(logging.WARNING, logger="hg_marl.training.store"):
-        assert store.get(JOB, repair=True) is None
-    assert [problem in r.getMessage() for r in caplog.records] == [True]
-    assert not store.entry(JOB.key()).exists()
+    skipped_then_removed(store, problem, caplog)
