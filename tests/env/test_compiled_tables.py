@@ -66,7 +66,7 @@ def test_a_machine_short_of_memory_is_named_not_blamed_on_the_key_budget(monkeyp
 
     real = models.build_model
 
-    def short_of_memory(*args, budget, **kwargs):  # type: ignore[no-untyped-def]
+    def short_of_memory(*args, budget, **kwargs):
         budget.free_memory = lambda: 0  # the machine reports no memory left
         return real(*args, budget=budget, **kwargs)
 
@@ -107,3 +107,38 @@ def test_the_compiled_robots_table_is_the_cold_planners_answer_on_sampled_states
     states = [b.state(i) for i in range(len(b))]
     actions, found = robot.plan(BatchState.of(states))
     assert found.all() and actions.tolist() == [planner_action(world, s) for s in states]
+
+
+class _Draws:
+    """Stands in for the generator: every draw is ``u``."""
+
+    def __init__(self, u: float) -> None:
+        self.u = u
+
+    def random(self, n: int) -> np.ndarray:
+        return np.full(n, self.u)
+
+
+def test_a_draw_just_under_one_is_the_last_answer_of_its_own_state() -> None:
+    """The largest float under 1 picks each state's last answer, never the next state's first.
+
+    ``q = index + u`` rounds up to ``index + 1`` for an index of 1 or more, equal to the last
+    entry's cumulative sum: only the segment's own end keeps the draw in it. Expected: the live
+    random human's last possible answer (the table keeps its order); a draw of 0 its first.
+    """
+    from hg_marl.envs.batched import BatchedRules
+
+    world = World("paper2015")
+    compiled = compile_human(world, "random", cache=None)
+    human = live("random", world)
+    batch = BatchedRules(world).initial(np.random.default_rng(5), 64)
+    seen = np.full(64, -1)
+    idx, found = compiled.lookup(batch, seen)
+    sizes = compiled.starts[idx + 1] - compiled.starts[idx]
+    assert found.all() and ((idx >= 1) & (sizes < compiled.widest)).any()  # the case the end guards
+    for u, pick in ((np.nextafter(1.0, 0.0), -1), (0.0, 0)):
+        pos, _ = compiled.answer(batch, seen, _Draws(u))
+        for i in range(64):
+            answers = [a for a, p in human.distribution(world, batch.state(i), -1) if p > 0]
+            assert compiled.actions[pos[i]] == answers[pick]
+            assert compiled.starts[idx[i]] <= pos[i] < compiled.starts[idx[i] + 1]
