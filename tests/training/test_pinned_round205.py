@@ -53,20 +53,33 @@ def test_vpis_rate_step_may_be_either_end_of_zero_to_one(rate_step: float) -> No
     assert VPICriterion(rate_step=rate_step).rate_step == rate_step
 
 
-def test_a_jobs_robot_is_built_with_the_jobs_robot_parameters(monkeypatch: pytest.MonkeyPatch) -> None:
-    # execute builds the robot as make_robot(name, **robot_params): a stand-in make_robot
-    # records what it was asked, and a stand-in run hands back the robot it was given.
-    import hg_marl.agents.robots as robots
+def executed_with_a_stand_in(
+    monkeypatch: pytest.MonkeyPatch, module: Any, seat: str, job: Job
+) -> tuple[Any, list[tuple[str, dict[str, Any]]]]:
+    """``backends.execute(job)`` with ``module.make_<seat>`` recording what it was asked and a stand-in run.
+
+    The stand-in builds ``"<seat> <name>"``; the run hands back what was built for ``seat`` and the seed.
+    Returns execute's answer and the (name, params) asked.
+    """
     import hg_marl.training.runner as runner
 
     asked: list[tuple[str, dict[str, Any]]] = []
 
-    def fake_make_robot(name: str, **params: Any) -> str:
+    def stand_in(name: str, **params: Any) -> str:
         asked.append((name, params))
-        return f"robot {name}"
+        return f"{seat} {name}"
 
-    monkeypatch.setattr(robots, "make_robot", fake_make_robot)
-    monkeypatch.setattr(runner, "run", lambda robot, human, config: (robot, config.seed))
+    monkeypatch.setattr(module, f"make_{seat}", stand_in)
+    monkeypatch.setattr(runner, "run", lambda robot, human, config: (robot if seat == "robot" else human, config.seed))
+    return backends.execute(job), asked
+
+
+def test_a_jobs_robot_is_built_with_the_jobs_robot_parameters(monkeypatch: pytest.MonkeyPatch) -> None:
+    # execute builds the robot as make_robot(name, **robot_params): a stand-in make_robot
+    # records what it was asked, and a stand-in run hands back the robot it was given.
+    import hg_marl.agents.robots as robots
+
     job = Job(robot="planner", seed=3, robot_params={"horizon": 7, "greedy": True})
-    assert backends.execute(job) == ("robot planner", 3)
+    built, asked = executed_with_a_stand_in(monkeypatch, robots, "robot", job)
+    assert built == ("robot planner", 3)
     assert asked == [("planner", {"horizon": 7, "greedy": True})]

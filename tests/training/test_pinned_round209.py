@@ -14,14 +14,19 @@ from hg_marl.core.errors import OutputError, output_error
 from hg_marl.policy import Turn
 
 
+def writing_is_an_output_error_naming_it(path: Path, failure: type[OSError]) -> None:
+    """Opening ``path`` for writing fails with ``failure``: ``output_error`` makes it one OutputError line naming it."""
+    with pytest.raises(failure) as raised:
+        open(path, "w")  # noqa: SIM115 (the open is meant to fail)
+    error = output_error(raised.value, path)
+    assert isinstance(error, OutputError)
+    assert str(error).startswith(f"cannot write {path}: ")
+
+
 def test_writing_onto_a_folder_is_an_output_error_naming_it(tmp_path: Path) -> None:
     # Opening a folder for writing fails with EISDIR, one of the errnos a user causes (a
     # folder where an output file should go): one OutputError line naming the path.
-    with pytest.raises(IsADirectoryError) as raised:
-        open(tmp_path, "w")  # noqa: SIM115 (the open is meant to fail)
-    error = output_error(raised.value, tmp_path)
-    assert isinstance(error, OutputError)
-    assert str(error).startswith(f"cannot write {tmp_path}: ")
+    writing_is_an_output_error_naming_it(tmp_path, IsADirectoryError)
 
 
 def test_a_failed_plans_action_distribution_is_uniform_whatever_its_wait_action() -> None:

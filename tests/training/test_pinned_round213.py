@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import pytest
@@ -11,8 +10,8 @@ import pytest
 from hg_marl.agents.habit import QLearner
 from hg_marl.agents.models.builder import _Index
 from hg_marl.agents.models.keyed import SegmentTable
-from hg_marl.training import backends
 from hg_marl.training.store import Job
+from tests.training.test_pinned_round205 import executed_with_a_stand_in
 
 
 def test_the_habit_counts_every_td_update_and_keeps_the_count_on_disk(tmp_path: Path) -> None:
@@ -58,16 +57,8 @@ def test_a_jobs_human_is_built_with_the_jobs_human_parameters(monkeypatch: pytes
     # execute builds the human as make_human(name, **human_params): a stand-in make_human
     # records what it was asked, and a stand-in run hands back the human it was given.
     import hg_marl.agents.humans as humans
-    import hg_marl.training.runner as runner
 
-    asked: list[tuple[str, dict[str, Any]]] = []
-
-    def fake_make_human(name: str, **params: Any) -> str:
-        asked.append((name, params))
-        return f"human {name}"
-
-    monkeypatch.setattr(humans, "make_human", fake_make_human)
-    monkeypatch.setattr(runner, "run", lambda robot, human, config: (human, config.seed))
     job = Job(robot="random", seed=4, human="noisy", human_params={"epsilon": 0.25})
-    assert backends.execute(job) == ("human noisy", 4)
+    built, asked = executed_with_a_stand_in(monkeypatch, humans, "human", job)
+    assert built == ("human noisy", 4)
     assert asked == [("noisy", {"epsilon": 0.25})]

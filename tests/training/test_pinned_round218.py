@@ -10,12 +10,13 @@ import pytest
 from hg_marl.agents.progress import PROGRESS_AFTER
 from hg_marl.agents.robots import PlannerRobot
 from hg_marl.core import Agent, World
-from hg_marl.core.errors import OutputError, ScenarioError, output_error
+from hg_marl.core.errors import ScenarioError
 from hg_marl.core.scenario import load_scenario
 from hg_marl.core.spec import parse_spec
 from hg_marl.policy import Decision
 from hg_marl.training.adaptation import AdaptationConfig, adaptation_jobs
 from tests.training.test_pinned_round92 import _turn
+from tests.training.test_pinned_round209 import writing_is_an_output_error_naming_it
 
 WORLD = World("paper2015")
 
@@ -24,12 +25,7 @@ def test_a_file_name_too_long_to_write_is_an_output_error_naming_it(tmp_path: Pa
     # A name of 300 characters is over every common file system's limit of 255 bytes: the
     # open fails with ENAMETOOLONG, a path that names the wrong thing, which the user fixes
     # (errors.WRITE_ERRNOS): one OutputError line naming the path, not a traceback.
-    path = tmp_path / ("x" * 300)
-    with pytest.raises(OSError) as raised:
-        open(path, "w")  # noqa: SIM115 (the open is meant to fail)
-    error = output_error(raised.value, path)
-    assert isinstance(error, OutputError)
-    assert str(error).startswith(f"cannot write {path}: ")
+    writing_is_an_output_error_naming_it(tmp_path / ("x" * 300), OSError)
 
 
 def test_a_partner_aware_planner_robots_guard_move_names_its_partner() -> None:
