@@ -29742,6 +29742,12 @@ ROUND233_TESTS = "tests/training/test_pinned_round233.py"
 FRESH233 = pinned_after(FRESH233, ROUND233_TESTS)
 
 
+FRESH234: tuple[Bug, ...] = ()
+FRESH235: tuple[Bug, ...] = ()
+FRESH236: tuple[Bug, ...] = ()
+FRESH237: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -29977,6 +29983,10 @@ ALL = (
     + FRESH231
     + FRESH232
     + FRESH233
+    + FRESH234
+    + FRESH235
+    + FRESH236
+    + FRESH237
 )
 
 
