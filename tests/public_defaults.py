@@ -24,7 +24,6 @@ PACKAGES = ("hg_marl", "hg_marl.agents", "hg_marl.training")
 
 MACHINE_DEPENDENT = frozenset(
     {
-        "hg_marl.training.commands.common.MAX_WORKERS",
         "hg-marl evaluate --workers",
         "hg-marl headroom --jobs",
         "hg-marl population generate --workers",

@@ -13,7 +13,7 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any, TypeVar
 
-from hg_marl.core.errors import ConfigError, HgMarlError, check_finite, check_int
+from hg_marl.core.errors import ConfigError, HgMarlError, check_finite
 from hg_marl.core.spec import Spec, collect_params, parse_spec
 from hg_marl.training.outputs import check_output
 from hg_marl_start import SCRIPT, stop_startup_timer
@@ -76,13 +76,19 @@ def check_out_dir(path: Path, option: str) -> Path:
     return check_output(path, option, folder=True)
 
 
-MAX_WORKERS = max(64, 4 * (os.cpu_count() or 1))
-"""Most worker processes accepted (each costs a Python process: ``docs/inputs.md``)."""
+def default_workers() -> int:
+    """The commands' default ``--workers``: two processes, one on a one-CPU machine (a second would only compete)."""
+    return min(2, os.cpu_count() or 1)
 
 
-def check_workers(value: int, option: str = "--workers") -> int:
-    """A worker count in [1, :data:`MAX_WORKERS`]."""
-    return check_int(value, option, minimum=1, maximum=MAX_WORKERS)
+def check_workers(value: int) -> int:
+    """A ``--workers`` the backends accept: the limit has one home, :func:`hg_marl.training.backends.check_workers`.
+
+    Imported when called, so ``--help`` does not load the backends.
+    """
+    from hg_marl.training.backends import check_workers as accepted
+
+    return accepted(value)
 
 
 def name_list(text: str | None, option: str) -> tuple[str, ...]:

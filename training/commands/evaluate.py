@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
-from hg_marl.training.commands.common import check_out_dir, check_workers, counting_bar, name_list
+from hg_marl.training.commands.common import check_out_dir, check_workers, counting_bar, default_workers, name_list
 
 
 def register(app: typer.Typer) -> None:
@@ -22,9 +21,9 @@ def register(app: typer.Typer) -> None:
         address: Annotated[
             str | None, typer.Option(help="ray: 'auto' or ray://host:port joins a cluster; none starts one.")
         ] = None,
-        workers: Annotated[int, typer.Option(help="Worker processes (local) or CPUs of a new Ray instance.")] = min(
-            2, os.cpu_count() or 1
-        ),
+        workers: Annotated[
+            int, typer.Option(help="Worker processes (local) or CPUs of a new Ray instance.")
+        ] = default_workers(),
         seeds: Annotated[int | None, typer.Option(help="Only the study's first N seeds.")] = None,
         robots: Annotated[str | None, typer.Option(help="Only these robots (comma list of labels or names).")] = None,
         humans: Annotated[str | None, typer.Option(help="Only these humans (comma list of labels or names).")] = None,

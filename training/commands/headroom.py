@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 from typing import Annotated
 
 import typer
+
+from hg_marl.training.commands.common import default_workers
 
 
 def register(app: typer.Typer) -> None:
@@ -30,7 +31,7 @@ def register(app: typer.Typer) -> None:
                 help="Worker processes for the planner's answers, the policies and the rates (0: one per CPU); "
                 "the matrix does not depend on it.",
             ),
-        ] = min(2, os.cpu_count() or 1),
+        ] = default_workers(),
     ) -> None:
         """Policy optimal against A played with T over the optimum with T; 1 - IQM of the cooperative row."""
         from hg_marl.agents.humans import HumanError

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 from typing import Annotated, Any
 
 import typer
+
+from hg_marl.training.commands.common import default_workers
 
 
 def _robots(text: str) -> tuple[str, ...]:
@@ -44,9 +45,9 @@ def register(app: typer.Typer) -> None:
         ] = None,
         backend: Annotated[str, typer.Option(help="local (process pool) or ray.")] = "local",
         address: Annotated[str | None, typer.Option(help="ray: 'auto' or ray://host:port joins a cluster.")] = None,
-        workers: Annotated[int, typer.Option(help="Worker processes (local) or CPUs of a new Ray instance.")] = min(
-            2, os.cpu_count() or 1
-        ),
+        workers: Annotated[
+            int, typer.Option(help="Worker processes (local) or CPUs of a new Ray instance.")
+        ] = default_workers(),
     ) -> None:
         """Sample preference humans, measure them against reference robots, keep a diverse subset (BR-Div)."""
         import math

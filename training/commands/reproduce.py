@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 from typing import Annotated, Any
 
 import typer
 
-from hg_marl.training.commands.common import check_duration, check_out_dir, check_workers, counting_bar
+from hg_marl.training.commands.common import check_duration, check_out_dir, check_workers, counting_bar, default_workers
 
 
 def register(app: typer.Typer) -> None:
@@ -24,7 +23,7 @@ def register(app: typer.Typer) -> None:
             float | None, typer.Option(help="Simulated seconds per run (default: calibrated, see training/paper.py).")
         ] = None,
         scenario: Annotated[str, typer.Option(help="Scenario.")] = "paper2015",
-        workers: Annotated[int, typer.Option(min=1, help="Worker processes.")] = min(2, os.cpu_count() or 1),
+        workers: Annotated[int, typer.Option(min=1, help="Worker processes.")] = default_workers(),
         paper_only: Annotated[bool, typer.Option("--paper-only", help="Only the paper's three conditions.")] = False,
         adaptation: Annotated[
             bool, typer.Option(help="Also run the adaptation experiment (human switches mid-run).")
