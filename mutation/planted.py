@@ -30233,6 +30233,12 @@ callbacks, each bug run against its module's gate tests from modules.toml. All 1
 so nothing was pinned after the round and no bug is equivalent."""
 
 
+FRESH238: tuple[Bug, ...] = ()
+FRESH239: tuple[Bug, ...] = ()
+FRESH240: tuple[Bug, ...] = ()
+FRESH241: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -30472,6 +30478,10 @@ ALL = (
     + FRESH235
     + FRESH236
     + FRESH237
+    + FRESH238
+    + FRESH239
+    + FRESH240
+    + FRESH241
 )
 
 
