@@ -24274,9 +24274,9 @@ FRESH190: tuple[Bug, ...] = (
     ),
     Bug(
         "fresh190 ppo recurrent: --episode-seconds 0 and --eval-seconds 0 are accepted, not refused",
-        "training/baselines/ppo_recurrent.py",
-        "math.isfinite(value) and value > 0)",
-        "math.isfinite(value) and value >= 0)",
+        "training/runner.py",  # the rule's home since the trainers share it (check_seconds)
+        "or not value > 0 or",
+        "or not value >= 0 or",
         gate("ppo_recurrent"),
     ),
     Bug(

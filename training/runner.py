@@ -22,6 +22,7 @@ import pandas as pd
 
 import hg_marl
 from hg_marl.core import Agent
+from hg_marl.core.durations import MIN_DURATION
 from hg_marl.core.errors import ConfigError, check_bool, check_finite, check_int
 from hg_marl.policy import Actor, decision_of, log_fields
 from hg_marl.training.io import atomic_write
@@ -58,6 +59,16 @@ def check_cycles(duration: float, shortest: float, what: str = "--duration") -> 
             f"{what} {duration:g}: up to {duration / shortest:.3g} cycles at the shortest action duration "
             f"({shortest:g} s), over the limit {MAX_CYCLES:,}"
         )
+
+
+def check_seconds(value: Any, option: str) -> float:
+    """A span of simulated seconds a trainer plays (an episode, an evaluation): positive, and at
+    most :data:`MAX_CYCLES` cycles of the shortest action any scenario may have
+    (:data:`~hg_marl.core.durations.MIN_DURATION`), since the scenario is not known yet: so it ends."""
+    if isinstance(value, bool) or not isinstance(value, int | float) or not value > 0 or value == float("inf"):
+        raise ConfigError(f"{option}: expected a positive number of seconds, got {value!r}")
+    check_cycles(float(value), MIN_DURATION, option)
+    return float(value)
 
 
 @dataclass(frozen=True)

@@ -65,7 +65,7 @@ def test_a_configuration_is_frozen() -> None:
 
 
 def test_the_smallest_settings_are_accepted() -> None:
-    """Counts of 1, a period of 0, rates of 0, lambda 0 and 1, gamma 1: all at their bounds."""
+    """Counts of 1, a period of 0, rates of 0, lambda 0 and 1, gamma 1, an evaluation of 0.01 s: at their bounds."""
     config = PPOBatchedConfig(
         steps=1,
         num_envs=1,
@@ -79,7 +79,7 @@ def test_the_smallest_settings_are_accepted() -> None:
         ent_coef=0.0,
         vf_coef=0.0,
         max_grad_norm=0.0,
-        eval_seconds=0.0,
+        eval_seconds=0.01,  # above 0: an evaluation of 0 s would report 0 tasks / 0 s
         gae_lambda=0.0,
         gamma=1,
     )
@@ -100,7 +100,7 @@ def test_the_smallest_settings_are_accepted() -> None:
         ({"learning_rate": -0.1}, r"^--learning-rate: expected a finite non-negative number, got -0.1$"),
         ({"vf_coef": math.inf}, r"^--vf-coef: expected a finite non-negative number, got inf$"),
         ({"max_grad_norm": math.nan}, r"^--max-grad-norm: expected a finite non-negative number"),
-        ({"eval_seconds": "10"}, r"^--eval-seconds: expected a finite non-negative number, got '10'$"),
+        ({"eval_seconds": "10"}, r"^--eval-seconds: expected a positive number of seconds, got '10'$"),
         ({"clip": -1.0}, r"^--clip: "),
         ({"ent_coef": -1.0}, r"^--ent-coef: "),
         ({"gae_lambda": 1.5}, r"^--gamma and --gae-lambda must lie in \(0, 1\] and \[0, 1\]$"),

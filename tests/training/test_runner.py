@@ -198,3 +198,13 @@ def test_a_run_needing_exactly_the_cycle_limit_is_accepted_and_one_more_is_refus
     check_cycles(float(MAX_CYCLES), 1.0)
     with pytest.raises(ConfigError, match=r"over the limit 50,000,000"):
         check_cycles(float(MAX_CYCLES) + 1.0, 1.0)
+
+
+def test_human_as_expected_compares_values_not_objects_past_the_small_integers() -> None:
+    """On a scenario of 1,921 human actions the human's wait is action 1920: the robot's
+    expectation and the human's answer are equal numbers made separately, so the comparison
+    must be by value (Python keeps one object only for the integers up to 256)."""
+    config = RunConfig(scenario="generated:objects=30,spots=60", duration=100.0, seed=0, max_decisions=3)
+    result = run(_ExpectingRobot(), _WaitingHuman(), config)
+    assert result.log["expected_human_action"].tolist() == [0, 1920, -1]
+    assert result.log["human_as_expected"].tolist() == [False, True, None]

@@ -33,6 +33,7 @@ from tqdm import tqdm
 
 from hg_marl.core import Agent
 from hg_marl.core.errors import ConfigError, check_int
+from hg_marl.training.runner import check_seconds
 
 HOUR = 3600.0
 
@@ -83,11 +84,11 @@ class PPOBatchedConfig:
             "ent_coef",
             "vf_coef",
             "max_grad_norm",
-            "eval_seconds",
         ):
             value = getattr(self, name)
             if not (isinstance(value, int | float) and math.isfinite(value) and value >= 0):
                 raise ConfigError(f"--{name.replace('_', '-')}: expected a finite non-negative number, got {value!r}")
+        check_seconds(self.eval_seconds, "--eval-seconds")  # 0 would divide 0 tasks by 0 s
         if not 0 < self.gamma <= 1 or not 0 <= self.gae_lambda <= 1:
             raise ConfigError("--gamma and --gae-lambda must lie in (0, 1] and [0, 1]")
         if (self.num_envs * self.n_steps) % self.minibatches:

@@ -43,6 +43,7 @@ from hg_marl.core import Agent, World
 from hg_marl.core.errors import ConfigError, check_int
 from hg_marl.envs.history import MAX_HISTORY
 from hg_marl.training.baselines.recipes import check_recipe, recipe_partner
+from hg_marl.training.runner import check_seconds
 
 HOUR = 3600.0
 MEMORIES = ("gru", "mlp")
@@ -97,9 +98,7 @@ class RecurrentConfig:
             if not (isinstance(value, int | float) and math.isfinite(value) and value >= 0):
                 raise ConfigError(f"--{name.replace('_', '-')}: expected a finite non-negative number, got {value!r}")
         for name in ("episode_seconds", "eval_seconds"):
-            value = getattr(self, name)
-            if not (isinstance(value, int | float) and math.isfinite(value) and value > 0):
-                raise ConfigError(f"--{name.replace('_', '-')}: expected a positive number of seconds, got {value!r}")
+            check_seconds(getattr(self, name), f"--{name.replace('_', '-')}")
         if not 0 < self.gamma <= 1 or not 0 <= self.gae_lambda <= 1:
             raise ConfigError("--gamma and --gae-lambda must lie in (0, 1] and [0, 1]")
         if self.num_envs % self.minibatches:
