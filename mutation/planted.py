@@ -27022,8 +27022,8 @@ FRESH212: tuple[Bug, ...] = (
     Bug(
         "fresh212 ppo batched: a negative or NaN --eval-seconds is accepted, not refused",
         "training/baselines/ppo_batched.py",
-        '"eval_seconds",\n        ):',
-        "):",
+        'check_seconds(self.eval_seconds, "--eval-seconds")',
+        "None",
         gate("ppo_batched"),
     ),
     Bug(
