@@ -30733,6 +30733,12 @@ ROUND241_TESTS = "tests/training/test_pinned_round241.py"
 FRESH241 = pinned_after(FRESH241, ROUND241_TESTS)
 
 
+FRESH242: tuple[Bug, ...] = ()
+FRESH243: tuple[Bug, ...] = ()
+FRESH244: tuple[Bug, ...] = ()
+FRESH245: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -30976,6 +30982,10 @@ ALL = (
     + FRESH239
     + FRESH240
     + FRESH241
+    + FRESH242
+    + FRESH243
+    + FRESH244
+    + FRESH245
 )
 
 
