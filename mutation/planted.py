@@ -31238,6 +31238,12 @@ ROUND245_TESTS = "tests/training/test_pinned_round245.py"
 FRESH245 = pinned_after(FRESH245, ROUND245_TESTS)
 
 
+FRESH246: tuple[Bug, ...] = ()
+FRESH247: tuple[Bug, ...] = ()
+FRESH248: tuple[Bug, ...] = ()
+FRESH249: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -31485,6 +31491,10 @@ ALL = (
     + FRESH243
     + FRESH244
     + FRESH245
+    + FRESH246
+    + FRESH247
+    + FRESH248
+    + FRESH249
 )
 
 
