@@ -31738,6 +31738,12 @@ ROUND249_TESTS = "tests/training/test_pinned_round249.py"
 FRESH249 = pinned_after(FRESH249, ROUND249_TESTS)
 
 
+FRESH250: tuple[Bug, ...] = ()
+FRESH251: tuple[Bug, ...] = ()
+FRESH252: tuple[Bug, ...] = ()
+FRESH253: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -31989,6 +31995,10 @@ ALL = (
     + FRESH247
     + FRESH248
     + FRESH249
+    + FRESH250
+    + FRESH251
+    + FRESH252
+    + FRESH253
 )
 
 
