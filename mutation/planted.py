@@ -31738,10 +31738,509 @@ ROUND249_TESTS = "tests/training/test_pinned_round249.py"
 FRESH249 = pinned_after(FRESH249, ROUND249_TESTS)
 
 
-FRESH250: tuple[Bug, ...] = ()
-FRESH251: tuple[Bug, ...] = ()
-FRESH252: tuple[Bug, ...] = ()
-FRESH253: tuple[Bug, ...] = ()
+FRESH250: tuple[Bug, ...] = (
+    Bug(
+        "fresh250 evaluate study: every cell's job runs its robot with the human's parameters",
+        "training/evaluate.py",
+        "robot_params=dict(robot.params),",
+        "robot_params=dict(human.params),",
+        gate("evaluate_study"),
+    ),
+    Bug(
+        "fresh250 heldout curve: the CSV header swaps the rate and oracle columns, so read_curve reads the oracle's",
+        "training/baselines/heldout_curve.py",
+        'COLUMNS = ("steps", "split", "partner", "tasks_per_hour", "oracle_per_hour", "br_prox")',
+        'COLUMNS = ("steps", "split", "partner", "oracle_per_hour", "tasks_per_hour", "br_prox")',
+        gate("heldout_curve"),
+    ),
+    Bug(
+        "fresh250 model answers: the non-stationary human's refusal says switching and replay humans are stationary",
+        "agents/models/answers.py",
+        '"has none (switching and replay humans are not stationary:',
+        '"has none (switching and replay humans are stationary:',
+        gate("model_answers"),
+    ),
+    Bug(
+        "fresh250 model chains: a state's reverse spread reads only its first incoming pair, so reachability is lost",
+        "agents/models/chains.py",
+        "    size = ends - starts\n",
+        "    size = np.minimum(ends - starts, 1)\n",
+        gate("model_chains"),
+    ),
+    Bug(
+        "fresh250 model equivariant: actions on object 0 keep their canonical object and are not mapped back",
+        "agents/models/equivariant.py",
+        "        if j < 0:\n",
+        "        if j <= 0:\n",
+        gate("model_equivariant"),
+    ),
+    Bug(
+        "fresh250 model layouts: a class's objects get its spots in reverse order, so canonical states differ",
+        "agents/models/layouts.py",
+        "members.setdefault(bins, []).append(o)",
+        "members.setdefault(bins, []).insert(0, o)",
+        gate("model_layouts"),
+    ),
+    Bug(
+        "fresh250 model lazy: gathering no pairs returns every pair's transitions",
+        "agents/models/lazy.py",
+        "        if pairs is None:\n",
+        "        if pairs is None or not len(pairs):\n",
+        gate("model_lazy"),
+    ),
+    Bug(
+        "fresh250 model live: answers from the workers come back reversed within each chunk",
+        "agents/models/live.py",
+        "answers.extend(chunk)",
+        "answers.extend(chunk[::-1])",
+        gate("model_live"),
+    ),
+    Bug(
+        "fresh250 model packing: a canonical state keeps its places unsorted though its objects are relabelled",
+        "agents/models/packing.py",
+        "b.where[:, cols] = np.take_along_axis(block, perm, axis=1)",
+        "b.where[:, cols] = block",
+        gate("model_packing"),
+    ),
+    Bug(
+        "fresh250 model partners: a preference human's pick of object o is scored as a pick of object o - 1",
+        "agents/models/partners.py",
+        "pick_scores(a - pick, rows, found)",
+        "pick_scores(a - pick - 1, rows, found)",
+        gate("model_partners"),
+    ),
+    Bug(
+        "fresh250 model solve: the reported q of a pair that may leave the certain states is finite",
+        "agents/models/solve.py",
+        "zero_at, inf_at = np.flatnonzero(terminal & ok), np.flatnonzero(~ok)\n",
+        "zero_at, inf_at = np.flatnonzero(terminal & ok), np.flatnonzero(~alive[pair_state])\n",
+        gate("model_solve"),
+    ),
+    Bug(
+        "fresh250 planner bound: a state's candidates come in discovery order, not sorted, before wait",
+        "agents/planner/space.py",
+        "        out.sort()\n        out.append(self.wait[agent])",
+        "        out.append(self.wait[agent])",
+        gate("planner_bound"),
+    ),
+    Bug(
+        "fresh250 vpi: a plan the criterion asked for is credited to the habit",
+        "agents/meta/vpi.py",
+        "return Expert.PLANNER",
+        "return Expert.HABIT",
+        gate("vpi"),
+    ),
+    Bug(
+        "fresh250 adaptation: a metric's 95% CI has its low and high ends swapped",
+        "training/adaptation.py",
+        "mean, low, high = bootstrap_ci(values)",
+        "mean, high, low = bootstrap_ci(values)",
+        gate("adaptation"),
+    ),
+    Bug(
+        "fresh250 aggregate: the generalisation gap is test minus train, its sign flipped",
+        "training/aggregate.py",
+        '"gap": float(point[2]),',
+        '"gap": float(point[1] - point[0]),',
+        gate("aggregate"),
+    ),
+    Bug(
+        "fresh250 array partners: live robots see the tasks solved as the clock and the clock as the tasks",
+        "agents/array_partners.py",
+        "self._clock, self._tasks = clock, tasks_solved",
+        "self._clock, self._tasks = tasks_solved, clock",
+        gate("array_partners"),
+    ),
+)
+"""Round 250, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 241-242: the study's evaluation, the held-out curve, the
+answer tables, the chains, the equivariant answers, the layouts, the lazy transitions, the live answers, the
+state packing, the partners on arrays, the solver, the planner's bound, vpi, the adaptation sweep, the
+aggregates and the array partners, each bug run against its module's gate tests from modules.toml.
+12 were caught blind. Three misses are pinned in ROUND250_TESTS: the refusal of a non-stationary human saying
+switching and replay humans are stationary, a reduced model gathering every pair's transitions when asked for
+none, and the solver reporting a finite q for a pair that may leave the certain states (and choosing it). The
+fourth is equivalent: the planner's candidates without ``out.sort()`` come out in index order anyway (each
+branch appends in the rule table's index order: picks, takes, a held object's throw, give and places in kind
+order, then the gotos to objects and to the bins and the human), so no caller can tell.
+"""
+ROUND250_TESTS = "tests/training/test_pinned_round250.py"
+"""The values round 250's missed bugs changed, pinned after the round: every round-250 bug runs them too."""
+FRESH250 = pinned_after(FRESH250, ROUND250_TESTS)
+FRESH251: tuple[Bug, ...] = (
+    Bug(
+        "fresh251 meta fixed: the habit-only criterion asks for a plan whenever it has a habit view and pays its cost",
+        "agents/meta/fixed.py",
+        '"""Never."""\n        return False',
+        '"""Never."""\n        return bool(habit)',
+        gate("meta_fixed"),
+    ),
+    Bug(
+        "fresh251 model budget: a refusal pickled from a forked worker reaches the parent without its resource",
+        "agents/models/budget.py",
+        "return (OverBudget, (str(self), self.resource))",
+        "return (OverBudget, (str(self),))",
+        gate("model_budget"),
+    ),
+    Bug(
+        "fresh251 model forked: jobs=True is taken for one job instead of refused as not a whole number",
+        "agents/models/forked.py",
+        "if isinstance(jobs, bool) or not isinstance(jobs, int)",
+        "if not isinstance(jobs, int)",
+        gate("model_forked"),
+    ),
+    Bug(
+        "fresh251 model format: a saved header names its seat in title case, so the file is refused when loaded",
+        "agents/model_format.py",
+        '"seat": seat.label,',
+        '"seat": seat.label.title(),',
+        gate("model_format"),
+    ),
+    Bug(
+        "fresh251 model limits: an SB3 header with a zero-width hidden layer gets a byte budget instead of none",
+        "agents/model_limits.py",
+        "isinstance(u, int) and u > 0 for u in n",
+        "isinstance(u, int) and u >= 0 for u in n",
+        gate("model_limits"),
+    ),
+    Bug(
+        "fresh251 outputs: an upper-case file ending (plot.PNG) is refused as not ending in .png",
+        "training/outputs.py",
+        "if suffixes and path.suffix.lower() not in suffixes:",
+        "if suffixes and path.suffix not in suffixes:",
+        gate("outputs"),
+    ),
+    Bug(
+        "fresh251 recipes: the unknown-recipe message leaves out 'members' from the recipes it lists",
+        "training/baselines/recipes.py",
+        "expected one of {', '.join(RECIPES)}",
+        "expected one of {', '.join(RECIPES[1:])}",
+        gate("recipes"),
+    ),
+    Bug(
+        "fresh251 relabel: the canonical state's offered object is looked up forward, wrong on a 3-cycle of a class",
+        "hg_marl/core/relabel.py",
+        "offer_obj = orig.index(state.offer_obj) if",
+        "offer_obj = orig[state.offer_obj] if",
+        gate("relabel"),
+    ),
+    Bug(
+        "fresh251 runner: the table is seeded from the second word of its seed sequence: every run's layouts change",
+        "training/runner.py",
+        "env.reset(seed=int(env_seed.generate_state(1)[0]))",
+        "env.reset(seed=int(env_seed.generate_state(2)[1]))",
+        gate("runner"),
+    ),
+    Bug(
+        "fresh251 store: a NaN entry's warning says 'holds a non-finite number NaN' (the prefix is not removed)",
+        "training/store.py",
+        "{str(exc).removeprefix('non-finite number ')}",
+        "{str(exc)}",
+        gate("store"),
+    ),
+    Bug(
+        "fresh251 sweep: jobs sharing a key are run and stored as the last of them, not the first",
+        "training/sweep.py",
+        "first = {key: at[0] for key, at in positions.items()}",
+        "first = {key: at[-1] for key, at in positions.items()}",
+        gate("sweep"),
+    ),
+    Bug(
+        "fresh251 vector envs: the human seat's log line no longer says the robot is the compiled one",
+        "agents/vector_envs.py",
+        'f"the compiled {partner.name} robot (its plans',
+        'f"the {partner.name} robot (its plans',
+        gate("vector_envs"),
+    ),
+    Bug(
+        "fresh251 world: a successful take is reported as a 'taken' event instead of 'took'",
+        "hg_marl/core/world.py",
+        'Event("took", name, objects[o])',
+        'Event("taken", name, objects[o])',
+        gate("world"),
+    ),
+    Bug(
+        "fresh251 canonical view: the habit is asked at the original facts, its actions permuted to canonical labels",
+        "agents/robots/canonical.py",
+        "return self.world.facts(canonical), maps[0], maps[1]",
+        "return facts, maps[0], maps[1]",
+        gate("canonical_view"),
+    ),
+    Bug(
+        "fresh251 compiled: the sampler never reaches the last action of the widest distributions",
+        "agents/compiled.py",
+        "for j in range(self.widest - 1):",
+        "for j in range(self.widest - 2):",
+        gate("compiled"),
+    ),
+    Bug(
+        "fresh251 compiled robot: a failing human answer is made a feasible one: states after failures not compiled",
+        "agents/compiled_robot.py",
+        "np.argmin(mask[fails], axis=1)",
+        "np.argmax(mask[fails], axis=1)",
+        gate("compiled_robot"),
+    ),
+)
+"""Round 251, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 242-243: the single-expert criteria, the model budget,
+the forked workers, the model file format, the model file limits, the output paths, the partner recipes,
+the relabelling, the runner, the store, the sweep, the vector envs, the world, the canonical view, the
+compiled humans and the compiled robot, each bug run against its module's gate tests from modules.toml.
+13 were caught blind; the misses (a pickled budget refusal without its resource, the unknown-recipe message
+without 'members', the runner seeding its table from another word of the seed sequence) are pinned in
+ROUND251_TESTS."""
+ROUND251_TESTS = "tests/training/test_pinned_round251.py"
+"""The values round 251's missed bugs changed, pinned after the round: every round-251 bug runs them too."""
+FRESH251 = pinned_after(FRESH251, ROUND251_TESTS)
+FRESH252: tuple[Bug, ...] = (
+    Bug(
+        "fresh252 history: the kind features' names number the last cycle -0, one behind the failures'",
+        "hg_marl/envs/history.py",
+        'f"{who}_kind[-{j + 1}]=',
+        'f"{who}_kind[-{j}]=',
+        gate("history"),
+    ),
+    Bug(
+        "fresh252 switching human: the default schedule plays the lazy human first and the cooperative one after 600 s",
+        "agents/humans/switching.py",
+        '("cooperative", "lazy"), at',
+        '("lazy", "cooperative"), at',
+        gate("human_switching"),
+    ),
+    Bug(
+        "fresh252 learning state: a threshold of 0 is accepted, a criterion under which the habit never acts",
+        "agents/meta/learning_state.py",
+        "threshold, allow_zero=False)",
+        "threshold, allow_zero=True)",
+        gate("learning_state"),
+    ),
+    Bug(
+        "fresh252 limits: check_runs returns the limit instead of the number of runs it checked",
+        "training/limits.py",
+        "    return runs\n",
+        "    return MAX_RUNS\n",
+        gate("limits"),
+    ),
+    Bug(
+        "fresh252 memory robot: the guard's move prefers the policy's top choice, the move that changed nothing",
+        "agents/robots/memory.py",
+        "self.agent, prefer=prefer)",
+        "self.agent, prefer=scores)",
+        gate("memory_robot"),
+    ),
+    Bug(
+        "fresh252 planner costs: the default weight of the human holding an object is 0.01 per second, not 0.1",
+        "agents/planner/costs.py",
+        "human_holding: float = 0.1\n",
+        "human_holding: float = 0.01\n",
+        gate("planner_costs"),
+    ),
+    Bug(
+        "fresh252 exact sums: the scale and width ignore the offer tables, so their packed sums lose bits or carry",
+        "agents/planner/exactsum.py",
+        "for tabs in (plain, offer) for tab",
+        "for tabs in (plain,) for tab",
+        gate("planner_exactsum"),
+    ),
+    Bug(
+        "fresh252 planner steps: a goto to an object is resolved as from location 0, wherever the robot stands",
+        "agents/planner/steps.py",
+        "goto_obj = table.goto_obj[at]",
+        "goto_obj = table.goto_obj[0]",
+        gate("planner_steps"),
+    ),
+    Bug(
+        "fresh252 registry: list_params is ignored, so an unknown name's message lists no parameters",
+        "hg_marl/core/registry.py",
+        "= kind, error, list_params\n",
+        "= kind, error, False\n",
+        gate("registry"),
+    ),
+    Bug(
+        "fresh252 scenario file: a bad duration's message gives the [durations] header's line, not the key's",
+        "hg_marl/core/scenario_file.py",
+        '_line_of(text, f"durations.{bad}")',
+        '_line_of(text, "durations")',
+        gate("scenario_file"),
+    ),
+    Bug(
+        "fresh252 generated scenario: the default has two coloured bins instead of one bin for everything",
+        "hg_marl/core/scenario_generated.py",
+        "    bins: int = 1,\n",
+        "    bins: int = 2,\n",
+        gate("scenario_generated"),
+    ),
+    Bug(
+        "fresh252 scenario model: HG_MARL_MAX_* no longer raises a size limit, a larger scenario is refused",
+        "hg_marl/core/scenario_model.py",
+        "limit = _limit(name, LIMITS[name])",
+        "limit = LIMITS[name]",
+        gate("scenario_model"),
+    ),
+    Bug(
+        "fresh252 server limits: the default connection cap is 16, not 32",
+        "training/play/server_limits.py",
+        "max_connections: int = 32\n",
+        "max_connections: int = 16\n",
+        gate("server_limits"),
+    ),
+    Bug(
+        "fresh252 adapters: reset(seed=s) does not seed the wrapped env, so its layouts are not reproducible",
+        "agents/adapters.py",
+        "super().reset(seed=seed, options=options)",
+        "super().reset(seed=None, options=options)",
+        gate("adapters"),
+    ),
+    Bug(
+        "fresh252 baselines convert: the facts and actions are always checked against paper2015's world",
+        "training/baselines/convert.py",
+        "world = World(str(scenario))",
+        'world = World("paper2015")',
+        gate("baselines_convert"),
+    ),
+    Bug(
+        "fresh252 baselines evaluation: runner_rate scores the first seed only, not the mean over the seeds",
+        "training/baselines/evaluation.py",
+        "duration, seeds)\n\n\ndef steps_to_reach",
+        "duration, seeds[:1])\n\n\ndef steps_to_reach",
+        gate("baselines_evaluation"),
+    ),
+)
+"""Round 252, written blind (from the sources and the earlier rounds' bugs in these files, not the tests)
+in the sixteen gated modules last planted in rounds 243-244: the interaction history, the switching human,
+the learning-state criterion, the run limits, the memory robot, the planner's costs, its exact sums and its
+steps, the registry, the scenario file, the generated scenarios, the scenario model, the play server's
+limits, the library adapters, the baselines' conversion and their evaluation, each bug run against its
+module's gate tests from modules.toml. 14 were caught blind; the two misses (check_runs handing back the
+limit instead of the runs it checked, and the exact sums' scale and field width taken from the plain tables
+alone: equivalent under the planner's space, whose offer tables only hold minima of plain values, but not
+for the class's own contract) are pinned in ROUND252_TESTS."""
+ROUND252_TESTS = "tests/training/test_pinned_round252.py"
+"""The values round 252's missed bugs changed, pinned after the round: every round-252 bug runs them too."""
+FRESH252 = pinned_after(FRESH252, ROUND252_TESTS)
+FRESH253: tuple[Bug, ...] = (
+    Bug(
+        "fresh253 hybrid robot: the criterion sees one more habit visit than made, trusting the habit early",
+        "agents/robots/hybrid.py",
+        "visits=habit.visits(facts),",
+        "visits=habit.visits(facts) + 1,",
+        gate("hybrid_robot"),
+    ),
+    Bug(
+        "fresh253 member models: a robot move's successor is read as the human's move, backing up wrong states",
+        "agents/member_models.py",
+        "mid, _, duration = table.successor(state, Agent.ROBOT, a)",
+        "mid, _, duration = table.successor(state, Agent.HUMAN, a)",
+        gate("member_models"),
+    ),
+    Bug(
+        "fresh253 memory numpy: only an mlp file is refused as not a memory policy, other kinds are checked as memory",
+        "agents/memory_numpy.py",
+        'if mf.header.get("kind") != "memory":',
+        'if mf.header.get("kind") == "mlp":',
+        gate("memory_numpy"),
+    ),
+    Bug(
+        "fresh253 meta cost: a planner call of 0 nodes (a cached plan) is charged one node's search too",
+        "agents/meta/cost.py",
+        "self.planner_per_node * nodes",
+        "self.planner_per_node * max(nodes, 1)",
+        gate("meta_cost"),
+    ),
+    Bug(
+        "fresh253 model cache: the entry written is the buffer read from its end (empty), so nothing is ever reloaded",
+        "agents/models/cache.py",
+        "tmp.write_bytes(buf.getvalue())",
+        "tmp.write_bytes(buf.read())",
+        gate("model_cache"),
+    ),
+    Bug(
+        "fresh253 model sb3: a saved replay buffer is always marked not full, so a resumed DQN samples only up to pos",
+        "agents/model_sb3.py",
+        '"full": bool(buffer.full)}',
+        '"full": False}',
+        gate("model_sb3"),
+    ),
+    Bug(
+        "fresh253 noisy: scores asked without the robot's move charge robot action 0's duration, not none",
+        "agents/humans/noisy.py",
+        "robot_action: int = -1) -> dict[int, float]:",
+        "robot_action: int = 0) -> dict[int, float]:",
+        gate("noisy"),
+    ),
+    Bug(
+        "fresh253 observed partner: with no base the uniform prior gives each answer 1/(n+1), its mass short of 1",
+        "agents/observed_partner.py",
+        "return [(i, 1.0 / len(feasible)) for i in feasible]",
+        "return [(i, 1.0 / (len(feasible) + 1)) for i in feasible]",
+        gate("observed_partner"),
+    ),
+    Bug(
+        "fresh253 oracle: a result read from the cache always reports converged, even one cut short by max_iterations",
+        "agents/oracle.py",
+        "converged=bool(converged),",
+        "converged=True,",
+        gate("oracle"),
+    ),
+    Bug(
+        "fresh253 planner main: a relabelled state's robot action is mapped back with the human's action table",
+        "agents/planner/planner.py",
+        "robot_action=back(0, answer.robot_action, orig)",
+        "robot_action=back(1, answer.robot_action, orig)",
+        gate("planner_main"),
+    ),
+    Bug(
+        "fresh253 planner tables: throws are tested as places (already handled), so no throw is ever a candidate",
+        "agents/planner/tables.py",
+        "elif kind is Kind.THROW:",
+        "elif kind is Kind.PLACE:",
+        gate("planner_tables"),
+    ),
+    Bug(
+        "fresh253 ppo recurrent: the next value is not discounted in the TD error, bootstrapping across episode ends",
+        "training/baselines/ppo_recurrent.py",
+        "last = buf.rew[t] + buf.disc[t] * nxt - buf.val[t]",
+        "last = buf.rew[t] + nxt - buf.val[t]",
+        gate("ppo_recurrent"),
+    ),
+    Bug(
+        "fresh253 progress: the array guard doubles W after a spell the partner helped in, not one it did not",
+        "agents/progress.py",
+        "np.where(end & ~helped, doubled",
+        "np.where(end & helped, doubled",
+        gate("progress"),
+    ),
+    Bug(
+        "fresh253 backends: an unknown backend name runs locally instead of being refused",
+        "training/backends.py",
+        'if name == "local":',
+        'if name != "ray":',
+        gate("backends"),
+    ),
+    Bug(
+        "fresh253 baselines bc: traces of another seat or other name lists are mixed in when the scenario matches",
+        "training/baselines/bc.py",
+        "elif key != first:",
+        'elif key["scenario"] != first["scenario"]:',
+        gate("baselines_bc"),
+    ),
+    Bug(
+        "fresh253 baselines callbacks: signals are routed to the stop only off the main thread, so Ctrl-C aborts",
+        "training/baselines/callbacks.py",
+        "if threading.current_thread() is not threading.main_thread():",
+        "if threading.current_thread() is threading.main_thread():",
+        gate("baselines_callbacks"),
+    ),
+)
+"""Round 253, written blind (from the sources, never the tests) in the sixteen gated modules last planted in
+rounds 244-245: the hybrid robot, the member models, the memory numpy player, the meta cost model, the model
+cache, the SB3 model file, the noisy human, the observed partner, the oracle, the planner, the planner's
+tables, recurrent PPO, the progress guard, the backends, behaviour cloning and the SB3 callbacks, each bug run
+against its module's gate tests from modules.toml. 15 were caught blind; the miss (a file of another kind than
+mlp checked as a memory file instead of refused as not a memory policy) is pinned in ROUND253_TESTS."""
+ROUND253_TESTS = "tests/training/test_pinned_round253.py"
+"""The values round 253's missed bugs changed, pinned after the round: every round-253 bug runs them too."""
+FRESH253 = pinned_after(FRESH253, ROUND253_TESTS)
 
 
 ALL = (

@@ -94,7 +94,11 @@ def play_terminal(
     """
     console = console or Console()
     message = ""
-    live = Live(screen(session), console=console, auto_refresh=False, redirect_stdout=False)
+    # "visible": on a short terminal (24 lines) the screen after a move is taller than the window,
+    # and the default cut would hide the menu of moves; the top scrolls away instead
+    live = Live(
+        screen(session), console=console, auto_refresh=False, redirect_stdout=False, vertical_overflow="visible"
+    )
     with keys_without_enter() if read is None else nullcontext(), live:
         while True:
             key = read() if read is not None else read_key()
