@@ -27,3 +27,20 @@ def memory_arrays(hidden: int, obs: int, n_actions: int, recurrent: bool, fill: 
             "gru.bias_hh": (3 * h,),
         }
     return {k: np.full(s, fill) for k, s in shapes.items()}
+
+
+def small_memory_header(**fields: object) -> dict[str, object]:
+    """A complete ``memory`` header for :func:`memory_arrays` ``(4, 3, 2, recurrent=True)``: three
+    facts (a, b, c), no history (``obs_size`` 3), two actions (go, wait), 4 hidden units, a GRU;
+    ``fields`` replace entries."""
+    header: dict[str, object] = {
+        "kind": "memory",
+        "history": 0,
+        "history_cap": 8,
+        "hidden": 4,
+        "obs_size": 3,
+        "fact_names": ["a", "b", "c"],
+        "action_names": ["go", "wait"],
+        "recurrent": True,
+    }
+    return header | fields

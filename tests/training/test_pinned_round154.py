@@ -20,7 +20,7 @@ from hg_marl.core.errors import ModelFileError
 from hg_marl.training.adaptation import AdaptationConfig, adaptation_jobs
 from hg_marl.training.aggregate import br_prox
 from tests.agents.test_pinned_hybrid_robot_gate import _record, _start, _turn
-from tests.memory_arrays import memory_arrays
+from tests.memory_arrays import memory_arrays, small_memory_header
 
 
 def test_a_hybrid_decision_records_the_criterions_statistics() -> None:
@@ -39,16 +39,7 @@ def test_a_memory_header_whose_recurrent_is_an_integer_is_refused(tmp_path: Path
     # 'recurrent' must be JSON true or false; 1 equals True in Python but is not a boolean, and the
     # refusal names the field. Three facts, no history (obs_size 3), two actions, 4 hidden units,
     # the GRU's arrays present: the same header with recurrent: true is accepted.
-    header = {
-        "kind": "memory",
-        "history": 0,
-        "history_cap": 8,
-        "hidden": 4,
-        "obs_size": 3,
-        "fact_names": ["a", "b", "c"],
-        "action_names": ["go", "wait"],
-        "recurrent": True,
-    }
+    header = small_memory_header()
     arrays = memory_arrays(4, 3, 2, recurrent=True)
     assert check_memory_file(ModelFile(tmp_path / "m.json", header, arrays)).recurrent is True
     for value in (1, 0):
