@@ -32243,6 +32243,12 @@ ROUND253_TESTS = "tests/training/test_pinned_round253.py"
 FRESH253 = pinned_after(FRESH253, ROUND253_TESTS)
 
 
+FRESH254: tuple[Bug, ...] = ()
+FRESH255: tuple[Bug, ...] = ()
+FRESH256: tuple[Bug, ...] = ()
+FRESH257: tuple[Bug, ...] = ()
+
+
 ALL = (
     BUGS
     + FRESH
@@ -32498,6 +32504,10 @@ ALL = (
     + FRESH251
     + FRESH252
     + FRESH253
+    + FRESH254
+    + FRESH255
+    + FRESH256
+    + FRESH257
 )
 
 
