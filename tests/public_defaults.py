@@ -126,12 +126,11 @@ def command_defaults() -> dict[str, dict[str, str]]:
     def walk(command: Any, path: str) -> None:
         for name, sub in sorted(getattr(command, "commands", {}).items()):
             walk(sub, f"{path} {name}")
+        named = {max(p.opts, key=len): p.default for p in getattr(command, "params", [])}  # --long form
         options = {
-            max(p.opts, key=len): _shown(p.default)
-            for p in getattr(command, "params", [])
-            if _is_literal(p.default)
-            and p.default is not None
-            and f"{path} {max(p.opts, key=len)}" not in MACHINE_DEPENDENT
+            option: _shown(default)
+            for option, default in named.items()
+            if _is_literal(default) and default is not None and f"{path} {option}" not in MACHINE_DEPENDENT
         }
         if options:
             found[path] = dict(sorted(options.items()))
